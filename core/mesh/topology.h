@@ -1,0 +1,45 @@
+#pragma once
+// MeshTopology: edges, face adjacency, vertex->face incidence, boundary loops, connected
+// components and Euler characteristic of a TriMesh that is an edge-manifold (every edge in
+// at most two faces). build_topology() throws InputError naming the first non-manifold edge
+// otherwise; clean_mesh() (clean.h) is the place that repairs or refuses such input.
+#include <array>
+#include <vector>
+
+#include "core/mesh/tri_mesh.h"
+
+namespace ff {
+
+struct MeshTopology {
+  // Undirected edges, each stored once with vertices[e][0] < vertices[e][1].
+  std::vector<std::array<int, 2>> edge_vertices;
+  // The one or two faces of an edge; edge_faces[e][1] == -1 on the boundary.
+  std::vector<std::array<int, 2>> edge_faces;
+  // face_edges[f][i] is the edge from triangles[f][i] to triangles[f][(i+1)%3].
+  std::vector<std::array<int, 3>> face_edges;
+  // face_neighbors[f][i] is the face across face_edges[f][i], or -1 on the boundary.
+  std::vector<std::array<int, 3>> face_neighbors;
+  // Faces around each vertex in CSR form: vertex_faces[vertex_face_offsets[v] ..
+  // vertex_face_offsets[v+1]), in increasing face order.
+  std::vector<int> vertex_face_offsets;
+  std::vector<int> vertex_faces;
+  // Boundary loops as closed vertex cycles (first vertex not repeated), each oriented
+  // like the faces next to it; loops ordered by their smallest vertex index.
+  std::vector<std::vector<int>> boundary_loops;
+  // Connected components over face adjacency (edge-connected), numbered from 0 in order
+  // of their lowest face index.
+  std::vector<int> face_component;
+  int num_components = 0;
+
+  int num_edges() const { return static_cast<int>(edge_vertices.size()); }
+  bool is_boundary_edge(int e) const { return edge_faces[static_cast<size_t>(e)][1] < 0; }
+};
+
+// Builds all of the above in O(m log m). Vertices referenced by no face are ignored by
+// the Euler characteristic. Throws InputError on an edge shared by three or more faces.
+MeshTopology build_topology(const TriMesh& mesh);
+
+// V - E + F over referenced vertices.
+int euler_characteristic(const TriMesh& mesh, const MeshTopology& topology);
+
+}  // namespace ff

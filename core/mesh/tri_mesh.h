@@ -1,0 +1,30 @@
+#pragma once
+// TriMesh: the triangle soup every algorithm reads. Positions and index triples only;
+// adjacency lives in MeshTopology (topology.h), per-face geometry in face_geometry().
+#include <Eigen/Core>
+#include <array>
+#include <vector>
+
+namespace ff {
+
+using Vec3 = Eigen::Vector3d;
+using Triangle = std::array<int, 3>;
+
+struct TriMesh {
+  std::vector<Vec3> positions;
+  std::vector<Triangle> triangles;
+
+  int num_vertices() const { return static_cast<int>(positions.size()); }
+  int num_faces() const { return static_cast<int>(triangles.size()); }
+};
+
+// Per-face area, unit normal (zero for zero-area faces) and centroid.
+double face_area(const TriMesh& mesh, int face);
+Vec3 face_normal(const TriMesh& mesh, int face);
+Vec3 face_centroid(const TriMesh& mesh, int face);
+
+// Axis-aligned bounding box diagonal length (0 for an empty mesh).
+double bbox_diagonal(const TriMesh& mesh);
+double total_area(const TriMesh& mesh);
+
+}  // namespace ff
