@@ -1,0 +1,43 @@
+#pragma once
+// Command-line parsing for `flatfacet`: one positional input, `--name value` options and
+// `--flag` switches, each checked against what the command accepts. Errors are UsageError
+// with one line naming the option.
+#include <cstdint>
+#include <map>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "core/cluster/metric.h"
+
+namespace ff::cli {
+
+class UsageError : public std::runtime_error {
+ public:
+  explicit UsageError(const std::string& m) : std::runtime_error(m) {}
+};
+
+struct Args {
+  std::vector<std::string> positional;
+  std::map<std::string, std::string> options;  // without the leading "--"
+  std::set<std::string> flags;
+
+  bool has(const std::string& name) const { return options.count(name) != 0; }
+  std::string get(const std::string& name, const std::string& fallback = "") const;
+  // Strict number parsing: the whole text must be the number, within [lo, hi].
+  long long get_int(const std::string& name, long long fallback, long long lo, long long hi) const;
+  std::uint64_t get_u64(const std::string& name, std::uint64_t fallback) const;
+};
+
+// `with_value`: options that take a value; `switches`: flags without one.
+Args parse_args(const std::vector<std::string>& argv, const std::set<std::string>& with_value,
+                const std::set<std::string>& switches);
+
+// "euclidean=1,l2=0.5" -> weights (unnamed ones keep their defaults).
+MetricWeights parse_weights(const std::string& text);
+
+// Reads numbers separated by whitespace, commas or newlines ('#' starts a comment).
+std::vector<double> read_numbers_file(const std::string& path, const std::string& what);
+
+}  // namespace ff::cli

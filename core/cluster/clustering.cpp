@@ -1,0 +1,94 @@
+#include "core/cluster/clustering.h"
+
+#include <algorithm>
+#include <limits>
+
+namespace ff {
+
+std::vector<ClusterMoments> cluster_moments(const FaceData& faces, const std::vector<int>& labels,
+                                            int num_clusters) {
+  std::vector<ClusterMoments> moments(static_cast<size_t>(num_clusters));
+  for (int f = 0; f < faces.num_faces(); ++f) {
+    const int label = labels[static_cast<size_t>(f)];
+    if (label >= 0) moments[static_cast<size_t>(label)].add_face(faces, f);
+  }
+  return moments;
+}
+
+std::vector<ClusterMoments> fit_proxies(const Metric& metric, Clustering& clustering) {
+  std::vector<ClusterMoments> moments = cluster_moments(metric.faces(), clustering.labels, clustering.num_clusters());
+  for (size_t i = 0; i < moments.size(); ++i) clustering.proxies[i] = metric.fit(moments[i], clustering.proxies[i]);
+  return moments;
+}
+
+EnergyTerms clustering_energy(const Metric& metric, const std::vector<ClusterMoments>& moments,
+                              const std::vector<Proxy>& proxies) {
+  EnergyTerms total;
+  for (size_t i = 0; i < moments.size(); ++i) total += metric.energy(moments[i], proxies[i]);
+  return total;
+}
+
+void choose_seeds(const Metric& metric, Clustering& clustering) {
+  const int n = clustering.num_clusters();
+  std::vector<Metric::Terms> terms;
+  terms.reserve(static_cast<size_t>(n));
+  for (const Proxy& p : clustering.proxies) terms.push_back(metric.terms(p));
+  std::vector<double> best(static_cast<size_t>(n), std::numeric_limits<double>::infinity());
+  std::vector<int> seeds = clustering.seeds;
+  for (int f = 0; f < metric.faces().num_faces(); ++f) {
+    const int i = clustering.labels[static_cast<size_t>(f)];
+    if (i < 0 || clustering.sticky[static_cast<size_t>(i)] > 0) continue;
+    // Cost per unit area, so a sliver is not chosen just for being small.
+    const double area = metric.faces().area[static_cast<size_t>(f)];
+    if (!(area > 0.0)) continue;
+    const double c = metric.cost(f, terms[static_cast<size_t>(i)]) / area;
+    if (c < best[static_cast<size_t>(i)]) {
+      best[static_cast<size_t>(i)] = c;
+      seeds[static_cast<size_t>(i)] = f;
+    }
+  }
+  clustering.seeds = std::move(seeds);
+}
+
+std::vector<std::pair<int, int>> adjacent_cluster_pairs(const MeshTopology& topology,
+                                                        const std::vector<int>& labels) {
+  std::vector<std::pair<int, int>> pairs;
+  for (const auto& ef : topology.edge_faces) {
+    if (ef[1] < 0) continue;
+    const int a = labels[static_cast<size_t>(ef[0])], b = labels[static_cast<size_t>(ef[1])];
+    if (a != b && a >= 0 && b >= 0) pairs.emplace_back(std::min(a, b), std::max(a, b));
+  }
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  return pairs;
+}
+
+bool clusters_are_contiguous(const MeshTopology& topology, const std::vector<int>& labels, int num_clusters) {
+  const size_t faces = labels.size();
+  std::vector<int> first(static_cast<size_t>(num_clusters), -1);
+  for (size_t f = 0; f < faces; ++f) {
+    const int l = labels[f];
+    if (l < 0 || l >= num_clusters) return false;
+    if (first[static_cast<size_t>(l)] < 0) first[static_cast<size_t>(l)] = static_cast<int>(f);
+  }
+  std::vector<char> seen(faces, 0);
+  std::vector<int> stack;
+  for (int i = 0; i < num_clusters; ++i) {
+    if (first[static_cast<size_t>(i)] < 0) return false;  // empty cluster
+    stack.push_back(first[static_cast<size_t>(i)]);
+    seen[static_cast<size_t>(first[static_cast<size_t>(i)])] = 1;
+    while (!stack.empty()) {
+      const int f = stack.back();
+      stack.pop_back();
+      for (int g : topology.face_neighbors[static_cast<size_t>(f)]) {
+        if (g >= 0 && !seen[static_cast<size_t>(g)] && labels[static_cast<size_t>(g)] == i) {
+          seen[static_cast<size_t>(g)] = 1;
+          stack.push_back(g);
+        }
+      }
+    }
+  }
+  return std::all_of(seen.begin(), seen.end(), [](char s) { return s != 0; });
+}
+
+}  // namespace ff

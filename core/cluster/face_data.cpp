@@ -1,0 +1,83 @@
+#include "core/cluster/face_data.h"
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <string>
+
+#include "core/util/error.h"
+
+namespace ff {
+
+namespace {
+
+std::vector<double> face_density(const TriMesh& mesh, const std::vector<double>& values) {
+  const size_t faces = mesh.triangles.size();
+  std::vector<double> density(faces, 1.0);
+  if (values.empty()) return density;
+  const size_t vertices = mesh.positions.size();
+  if (values.size() != vertices && values.size() != faces) {
+    throw InputError("density has " + std::to_string(values.size()) + " values; expected one per vertex (" +
+                     std::to_string(vertices) + ") or one per face (" + std::to_string(faces) + ")");
+  }
+  for (size_t i = 0; i < values.size(); ++i) {
+    if (!std::isfinite(values[i]) || values[i] <= 0.0) {
+      throw InputError("density value " + std::to_string(i + 1) + " is " + std::to_string(values[i]) +
+                       "; densities must be finite and greater than 0");
+    }
+  }
+  // When the counts coincide, per vertex wins: it is what painting and --density produce.
+  if (values.size() != vertices) return values;
+  for (size_t f = 0; f < faces; ++f) {
+    const Triangle& t = mesh.triangles[f];
+    density[f] = (values[static_cast<size_t>(t[0])] + values[static_cast<size_t>(t[1])] +
+                  values[static_cast<size_t>(t[2])]) /
+                 3.0;
+  }
+  return density;
+}
+
+}  // namespace
+
+FaceData make_face_data(const TriMesh& mesh, const std::vector<double>& density) {
+  FaceData data;
+  const size_t faces = mesh.triangles.size();
+  if (!mesh.positions.empty()) {
+    Vec3 lo = mesh.positions.front(), hi = lo;
+    for (const Vec3& p : mesh.positions) {
+      lo = lo.cwiseMin(p);
+      hi = hi.cwiseMax(p);
+    }
+    data.origin = 0.5 * (lo + hi);
+  }
+  data.area.resize(faces);
+  data.centroid.resize(faces);
+  data.normal.resize(faces);
+  data.spread.resize(faces);
+  for (size_t f = 0; f < faces; ++f) {
+    const Triangle& t = mesh.triangles[f];
+    const Vec3 a = mesh.positions[static_cast<size_t>(t[0])] - data.origin;
+    const Vec3 b = mesh.positions[static_cast<size_t>(t[1])] - data.origin;
+    const Vec3 c = mesh.positions[static_cast<size_t>(t[2])] - data.origin;
+    const Vec3 cross = (b - a).cross(c - a);
+    const double len = cross.norm();
+    data.area[f] = 0.5 * len;
+    data.normal[f] = len > 0.0 ? Vec3(cross / len) : Vec3::Zero();
+    const Vec3 centroid = (a + b + c) / 3.0;
+    data.centroid[f] = centroid;
+    const Vec3 da = a - centroid, db = b - centroid, dc = c - centroid;
+    const auto s = [&](int i, int j) { return (da[i] * da[j] + db[i] * db[j] + dc[i] * dc[j]) / 12.0; };
+    data.spread[f] = {s(0, 0), s(1, 1), s(2, 2), s(0, 1), s(0, 2), s(1, 2)};
+    data.total_area += data.area[f];
+  }
+  data.density = face_density(mesh, density);
+  // Normalise to an area-weighted mean of 1 so the expected cluster diameter keeps its meaning.
+  double weighted = 0.0;
+  for (size_t f = 0; f < faces; ++f) weighted += data.area[f] * data.density[f];
+  if (weighted > 0.0 && data.total_area > 0.0) {
+    const double scale = data.total_area / weighted;
+    for (double& d : data.density) d *= scale;
+  }
+  return data;
+}
+
+}  // namespace ff

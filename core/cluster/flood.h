@@ -1,0 +1,21 @@
+#pragma once
+// Flooding (Cohen-Steiner et al. 2004, paper 3.1): grow all clusters at once from their
+// seeds; a priority queue holds (cost, face, cluster) for faces next to a cluster and a face
+// joins the cluster of its cheapest entry, when that entry is popped first. Clusters grow
+// across edges only, so each stays contiguous. O(m log m); an entry is pushed only when it
+// beats the face's best pending cost, so the queue stays near the size of the fronts.
+#include <vector>
+
+#include "core/cluster/clustering.h"
+#include "core/cluster/metric.h"
+#include "core/mesh/topology.h"
+
+namespace ff {
+
+// Reassigns clustering.labels from clustering.seeds and proxies. Sticky clusters also keep
+// the faces around their seed (its edge neighbours), so a fresh cluster cannot be swallowed.
+// Faces unreachable from any seed (a component without a seed) keep label -1; callers place
+// at least one seed per component.
+void flood(const Metric& metric, const MeshTopology& topology, Clustering& clustering);
+
+}  // namespace ff

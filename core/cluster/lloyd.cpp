@@ -1,0 +1,46 @@
+#include "core/cluster/lloyd.h"
+
+#include "core/cluster/flood.h"
+
+namespace ff {
+
+Clustering initial_clustering(const Metric& metric, const MeshTopology& topology, const std::vector<int>& seeds) {
+  const FaceData& faces = metric.faces();
+  Clustering c;
+  c.seeds = seeds;
+  c.sticky.assign(seeds.size(), 0);
+  c.proxies.reserve(seeds.size());
+  for (int f : seeds) {
+    Proxy p;
+    p.center = faces.centroid[static_cast<size_t>(f)];
+    const Vec3& n = faces.normal[static_cast<size_t>(f)];
+    p.normal = n.squaredNorm() > 0.0 ? n : Vec3::UnitZ();
+    p.density = faces.density[static_cast<size_t>(f)];
+    c.proxies.push_back(p);
+  }
+  reflood(metric, topology, c);
+  return c;
+}
+
+LloydResult reflood(const Metric& metric, const MeshTopology& topology, Clustering& clustering) {
+  const std::vector<int> before = clustering.labels;
+  flood(metric, topology, clustering);
+  LloydResult result;
+  for (size_t f = 0; f < clustering.labels.size(); ++f) {
+    if (f >= before.size() || before[f] != clustering.labels[f]) ++result.changed_faces;
+  }
+  const std::vector<ClusterMoments> moments = fit_proxies(metric, clustering);
+  result.energy = clustering_energy(metric, moments, clustering.proxies);
+  return result;
+}
+
+LloydResult lloyd_iteration(const Metric& metric, const MeshTopology& topology, Clustering& clustering) {
+  choose_seeds(metric, clustering);
+  const LloydResult result = reflood(metric, topology, clustering);
+  for (int& s : clustering.sticky) {
+    if (s > 0) --s;
+  }
+  return result;
+}
+
+}  // namespace ff

@@ -1,0 +1,160 @@
+#include "core/cluster/metric.h"
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+
+#include "core/util/error.h"
+
+namespace ff {
+
+void ClusterMoments::add_face(const FaceData& faces, int face) {
+  const size_t f = static_cast<size_t>(face);
+  const double a = faces.area[f];
+  const Vec3& c = faces.centroid[f];
+  const std::array<double, 6>& s = faces.spread[f];
+  area += a;
+  first += a * c;
+  centroid_sq += a * c.squaredNorm();
+  // integral p p^T = a (c c^T + spread)
+  Eigen::Matrix3d spread;
+  spread << s[0], s[3], s[4], s[3], s[1], s[5], s[4], s[5], s[2];
+  second += a * (c * c.transpose() + spread);
+  normal_sum += a * faces.normal[f];
+  density_area += a * faces.density[f];
+}
+
+void ClusterMoments::add(const ClusterMoments& o) {
+  area += o.area;
+  first += o.first;
+  centroid_sq += o.centroid_sq;
+  second += o.second;
+  normal_sum += o.normal_sum;
+  density_area += o.density_area;
+}
+
+EnergyTerms& EnergyTerms::operator+=(const EnergyTerms& o) {
+  euclidean += o.euclidean;
+  l2 += o.l2;
+  l21 += o.l21;
+  density += o.density;
+  return *this;
+}
+
+Metric::Metric(const FaceData& faces, const MetricWeights& weights, int num_clusters)
+    : faces_(&faces), weights_(weights), diameter_(0.0) {
+  const auto bad = [](double w) { return !std::isfinite(w) || w < 0.0; };
+  if (bad(weights.euclidean) || bad(weights.l2) || bad(weights.l21) || bad(weights.density) ||
+      bad(weights.boundary)) {
+    throw InputError("metric weights must be finite and >= 0");
+  }
+  if (weights.euclidean + weights.l2 + weights.l21 <= 0.0) {
+    throw InputError("at least one of the euclidean, l2 and l21 weights must be > 0");
+  }
+  if (num_clusters < 1) throw InputError("the number of panels must be at least 1");
+  diameter_ = std::sqrt(faces.total_area / num_clusters);
+  if (!(diameter_ > 0.0)) throw InputError("the surface has zero area");
+}
+
+Metric::Terms Metric::terms(const Proxy& proxy) const {
+  const double inv_d2 = 1.0 / (diameter_ * diameter_);
+  const double density_scale = weights_.density == 0.0 ? 1.0 : std::pow(proxy.density, weights_.density);
+  return Terms{proxy.center, proxy.normal, weights_.euclidean * density_scale * inv_d2, weights_.l2 * inv_d2,
+               weights_.l21};
+}
+
+Vec3 minimize_quadratic_on_sphere(const Eigen::Matrix3d& A, const Vec3& b) {
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(A);
+  const Vec3 lambda = eig.eigenvalues();  // ascending
+  const Eigen::Matrix3d Q = eig.eigenvectors();
+  const Vec3 beta = Q.transpose() * b;
+  const double bnorm = b.norm();
+  const double scale = std::max({std::abs(lambda[0]), std::abs(lambda[2]), bnorm, 1e-300});
+  if (bnorm <= 1e-14 * scale) return Q.col(0);  // pure eigenproblem
+
+  // Stationary points: (lambda_k - mu) y_k = beta_k with |y| = 1 and mu <= lambda_0.
+  const auto norm_sq = [&](double mu) {
+    double sum = 0.0;
+    for (int k = 0; k < 3; ++k) {
+      const double d = lambda[k] - mu;
+      sum += beta[k] * beta[k] / (d * d);
+    }
+    return sum;
+  };
+  // Hard case: beta_0 ~ 0 and the other components alone do not reach the sphere at mu = lambda_0.
+  const double tiny = 1e-12 * bnorm;
+  if (std::abs(beta[0]) <= tiny) {
+    double rest = 0.0;
+    Vec3 y = Vec3::Zero();
+    for (int k = 1; k < 3; ++k) {
+      const double d = lambda[k] - lambda[0];
+      if (d > 1e-14 * scale) {
+        y[k] = beta[k] / d;
+        rest += y[k] * y[k];
+      } else {
+        rest = 2.0;  // degenerate lowest eigenspace: the secular solve below handles it
+      }
+    }
+    if (rest <= 1.0) {
+      y[0] = std::sqrt(1.0 - rest);
+      return Q * y;
+    }
+  }
+  // norm_sq is increasing on (-inf, lambda_0) and <= 1 at lambda_0 - |b|: bisect for 1.
+  double lo = lambda[0] - bnorm, hi = lambda[0];
+  for (int it = 0; it < 200 && hi - lo > 1e-15 * (std::abs(lo) + std::abs(hi) + 1e-300); ++it) {
+    const double mid = 0.5 * (lo + hi);
+    if (mid <= lo || mid >= hi) break;
+    (norm_sq(mid) > 1.0 ? hi : lo) = mid;
+  }
+  Vec3 y;
+  for (int k = 0; k < 3; ++k) {
+    const double d = lambda[k] - lo;
+    y[k] = d > 0.0 ? beta[k] / d : (beta[k] >= 0 ? 1.0 : -1.0);
+  }
+  return Q * y.normalized();
+}
+
+Proxy Metric::fit(const ClusterMoments& m, const Proxy& fallback) const {
+  if (!(m.area > 0.0)) return fallback;
+  Proxy p;
+  p.center = m.first / m.area;
+  p.density = m.density_area / m.area;
+  Eigen::Matrix3d cov = m.second - m.area * p.center * p.center.transpose();
+  cov = 0.5 * (cov + cov.transpose());
+  const double inv_d2 = 1.0 / (diameter_ * diameter_);
+  const Vec3 mean_normal = m.normal_sum;
+  Vec3 normal;
+  if (weights_.l2 > 0.0 || weights_.l21 > 0.0) {
+    normal = minimize_quadratic_on_sphere(weights_.l2 * inv_d2 * cov, weights_.l21 * mean_normal);
+  } else {
+    // Euclidean only: the normal plays no part in the cost; keep the plane meaningful.
+    normal = mean_normal.norm() > 0.0 ? Vec3(mean_normal.normalized())
+                                      : minimize_quadratic_on_sphere(cov, Vec3::Zero());
+  }
+  if (normal.dot(mean_normal) < 0.0) normal = -normal;
+  p.normal = normal;
+  return p;
+}
+
+EnergyTerms Metric::energy(const ClusterMoments& m, const Proxy& proxy) const {
+  EnergyTerms e;
+  if (!(m.area > 0.0)) return e;
+  const double inv_d2 = 1.0 / (diameter_ * diameter_);
+  const Vec3& x = proxy.center;
+  const Vec3& N = proxy.normal;
+  const double euclid = std::max(0.0, m.centroid_sq - 2.0 * x.dot(m.first) + m.area * x.squaredNorm());
+  const Eigen::Matrix3d about_x =
+      m.second - m.first * x.transpose() - x * m.first.transpose() + m.area * x * x.transpose();
+  const double l2 = std::max(0.0, N.dot(about_x * N));
+  const double l21 = std::max(0.0, 2.0 * m.area - 2.0 * N.dot(m.normal_sum));
+  const double density_scale =
+      weights_.density == 0.0 ? 1.0 : std::pow(proxy.density, weights_.density);
+  e.euclidean = weights_.euclidean * euclid * inv_d2;
+  e.density = weights_.euclidean * (density_scale - 1.0) * euclid * inv_d2;
+  e.l2 = weights_.l2 * l2 * inv_d2;
+  e.l21 = weights_.l21 * l21;
+  return e;
+}
+
+}  // namespace ff

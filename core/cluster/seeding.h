@@ -1,0 +1,27 @@
+#pragma once
+// Initial seeds (paper 2: "place n seeds"). Every connected component gets seeds in
+// proportion to its area and at least one, so flooding reaches every face.
+//   Random:        area-weighted random faces from our PRNG (what CGAL's VSA and the
+//                  paper do), for comparison and benchmarks.
+//   FarthestPoint: the first seed of a component at random, each next one the face
+//                  farthest (geodesically, over the face-adjacency graph) from all seeds
+//                  so far; an even spread that makes Lloyd converge in fewer iterations.
+#include <cstdint>
+#include <vector>
+
+#include "core/cluster/face_data.h"
+#include "core/mesh/topology.h"
+
+namespace ff {
+
+enum class SeedingMethod { Random, FarthestPoint };
+
+// Seeds per component: largest-remainder split of n by area, at least one each. Throws
+// InputError when n < number of components or n > number of faces.
+std::vector<int> seeds_per_component(const FaceData& faces, const MeshTopology& topology, int n);
+
+// n distinct seed faces. Deterministic for a given seed value.
+std::vector<int> place_seeds(const FaceData& faces, const MeshTopology& topology, int n, SeedingMethod method,
+                             std::uint64_t seed);
+
+}  // namespace ff

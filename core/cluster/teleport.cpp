@@ -1,0 +1,201 @@
+#include "core/cluster/teleport.h"
+
+#include <algorithm>
+#include <numeric>
+
+#include "core/cluster/lloyd.h"
+
+namespace ff {
+
+namespace {
+
+struct MergeCandidate {
+  double cost;  // energy of the union minus the energies of the two parts
+  int a, b;
+  bool operator<(const MergeCandidate& o) const {
+    if (cost != o.cost) return cost < o.cost;
+    return a != o.a ? a < o.a : b < o.b;
+  }
+};
+
+// Everything the moves need, computed in one pass over the faces.
+struct ClusterStats {
+  std::vector<ClusterMoments> moments;
+  std::vector<double> energy;
+  std::vector<int> worst_face;  // the face farthest from the proxy (never the seed), or -1
+};
+
+ClusterStats cluster_stats(const Metric& metric, const Clustering& c) {
+  ClusterStats s;
+  const int n = c.num_clusters();
+  s.moments = cluster_moments(metric.faces(), c.labels, n);
+  s.energy.resize(static_cast<size_t>(n));
+  for (size_t i = 0; i < s.moments.size(); ++i) s.energy[i] = metric.energy(s.moments[i], c.proxies[i]).total();
+  std::vector<Metric::Terms> terms;
+  for (const Proxy& p : c.proxies) terms.push_back(metric.terms(p));
+  s.worst_face.assign(static_cast<size_t>(n), -1);
+  std::vector<double> worst_cost(static_cast<size_t>(n), -1.0);
+  for (int f = 0; f < metric.faces().num_faces(); ++f) {
+    const int i = c.labels[static_cast<size_t>(f)];
+    if (i < 0 || f == c.seeds[static_cast<size_t>(i)]) continue;
+    const double cost = metric.cost(f, terms[static_cast<size_t>(i)]);
+    if (cost > worst_cost[static_cast<size_t>(i)]) {
+      worst_cost[static_cast<size_t>(i)] = cost;
+      s.worst_face[static_cast<size_t>(i)] = f;
+    }
+  }
+  return s;
+}
+
+std::vector<MergeCandidate> merge_candidates(const Metric& metric, const MeshTopology& topology,
+                                             const Clustering& c, const ClusterStats& s) {
+  std::vector<MergeCandidate> out;
+  for (const auto& [a, b] : adjacent_cluster_pairs(topology, c.labels)) {
+    ClusterMoments merged = s.moments[static_cast<size_t>(a)];
+    merged.add(s.moments[static_cast<size_t>(b)]);
+    const Proxy p = metric.fit(merged, c.proxies[static_cast<size_t>(a)]);
+    out.push_back({metric.energy(merged, p).total() - s.energy[static_cast<size_t>(a)] - s.energy[static_cast<size_t>(b)], a, b});
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+// Clusters by decreasing energy (ties by id).
+std::vector<int> worst_first(const std::vector<double>& energy) {
+  std::vector<int> order(energy.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int x, int y) { return energy[static_cast<size_t>(x)] > energy[static_cast<size_t>(y)]; });
+  return order;
+}
+
+// Folds cluster b into a (moments, proxy, and the label remap applied later).
+void merge_into(const Metric& metric, Clustering& c, ClusterStats& s, std::vector<int>& remap, int a, int b) {
+  remap[static_cast<size_t>(b)] = a;
+  s.moments[static_cast<size_t>(a)].add(s.moments[static_cast<size_t>(b)]);
+  c.proxies[static_cast<size_t>(a)] = metric.fit(s.moments[static_cast<size_t>(a)], c.proxies[static_cast<size_t>(a)]);
+}
+
+// Seeds cluster slot `id` at the worst face of cluster w with a one-face proxy.
+bool split_into(const Metric& metric, Clustering& c, const ClusterStats& s, int w, int id, int sticky_iterations) {
+  const int face = s.worst_face[static_cast<size_t>(w)];
+  if (face < 0) return false;  // a one-face cluster cannot be split
+  const FaceData& faces = metric.faces();
+  Proxy p;
+  p.center = faces.centroid[static_cast<size_t>(face)];
+  const Vec3& n = faces.normal[static_cast<size_t>(face)];
+  p.normal = n.squaredNorm() > 0.0 ? n : c.proxies[static_cast<size_t>(w)].normal;
+  p.density = faces.density[static_cast<size_t>(face)];
+  c.proxies[static_cast<size_t>(id)] = p;
+  c.seeds[static_cast<size_t>(id)] = face;
+  c.sticky[static_cast<size_t>(id)] = sticky_iterations;
+  return true;
+}
+
+void apply_remap(Clustering& c, const std::vector<int>& remap) {
+  for (int& l : c.labels) {
+    if (l >= 0) l = remap[static_cast<size_t>(l)];
+  }
+}
+
+}  // namespace
+
+int teleport(const Metric& metric, const MeshTopology& topology, Clustering& c, const TeleportOptions& options) {
+  ClusterStats s = cluster_stats(metric, c);
+  const std::vector<MergeCandidate> merges = merge_candidates(metric, topology, c, s);
+  const std::vector<int> worst = worst_first(s.energy);
+  std::vector<char> used(static_cast<size_t>(c.num_clusters()), 0);
+  for (int i = 0; i < c.num_clusters(); ++i) used[static_cast<size_t>(i)] = c.sticky[static_cast<size_t>(i)] > 0;
+  std::vector<int> remap(static_cast<size_t>(c.num_clusters()));
+  std::iota(remap.begin(), remap.end(), 0);
+
+  int moves = 0;
+  size_t next_merge = 0, next_worst = 0;
+  while (moves < options.max_moves) {
+    while (next_worst < worst.size() && (used[static_cast<size_t>(worst[next_worst])] ||
+                                         s.worst_face[static_cast<size_t>(worst[next_worst])] < 0)) {
+      ++next_worst;
+    }
+    if (next_worst == worst.size()) break;
+    const int w = worst[next_worst];
+    const auto free_pair = [&](const MergeCandidate& m) {
+      return !used[static_cast<size_t>(m.a)] && !used[static_cast<size_t>(m.b)] && m.a != w && m.b != w;
+    };
+    while (next_merge < merges.size() && !free_pair(merges[next_merge])) ++next_merge;
+    if (next_merge == merges.size()) break;
+    const MergeCandidate& m = merges[next_merge];
+    if (!(m.cost < 0.5 * s.energy[static_cast<size_t>(w)])) break;
+    used[static_cast<size_t>(w)] = used[static_cast<size_t>(m.a)] = used[static_cast<size_t>(m.b)] = 1;
+    merge_into(metric, c, s, remap, m.a, m.b);
+    split_into(metric, c, s, w, m.b, options.sticky_iterations);
+    ++moves;
+  }
+  if (moves > 0) {
+    apply_remap(c, remap);
+    reflood(metric, topology, c);
+  }
+  return moves;
+}
+
+void add_clusters(const Metric& metric, const MeshTopology& topology, Clustering& c, int count, int sticky_iterations) {
+  while (count > 0) {
+    const ClusterStats s = cluster_stats(metric, c);
+    int added = 0;
+    for (int w : worst_first(s.energy)) {
+      if (added == count) break;
+      const int id = c.num_clusters();
+      c.proxies.emplace_back();
+      c.seeds.push_back(-1);
+      c.sticky.push_back(0);
+      if (split_into(metric, c, s, w, id, sticky_iterations)) {
+        ++added;
+      } else {
+        c.proxies.pop_back();
+        c.seeds.pop_back();
+        c.sticky.pop_back();
+      }
+    }
+    reflood(metric, topology, c);
+    if (added == 0) break;  // only one-face clusters left
+    count -= added;
+  }
+}
+
+void remove_clusters(const Metric& metric, const MeshTopology& topology, Clustering& c, int count) {
+  while (count > 0) {
+    ClusterStats s = cluster_stats(metric, c);
+    const std::vector<MergeCandidate> merges = merge_candidates(metric, topology, c, s);
+    const int n = c.num_clusters();
+    std::vector<int> remap(static_cast<size_t>(n));
+    std::iota(remap.begin(), remap.end(), 0);
+    std::vector<char> used(static_cast<size_t>(n), 0);
+    int merged = 0;
+    // Cheapest disjoint pairs first, at most half of what is left per pass.
+    for (const MergeCandidate& m : merges) {
+      if (merged == count) break;
+      if (used[static_cast<size_t>(m.a)] || used[static_cast<size_t>(m.b)]) continue;
+      used[static_cast<size_t>(m.a)] = used[static_cast<size_t>(m.b)] = 1;
+      merge_into(metric, c, s, remap, m.a, m.b);
+      ++merged;
+    }
+    if (merged == 0) break;  // every cluster is a component of its own
+    // Compact ids: survivors keep their order.
+    std::vector<int> compact(static_cast<size_t>(n), -1);
+    Clustering kept;
+    for (int i = 0; i < n; ++i) {
+      if (remap[static_cast<size_t>(i)] != i) continue;
+      compact[static_cast<size_t>(i)] = kept.num_clusters();
+      kept.proxies.push_back(c.proxies[static_cast<size_t>(i)]);
+      kept.seeds.push_back(c.seeds[static_cast<size_t>(i)]);
+      kept.sticky.push_back(c.sticky[static_cast<size_t>(i)]);
+    }
+    for (int i = 0; i < n; ++i) remap[static_cast<size_t>(i)] = compact[static_cast<size_t>(remap[static_cast<size_t>(i)])];
+    kept.labels = std::move(c.labels);
+    apply_remap(kept, remap);
+    c = std::move(kept);
+    reflood(metric, topology, c);
+    count -= merged;
+  }
+}
+
+}  // namespace ff

@@ -1,0 +1,91 @@
+#pragma once
+// Remesher: the pipeline as a resumable state machine (DESIGN.md 2). step() does bounded
+// work (seeding, or one Lloyd iteration) and returns Progress, so the CLI, the tests and the
+// web worker drive the same object and can stop, report or change parameters between steps.
+//
+// Stages so far: Seeding -> Lloyd (k1 iterations, teleports every few) -> Done. The panel
+// phase (corners, plane intersection, fixes) slots in between Lloyd and Done.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/cluster/clustering.h"
+#include "core/cluster/face_data.h"
+#include "core/cluster/metric.h"
+#include "core/cluster/seeding.h"
+#include "core/mesh/topology.h"
+#include "core/mesh/tri_mesh.h"
+
+namespace ff {
+
+struct RemeshParams {
+  int panels = 100;
+  std::uint64_t seed = 1;
+  MetricWeights weights;
+  // Empty (uniform), one value per mesh vertex or one per face; higher = smaller panels.
+  std::vector<double> density;
+  int lloyd_iterations = 20;  // k1: an upper bound; stops earlier at a fixed point
+  SeedingMethod seeding = SeedingMethod::FarthestPoint;
+  int teleport_interval = 4;  // teleport before every 4th iteration; 0 = never
+  int teleport_moves = 0;     // moves per teleport; 0 = automatic (1 per 64 clusters, >= 1)
+};
+
+enum class Stage { Seeding, Lloyd, Done };
+const char* stage_name(Stage stage);
+
+struct Progress {
+  Stage stage = Stage::Seeding;
+  int iteration = 0;  // within the stage
+  int of = 0;         // the stage's iteration limit
+  double energy = 0.0;
+  int invalid_panels = 0;
+};
+
+class Remesher {
+ public:
+  // The mesh must be clean (clean_mesh): edge-manifold and consistently oriented.
+  // Throws InputError for bad parameters (panel count vs faces and components, weights,
+  // density size or values, negative iteration counts).
+  Remesher(TriMesh mesh, RemeshParams params);
+  // The metric refers to the face data inside: not copyable or movable.
+  Remesher(const Remesher&) = delete;
+  Remesher& operator=(const Remesher&) = delete;
+
+  Progress step();
+  bool done() const { return progress_.stage == Stage::Done; }
+  // Steps until done; returns the final progress.
+  Progress run();
+  const Progress& progress() const { return progress_; }
+
+  // New parameters, warm-started from the current clustering: a changed panel count splits
+  // the worst or merges the cheapest clusters, changed weights or density refit; then the
+  // Lloyd phase runs again. A changed seed or seeding method starts over.
+  void set_params(RemeshParams params);
+
+  const TriMesh& mesh() const { return mesh_; }
+  const MeshTopology& topology() const { return topology_; }
+  const RemeshParams& params() const { return params_; }
+  const Clustering& clustering() const { return clustering_; }
+  const Metric& metric() const { return metric_; }
+  EnergyTerms energy() const;
+  int lloyd_iterations_done() const { return lloyd_done_; }
+  int teleports_done() const { return teleports_; }
+  bool converged() const { return converged_; }
+
+ private:
+  void validate(const RemeshParams& params) const;
+  void start_lloyd();
+
+  TriMesh mesh_;
+  MeshTopology topology_;
+  RemeshParams params_;
+  FaceData faces_;
+  Metric metric_;
+  Clustering clustering_;
+  Progress progress_;
+  int lloyd_done_ = 0;
+  int teleports_ = 0;
+  bool converged_ = false;
+};
+
+}  // namespace ff

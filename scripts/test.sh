@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# Builds and runs every test: the native GoogleTest suite and CLI checks (Release), the same
+# core tests under AddressSanitizer + UndefinedBehaviorSanitizer, and a smoke run of the
+# benchmark driver. Installs what is missing first (scripts/setup.sh).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+jobs=$(nproc 2>/dev/null || echo 2)
+
+scripts/setup.sh
+
+echo "== native build (Release)"
+cmake -S . -B build/release -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build build/release -j"$jobs"
+
+echo "== native tests"
+ctest --test-dir build/release --output-on-failure -j"$jobs"
+
+echo "== sanitizer build (ASan + UBSan) of the core tests"
+cmake -S . -B build/sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFF_SANITIZE=ON -DFF_BUILD_BENCH=OFF >/dev/null
+cmake --build build/sanitize -j"$jobs" --target ff_core_tests flatfacet
+ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
+  ctest --test-dir build/sanitize --output-on-failure -j"$jobs"
+
+echo "== benchmark smoke run"
+if [ -x build/release/bench/bench_cluster ]; then
+  build/release/bench/bench_cluster --smoke
+fi
