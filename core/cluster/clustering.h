@@ -14,6 +14,7 @@ struct Clustering {
   std::vector<Proxy> proxies; // per cluster
   std::vector<int> seeds;     // per cluster: its seed face
   std::vector<int> sticky;    // per cluster: iterations left during which its seed stays put
+  double energy = 0.0;        // total metric energy of labels under proxies, kept by every refit
 
   int num_clusters() const { return static_cast<int>(proxies.size()); }
 };

@@ -22,7 +22,7 @@ struct Entry {
 
 }  // namespace
 
-void flood(const Metric& metric, const MeshTopology& topology, Clustering& clustering) {
+double flood(const Metric& metric, const MeshTopology& topology, Clustering& clustering) {
   const int faces = metric.faces().num_faces();
   const int n = clustering.num_clusters();
   std::vector<int>& labels = clustering.labels;
@@ -56,16 +56,22 @@ void flood(const Metric& metric, const MeshTopology& topology, Clustering& clust
       if (g >= 0 && labels[static_cast<size_t>(g)] < 0) labels[static_cast<size_t>(g)] = i;
     }
   }
+  double energy = 0.0;
   for (int f = 0; f < faces; ++f) {
-    if (labels[static_cast<size_t>(f)] >= 0) push_neighbours(f, labels[static_cast<size_t>(f)]);
+    const int label = labels[static_cast<size_t>(f)];
+    if (label < 0) continue;
+    energy += metric.cost(f, terms[static_cast<size_t>(label)]);
+    push_neighbours(f, label);
   }
   while (!queue.empty()) {
     const Entry e = queue.top();
     queue.pop();
     if (labels[static_cast<size_t>(e.face)] >= 0) continue;
     labels[static_cast<size_t>(e.face)] = e.cluster;
+    energy += e.cost;
     push_neighbours(e.face, e.cluster);
   }
+  return energy;
 }
 
 }  // namespace ff

@@ -15,7 +15,9 @@ namespace ff {
 // Reassigns clustering.labels from clustering.seeds and proxies. Sticky clusters also keep
 // the faces around their seed (its edge neighbours), so a fresh cluster cannot be swallowed.
 // Faces unreachable from any seed (a component without a seed) keep label -1; callers place
-// at least one seed per component.
-void flood(const Metric& metric, const MeshTopology& topology, Clustering& clustering);
+// at least one seed per component. Returns the energy of the new labels under the proxies it
+// flooded with (the sum of the costs of every assignment), which Lloyd compares with the
+// energy before to keep the iteration monotone.
+double flood(const Metric& metric, const MeshTopology& topology, Clustering& clustering);
 
 }  // namespace ff

@@ -128,30 +128,44 @@ std::vector<int> seeds_per_component(const FaceData& faces, const MeshTopology& 
     area[c] += faces.area[static_cast<size_t>(f)];
     ++capacity[c];
   }
-  // One each, then the rest by largest remainder of the area share, capped by face counts.
-  std::vector<int> count(static_cast<size_t>(components), 1);
-  int left = n - components;
+  // Hamilton's method on the area quotas, with at least one seed per part and at most one
+  // per face; ties go to the lower component index.
   const double total = faces.total_area > 0.0 ? faces.total_area : 1.0;
-  std::vector<std::pair<double, int>> remainders;
-  for (int c = 0; c < components; ++c) {
-    const double share = left * area[static_cast<size_t>(c)] / total;
-    const int whole = std::min(static_cast<int>(share), capacity[static_cast<size_t>(c)] - 1);
-    count[static_cast<size_t>(c)] += whole;
-    remainders.push_back({-(share - whole), c});
+  std::vector<double> quota(static_cast<size_t>(components));
+  std::vector<int> count(static_cast<size_t>(components));
+  int assigned = 0;
+  for (size_t c = 0; c < quota.size(); ++c) {
+    quota[c] = n * area[c] / total;
+    count[c] = std::min(capacity[c], std::max(1, static_cast<int>(quota[c])));
+    assigned += count[c];
   }
-  for (int c : count) left -= c - 1;
-  std::sort(remainders.begin(), remainders.end());
-  while (left > 0) {
-    bool placed = false;
-    for (const auto& r : remainders) {
-      const size_t c = static_cast<size_t>(r.second);
-      if (left > 0 && count[c] < capacity[c]) {
-        ++count[c];
-        --left;
-        placed = true;
+  std::vector<size_t> order(quota.size());
+  for (size_t c = 0; c < order.size(); ++c) order[c] = c;
+  const auto remainder = [&](size_t c) { return quota[c] - count[c]; };
+  while (assigned != n) {
+    // Largest remainder gets one more (when short), smallest gives one back (when over).
+    std::stable_sort(order.begin(), order.end(), [&](size_t x, size_t y) { return remainder(x) > remainder(y); });
+    bool changed = false;
+    if (assigned < n) {
+      for (size_t c : order) {
+        if (count[c] < capacity[c]) {
+          ++count[c];
+          ++assigned;
+          changed = true;
+          break;
+        }
+      }
+    } else {
+      for (auto it = order.rbegin(); it != order.rend(); ++it) {
+        if (count[*it] > 1) {
+          --count[*it];
+          --assigned;
+          changed = true;
+          break;
+        }
       }
     }
-    if (!placed) break;  // cannot happen when n <= faces
+    if (!changed) break;  // cannot happen for components <= n <= faces
   }
   return count;
 }

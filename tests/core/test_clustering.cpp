@@ -118,21 +118,30 @@ INSTANTIATE_TEST_SUITE_P(Meshes, LloydEnergy, ::testing::Values("roof", "bunny.o
                          });
 
 TEST(Teleport, KeepsClusterCountContiguityAndLowersEnergy) {
+  // All seeds crowded into one corner: tiny clusters there are cheap to merge and one
+  // huge cluster is the worst, so teleports must happen and pay off.
   const TriMesh mesh = make_roof(60, 40);
   const MeshTopology topo = build_topology(mesh);
   const FaceData fd = make_face_data(mesh);
   const Metric metric(fd, MetricWeights{}, 30);
-  Clustering c = initial_clustering(metric, topo, place_seeds(fd, topo, 30, SeedingMethod::Random, 2));
-  for (int it = 0; it < 5; ++it) lloyd_iteration(metric, topo, c);
+  std::vector<int> crowded;
+  for (int j = 0; j < 6; ++j)
+    for (int i = 0; i < 5; ++i) crowded.push_back(2 * (j * 60 + i));
+  Clustering c = initial_clustering(metric, topo, crowded);
+  const double before = c.energy;
   TeleportOptions options;
   options.max_moves = 3;
   const int moves = teleport(metric, topo, c, options);
-  EXPECT_GE(moves, 1);  // random seeds leave clusters worth moving
+  EXPECT_EQ(moves, 3);
   EXPECT_EQ(c.num_clusters(), 30);
   EXPECT_TRUE(clusters_are_contiguous(topo, c.labels, 30));
   int sticky = 0;
   for (int s : c.sticky) sticky += s > 0;
   EXPECT_EQ(sticky, moves);
+  lloyd_iteration(metric, topo, c);
+  EXPECT_LT(c.energy, before);
+  // Clusters keep every face and their seeds.
+  for (int i = 0; i < 30; ++i) EXPECT_EQ(c.labels[static_cast<size_t>(c.seeds[static_cast<size_t>(i)])], i);
 }
 
 TEST(Teleport, AddAndRemoveClustersKeepInvariants) {

@@ -2,6 +2,7 @@
 // Where the tests find the shared real-world meshes (../shared/meshes beside the clone,
 // or $FF_SHARED_MESHES). A missing mesh is a test failure, never a skip.
 #include <cstdlib>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,9 @@ struct SharedMesh {
   bool closed;
   int boundary_loops;
 };
+
+// So GoogleTest names the mesh in failure messages.
+inline void PrintTo(const SharedMesh& mesh, std::ostream* os) { *os << mesh.file; }
 
 inline const std::vector<SharedMesh>& shared_meshes() {
   static const std::vector<SharedMesh> meshes = {
