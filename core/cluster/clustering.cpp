@@ -39,7 +39,7 @@ void choose_seeds(const Metric& metric, Clustering& clustering) {
     const int i = clustering.labels[static_cast<size_t>(f)];
     if (i < 0 || clustering.sticky[static_cast<size_t>(i)] > 0) continue;
     // Cost per unit area, so a sliver is not chosen just for being small.
-    const double area = metric.faces().area[static_cast<size_t>(f)];
+    const double area = metric.faces()[f].area;
     if (!(area > 0.0)) continue;
     const double c = metric.cost(f, terms[static_cast<size_t>(i)]) / area;
     if (c < best[static_cast<size_t>(i)]) {

@@ -49,33 +49,31 @@ FaceData make_face_data(const TriMesh& mesh, const std::vector<double>& density)
     }
     data.origin = 0.5 * (lo + hi);
   }
-  data.area.resize(faces);
-  data.centroid.resize(faces);
-  data.normal.resize(faces);
-  data.spread.resize(faces);
+  data.records.resize(faces);
+  const std::vector<double> density_per_face = face_density(mesh, density);
   for (size_t f = 0; f < faces; ++f) {
+    FaceRecord& r = data.records[f];
     const Triangle& t = mesh.triangles[f];
     const Vec3 a = mesh.positions[static_cast<size_t>(t[0])] - data.origin;
     const Vec3 b = mesh.positions[static_cast<size_t>(t[1])] - data.origin;
     const Vec3 c = mesh.positions[static_cast<size_t>(t[2])] - data.origin;
     const Vec3 cross = (b - a).cross(c - a);
     const double len = cross.norm();
-    data.area[f] = 0.5 * len;
-    data.normal[f] = len > 0.0 ? Vec3(cross / len) : Vec3::Zero();
-    const Vec3 centroid = (a + b + c) / 3.0;
-    data.centroid[f] = centroid;
-    const Vec3 da = a - centroid, db = b - centroid, dc = c - centroid;
+    r.area = 0.5 * len;
+    r.normal = len > 0.0 ? Vec3(cross / len) : Vec3::Zero();
+    r.centroid = (a + b + c) / 3.0;
+    const Vec3 da = a - r.centroid, db = b - r.centroid, dc = c - r.centroid;
     const auto s = [&](int i, int j) { return (da[i] * da[j] + db[i] * db[j] + dc[i] * dc[j]) / 12.0; };
-    data.spread[f] = {s(0, 0), s(1, 1), s(2, 2), s(0, 1), s(0, 2), s(1, 2)};
-    data.total_area += data.area[f];
+    r.spread = {s(0, 0), s(1, 1), s(2, 2), s(0, 1), s(0, 2), s(1, 2)};
+    r.density = density_per_face[f];
+    data.total_area += r.area;
   }
-  data.density = face_density(mesh, density);
   // Normalise to an area-weighted mean of 1 so the expected cluster diameter keeps its meaning.
   double weighted = 0.0;
-  for (size_t f = 0; f < faces; ++f) weighted += data.area[f] * data.density[f];
+  for (const FaceRecord& r : data.records) weighted += r.area * r.density;
   if (weighted > 0.0 && data.total_area > 0.0) {
     const double scale = data.total_area / weighted;
-    for (double& d : data.density) d *= scale;
+    for (FaceRecord& r : data.records) r.density *= scale;
   }
   return data;
 }

@@ -1,7 +1,7 @@
 #include "core/cluster/flood.h"
 
+#include <algorithm>
 #include <limits>
-#include <queue>
 
 namespace ff {
 
@@ -10,14 +10,53 @@ namespace {
 struct Entry {
   double cost;
   int face;
-  int cluster;
-  // Min-heap by cost; ties broken by face then cluster so the result never depends on
-  // anything but the input.
-  bool operator<(const Entry& o) const {
-    if (cost != o.cost) return cost > o.cost;
-    if (face != o.face) return face > o.face;
-    return cluster > o.cluster;
+};
+
+// Ties broken by face so the result never depends on anything but the input.
+inline bool before(const Entry& a, const Entry& b) { return a.cost < b.cost || (a.cost == b.cost && a.face < b.face); }
+
+// A 4-ary min-heap: half the levels of a binary heap and children on one cache line, which
+// is what a flood of a million faces spends its time on.
+class QuadHeap {
+ public:
+  bool empty() const { return items_.empty(); }
+  void reserve(size_t n) { items_.reserve(n); }
+  void push(Entry e) {
+    size_t i = items_.size();
+    items_.push_back(e);
+    while (i > 0) {
+      const size_t parent = (i - 1) / 4;
+      if (!before(e, items_[parent])) break;
+      items_[i] = items_[parent];
+      i = parent;
+    }
+    items_[i] = e;
   }
+  Entry pop() {
+    const Entry top = items_.front();
+    const Entry last = items_.back();
+    items_.pop_back();
+    const size_t n = items_.size();
+    if (n == 0) return top;
+    size_t i = 0;
+    for (;;) {
+      const size_t first = 4 * i + 1;
+      if (first >= n) break;
+      size_t best = first;
+      const size_t end = std::min(first + 4, n);
+      for (size_t k = first + 1; k < end; ++k) {
+        if (before(items_[k], items_[best])) best = k;
+      }
+      if (!before(items_[best], last)) break;
+      items_[i] = items_[best];
+      i = best;
+    }
+    items_[i] = last;
+    return top;
+  }
+
+ private:
+  std::vector<Entry> items_;
 };
 
 }  // namespace
@@ -25,52 +64,63 @@ struct Entry {
 double flood(const Metric& metric, const MeshTopology& topology, Clustering& clustering) {
   const int faces = metric.faces().num_faces();
   const int n = clustering.num_clusters();
-  std::vector<int>& labels = clustering.labels;
-  labels.assign(static_cast<size_t>(faces), -1);
 
   std::vector<Metric::Terms> terms;
   terms.reserve(static_cast<size_t>(n));
   for (const Proxy& p : clustering.proxies) terms.push_back(metric.terms(p));
 
-  std::vector<double> best(static_cast<size_t>(faces), std::numeric_limits<double>::infinity());
-  std::vector<Entry> storage;
-  storage.reserve(static_cast<size_t>(faces) / 4 + 16);
-  std::priority_queue<Entry> queue(std::less<Entry>(), std::move(storage));
+  // Per face, together so one cache miss brings all of it: its label, and its cheapest
+  // pending offer. A face is pushed only when an offer beats the pending one, and when
+  // popped first it joins that offer's cluster (later, costlier entries are stale).
+  struct FaceState {
+    double best = std::numeric_limits<double>::infinity();
+    int best_cluster = -1;
+    int label = -1;
+  };
+  std::vector<FaceState> state(static_cast<size_t>(faces));
+  QuadHeap queue;
+  queue.reserve(static_cast<size_t>(faces) / 8 + 64);
 
   const auto push_neighbours = [&](int face, int cluster) {
     for (int g : topology.face_neighbors[static_cast<size_t>(face)]) {
-      if (g < 0 || labels[static_cast<size_t>(g)] >= 0) continue;
+      if (g < 0) continue;
+      FaceState& s = state[static_cast<size_t>(g)];
+      if (s.label >= 0 || s.best_cluster == cluster) continue;
       const double c = metric.cost(g, terms[static_cast<size_t>(cluster)]);
-      if (c < best[static_cast<size_t>(g)]) {
-        best[static_cast<size_t>(g)] = c;
-        queue.push(Entry{c, g, cluster});
+      if (c < s.best) {
+        s.best = c;
+        s.best_cluster = cluster;
+        queue.push(Entry{c, g});
       }
     }
   };
 
-  for (int i = 0; i < n; ++i) labels[static_cast<size_t>(clustering.seeds[static_cast<size_t>(i)])] = i;
+  for (int i = 0; i < n; ++i) state[static_cast<size_t>(clustering.seeds[static_cast<size_t>(i)])].label = i;
   // Sticky clusters hold their seed's neighbours (unless another seed sits there).
   for (int i = 0; i < n; ++i) {
     if (clustering.sticky[static_cast<size_t>(i)] <= 0) continue;
     for (int g : topology.face_neighbors[static_cast<size_t>(clustering.seeds[static_cast<size_t>(i)])]) {
-      if (g >= 0 && labels[static_cast<size_t>(g)] < 0) labels[static_cast<size_t>(g)] = i;
+      if (g >= 0 && state[static_cast<size_t>(g)].label < 0) state[static_cast<size_t>(g)].label = i;
     }
   }
   double energy = 0.0;
   for (int f = 0; f < faces; ++f) {
-    const int label = labels[static_cast<size_t>(f)];
+    const int label = state[static_cast<size_t>(f)].label;
     if (label < 0) continue;
     energy += metric.cost(f, terms[static_cast<size_t>(label)]);
     push_neighbours(f, label);
   }
   while (!queue.empty()) {
-    const Entry e = queue.top();
-    queue.pop();
-    if (labels[static_cast<size_t>(e.face)] >= 0) continue;
-    labels[static_cast<size_t>(e.face)] = e.cluster;
+    const Entry e = queue.pop();
+    FaceState& s = state[static_cast<size_t>(e.face)];
+    if (s.label >= 0 || e.cost != s.best) continue;  // assigned already, or superseded
+    s.label = s.best_cluster;
     energy += e.cost;
-    push_neighbours(e.face, e.cluster);
+    push_neighbours(e.face, s.label);
   }
+  std::vector<int>& labels = clustering.labels;
+  labels.resize(static_cast<size_t>(faces));
+  for (size_t f = 0; f < state.size(); ++f) labels[f] = state[f].label;
   return energy;
 }
 

@@ -13,10 +13,10 @@ Clustering initial_clustering(const Metric& metric, const MeshTopology& topology
   c.proxies.reserve(seeds.size());
   for (int f : seeds) {
     Proxy p;
-    p.center = faces.centroid[static_cast<size_t>(f)];
-    const Vec3& n = faces.normal[static_cast<size_t>(f)];
+    p.center = faces[f].centroid;
+    const Vec3& n = faces[f].normal;
     p.normal = n.squaredNorm() > 0.0 ? n : Vec3::UnitZ();
-    p.density = faces.density[static_cast<size_t>(f)];
+    p.density = faces[f].density;
     c.proxies.push_back(p);
   }
   reflood(metric, topology, c);

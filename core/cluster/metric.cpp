@@ -10,9 +10,9 @@ namespace ff {
 
 void ClusterMoments::add_face(const FaceData& faces, int face) {
   const size_t f = static_cast<size_t>(face);
-  const double a = faces.area[f];
-  const Vec3& c = faces.centroid[f];
-  const std::array<double, 6>& s = faces.spread[f];
+  const double a = faces[f].area;
+  const Vec3& c = faces[f].centroid;
+  const std::array<double, 6>& s = faces[f].spread;
   area += a;
   first += a * c;
   centroid_sq += a * c.squaredNorm();
@@ -20,8 +20,8 @@ void ClusterMoments::add_face(const FaceData& faces, int face) {
   Eigen::Matrix3d spread;
   spread << s[0], s[3], s[4], s[3], s[1], s[5], s[4], s[5], s[2];
   second += a * (c * c.transpose() + spread);
-  normal_sum += a * faces.normal[f];
-  density_area += a * faces.density[f];
+  normal_sum += a * faces[f].normal;
+  density_area += a * faces[f].density;
 }
 
 void ClusterMoments::add(const ClusterMoments& o) {

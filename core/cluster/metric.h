@@ -80,14 +80,14 @@ class Metric {
   double cost(int face, const Terms& t) const {
     const FaceData& fd = *faces_;
     const size_t f = static_cast<size_t>(face);
-    const Vec3 d = fd.centroid[f] - t.center;
+    const Vec3 d = fd[f].centroid - t.center;
     const Vec3& N = t.normal;
-    const std::array<double, 6>& s = fd.spread[f];
+    const std::array<double, 6>& s = fd[f].spread;
     const double along = N.dot(d);
     const double spread = s[0] * N.x() * N.x() + s[1] * N.y() * N.y() + s[2] * N.z() * N.z() +
                           2.0 * (s[3] * N.x() * N.y() + s[4] * N.x() * N.z() + s[5] * N.y() * N.z());
-    const double l21 = (fd.normal[f] - N).squaredNorm();
-    return fd.area[f] * (t.euclid_scale * d.squaredNorm() + t.l2_scale * (along * along + spread) + t.l21_scale * l21);
+    const double l21 = (fd[f].normal - N).squaredNorm();
+    return fd[f].area * (t.euclid_scale * d.squaredNorm() + t.l2_scale * (along * along + spread) + t.l21_scale * l21);
   }
 
   // The proxy minimising this cluster's weighted energy: centre at the area centroid (optimal

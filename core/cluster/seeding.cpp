@@ -48,7 +48,7 @@ void random_seeds(const FaceData& faces, const std::vector<int>& candidates, int
                   std::vector<char>& taken, std::vector<int>& seeds) {
   std::vector<double> cumulative(candidates.size());
   double sum = 0.0;
-  for (size_t k = 0; k < candidates.size(); ++k) cumulative[k] = (sum += faces.area[static_cast<size_t>(candidates[k])]);
+  for (size_t k = 0; k < candidates.size(); ++k) cumulative[k] = (sum += faces[candidates[k]].area);
   for (int s = 0; s < count; ++s) {
     const int f = random_face(candidates, cumulative, taken, rng);
     taken[static_cast<size_t>(f)] = 1;
@@ -80,7 +80,7 @@ void farthest_seeds(const FaceData& faces, const MeshTopology& topology, const s
       if (d > dist[static_cast<size_t>(f)]) continue;
       for (int g : topology.face_neighbors[static_cast<size_t>(f)]) {
         if (g < 0) continue;
-        const double nd = d + (faces.centroid[static_cast<size_t>(f)] - faces.centroid[static_cast<size_t>(g)]).norm();
+        const double nd = d + (faces[f].centroid - faces[g].centroid).norm();
         if (nd < dist[static_cast<size_t>(g)]) {
           dist[static_cast<size_t>(g)] = nd;
           frontier.push({nd, g});
@@ -125,7 +125,7 @@ std::vector<int> seeds_per_component(const FaceData& faces, const MeshTopology& 
   std::vector<int> capacity(static_cast<size_t>(components), 0);
   for (int f = 0; f < total_faces; ++f) {
     const size_t c = static_cast<size_t>(topology.face_component[static_cast<size_t>(f)]);
-    area[c] += faces.area[static_cast<size_t>(f)];
+    area[c] += faces[f].area;
     ++capacity[c];
   }
   // Hamilton's method on the area quotas, with at least one seed per part and at most one

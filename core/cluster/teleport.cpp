@@ -82,10 +82,10 @@ bool split_into(const Metric& metric, Clustering& c, const ClusterStats& s, int 
   if (face < 0) return false;  // a one-face cluster cannot be split
   const FaceData& faces = metric.faces();
   Proxy p;
-  p.center = faces.centroid[static_cast<size_t>(face)];
-  const Vec3& n = faces.normal[static_cast<size_t>(face)];
+  p.center = faces[face].centroid;
+  const Vec3& n = faces[face].normal;
   p.normal = n.squaredNorm() > 0.0 ? n : c.proxies[static_cast<size_t>(w)].normal;
-  p.density = faces.density[static_cast<size_t>(face)];
+  p.density = faces[face].density;
   c.proxies[static_cast<size_t>(id)] = p;
   c.seeds[static_cast<size_t>(id)] = face;
   c.sticky[static_cast<size_t>(id)] = sticky_iterations;

@@ -51,7 +51,7 @@ double min_seed_distance(const FaceData& fd, const std::vector<int>& seeds) {
   double best = 1e300;
   for (size_t i = 0; i < seeds.size(); ++i)
     for (size_t j = i + 1; j < seeds.size(); ++j)
-      best = std::min(best, (fd.centroid[static_cast<size_t>(seeds[i])] - fd.centroid[static_cast<size_t>(seeds[j])]).norm());
+      best = std::min(best, (fd[seeds[i]].centroid - fd[seeds[j]].centroid).norm());
   return best;
 }
 

@@ -103,15 +103,15 @@ TEST(Metric, DensityScalesTheEuclideanTerm) {
   for (size_t f = 0; f < density.size() / 2; ++f) density[f] = 4.0;
   const FaceData fd = make_face_data(mesh, density);
   double mean = 0.0;
-  for (int f = 0; f < fd.num_faces(); ++f) mean += fd.area[static_cast<size_t>(f)] * fd.density[static_cast<size_t>(f)];
+  for (int f = 0; f < fd.num_faces(); ++f) mean += fd[f].area * fd[f].density;
   EXPECT_NEAR(mean / fd.total_area, 1.0, 1e-12);  // normalised
-  EXPECT_NEAR(fd.density.front() / fd.density.back(), 4.0, 1e-12);
+  EXPECT_NEAR(fd.records.front().density / fd.records.back().density, 4.0, 1e-12);
   MetricWeights w;
   w.l2 = w.l21 = 0.0;
   const Metric metric(fd, w, 2);
   Proxy dense, sparse;
-  dense.density = fd.density.front();
-  sparse.density = fd.density.back();
+  dense.density = fd.records.front().density;
+  sparse.density = fd.records.back().density;
   EXPECT_NEAR(metric.cost(5, metric.terms(dense)) / metric.cost(5, metric.terms(sparse)), 4.0, 1e-12);
 }
 
