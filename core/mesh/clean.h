@@ -13,6 +13,9 @@ namespace ff {
 
 struct CleanOptions {
   // Vertices closer than this (absolute) are welded; 0 welds exactly coincident ones only.
+  // Only vertices on open edges (or unused) are welded: two sheets that merely touch at a
+  // vertex whose edges are all shared already (cow.off has one) stay apart, instead of
+  // becoming a non-manifold edge.
   double weld_tolerance = 0.0;
   // Orient closed components so their signed volume is positive (normals outward).
   bool orient_closed_outward = true;
@@ -43,6 +46,8 @@ struct CleanMesh {
   // input vertices (welding) and an input vertex split at a non-manifold vertex maps to
   // the first of its copies.
   std::vector<int> input_vertex_to_clean;
+  // Cleaned vertex -> the input vertex it stands for (a split copy -> its original).
+  std::vector<int> vertex_source;
   CleanReport report;
 };
 

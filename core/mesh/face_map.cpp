@@ -37,7 +37,8 @@ std::vector<double> values_for_clean_vertices(const CleanMesh& clean, const std:
     ++count[static_cast<size_t>(cv)];
   }
   for (size_t v = 0; v < sum.size(); ++v) {
-    if (count[v] > 0) sum[v] /= count[v];
+    // A copy made when splitting a non-manifold vertex has no input vertex of its own.
+    sum[v] = count[v] > 0 ? sum[v] / count[v] : input_values[static_cast<size_t>(clean.vertex_source[v])];
   }
   return sum;
 }
