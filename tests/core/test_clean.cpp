@@ -1,7 +1,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -434,23 +433,6 @@ TEST(CleanMesh, SharedMeshesCleanToTheirTopology) {
       EXPECT_GT(signed_volume(c.mesh), 0.0);
     }
   }
-}
-
-// A timing run, not a timed test (DESIGN.md 7): --gtest_also_run_disabled_tests.
-TEST(CleanMesh, DISABLED_MillionTriangleGrid) {
-  const TriMesh m = test::grid(1000, 500);
-  const auto start = std::chrono::steady_clock::now();
-  const CleanMesh c = clean_mesh(m);
-  const auto cleaned = std::chrono::steady_clock::now();
-  const MeshTopology t = build_topology(c.mesh);
-  const auto built = std::chrono::steady_clock::now();
-  EXPECT_EQ(c.mesh.num_faces(), 1000000);
-  EXPECT_EQ(t.boundary_loops.size(), 1u);
-  const auto ms = [](auto a, auto b) {
-    return std::chrono::duration<double, std::milli>(b - a).count();
-  };
-  RecordProperty("clean_ms", std::to_string(ms(start, cleaned)));
-  RecordProperty("topology_ms", std::to_string(ms(cleaned, built)));
 }
 
 }  // namespace
