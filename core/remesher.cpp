@@ -65,11 +65,14 @@ Progress Remesher::step() {
         moves = teleport(metric_, topology_, clustering_, options);
         teleports_ += moves;
       }
-      const LloydResult r = lloyd_iteration(metric_, topology_, clustering_);
+      // A teleport refloods and refits, which is this iteration's work; otherwise one Lloyd step.
+      if (moves == 0) {
+        const LloydResult r = lloyd_iteration(metric_, topology_, clustering_);
+        if (r.changed_faces == 0) converged_ = true;
+      }
       lloyd_done_ = it;
       progress_.iteration = it;
-      progress_.energy = r.energy.total();
-      if (r.changed_faces == 0 && moves == 0) converged_ = true;
+      progress_.energy = clustering_.energy;
       if (converged_ || it >= params_.lloyd_iterations) progress_.stage = Stage::Done;
       break;
     }

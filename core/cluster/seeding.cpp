@@ -1,7 +1,9 @@
 #include "core/cluster/seeding.h"
 
 #include <algorithm>
+#include <array>
 #include <limits>
+#include <memory>
 #include <queue>
 #include <string>
 
@@ -56,54 +58,103 @@ void random_seeds(const FaceData& faces, const std::vector<int>& candidates, int
   }
 }
 
+// Faces filed by distance in equal-width buckets. Distances only shrink as seeds are added,
+// so a face is re-filed (appended to a lower bucket, the old entry going stale) only when
+// it changes bucket, and the top non-empty bucket only moves down. The farthest face is the
+// exact maximum of the top bucket's live entries.
+class DistanceBuckets {
+ public:
+  DistanceBuckets(const std::vector<int>& faces, const std::vector<double>& dist) {
+    double max_dist = 0.0;
+    for (int f : faces) max_dist = std::max(max_dist, dist[static_cast<size_t>(f)]);
+    width_ = max_dist > 0.0 ? max_dist / (kBuckets - 1) : 1.0;
+    buckets_.resize(kBuckets);
+    for (int f : faces) buckets_[static_cast<size_t>(index(dist[static_cast<size_t>(f)]))].push_back(f);
+    top_ = kBuckets - 1;
+  }
+
+  int index(double d) const { return std::min(kBuckets - 1, static_cast<int>(d / width_)); }
+
+  void moved(int face, double old_dist, double new_dist) {
+    const int b = index(new_dist);
+    if (b != index(old_dist)) buckets_[static_cast<size_t>(b)].push_back(face);
+  }
+
+  // The untaken face of largest distance (ties: lowest index), or -1.
+  int farthest(const std::vector<double>& dist, const std::vector<char>& taken) {
+    for (; top_ >= 0; --top_) {
+      std::vector<int>& bucket = buckets_[static_cast<size_t>(top_)];
+      int best = -1;
+      size_t kept = 0;
+      for (int f : bucket) {  // drop stale and taken entries while scanning
+        if (taken[static_cast<size_t>(f)] || index(dist[static_cast<size_t>(f)]) != top_) continue;
+        bucket[kept++] = f;
+        if (best < 0 || dist[static_cast<size_t>(f)] > dist[static_cast<size_t>(best)] ||
+            (dist[static_cast<size_t>(f)] == dist[static_cast<size_t>(best)] && f < best)) {
+          best = f;
+        }
+      }
+      bucket.resize(kept);
+      if (best >= 0) return best;
+    }
+    return -1;
+  }
+
+ private:
+  static constexpr int kBuckets = 4096;
+  double width_ = 1.0;
+  int top_ = 0;
+  std::vector<std::vector<int>> buckets_;
+};
+
 // Farthest-point sampling on the face graph with incremental Dijkstra: each new seed only
-// relaxes the faces it is now closest to, and a lazy max-heap finds the farthest face.
-void farthest_seeds(const FaceData& faces, const MeshTopology& topology, const std::vector<int>& candidates,
-                    int count, SplitMix64& rng, std::vector<char>& taken, std::vector<double>& dist,
-                    std::vector<int>& seeds) {
+// relaxes the faces it is now closer to.
+// Centroid-to-centroid lengths across each face's edges: the Dijkstra runs read these
+// (24 bytes a face) instead of whole face records.
+std::vector<std::array<double, 3>> dual_edge_lengths(const FaceData& faces, const MeshTopology& topology) {
+  std::vector<std::array<double, 3>> hop(static_cast<size_t>(faces.num_faces()));
+  for (size_t f = 0; f < hop.size(); ++f) {
+    for (size_t i = 0; i < 3; ++i) {
+      const int g = topology.face_neighbors[f][i];
+      hop[f][i] = g < 0 ? 0.0 : (faces[f].centroid - faces[static_cast<size_t>(g)].centroid).norm();
+    }
+  }
+  return hop;
+}
+
+void farthest_seeds(const FaceData& faces, const MeshTopology& topology, const std::vector<std::array<double, 3>>& hop,
+                    const std::vector<int>& candidates, int count, SplitMix64& rng, std::vector<char>& taken,
+                    std::vector<double>& dist, std::vector<int>& seeds) {
   using Item = std::pair<double, int>;  // (distance, face)
   std::vector<int> first;
   random_seeds(faces, candidates, 1, rng, taken, first);
   int next = first.front();
-  std::vector<Item> far_items;
-  far_items.reserve(candidates.size());
-  std::priority_queue<Item> farthest;  // max-heap; entries may be stale (larger than dist)
+  std::unique_ptr<DistanceBuckets> buckets;
   std::priority_queue<Item, std::vector<Item>, std::greater<Item>> frontier;
   for (int s = 0; s < count; ++s) {
     taken[static_cast<size_t>(next)] = 1;
     seeds.push_back(next);
+    if (buckets) buckets->moved(next, dist[static_cast<size_t>(next)], 0.0);
     dist[static_cast<size_t>(next)] = 0.0;
     frontier.push({0.0, next});
     while (!frontier.empty()) {
       const auto [d, f] = frontier.top();
       frontier.pop();
       if (d > dist[static_cast<size_t>(f)]) continue;
-      for (int g : topology.face_neighbors[static_cast<size_t>(f)]) {
+      for (size_t i = 0; i < 3; ++i) {
+        const int g = topology.face_neighbors[static_cast<size_t>(f)][i];
         if (g < 0) continue;
-        const double nd = d + (faces[f].centroid - faces[g].centroid).norm();
+        const double nd = d + hop[static_cast<size_t>(f)][i];
         if (nd < dist[static_cast<size_t>(g)]) {
+          if (buckets) buckets->moved(g, dist[static_cast<size_t>(g)], nd);
           dist[static_cast<size_t>(g)] = nd;
           frontier.push({nd, g});
         }
       }
     }
     if (s + 1 == count) break;
-    if (s == 0) {
-      for (int f : candidates) far_items.push_back({dist[static_cast<size_t>(f)], f});
-      farthest = std::priority_queue<Item>(std::less<Item>(), std::move(far_items));
-    }
-    next = -1;
-    while (!farthest.empty()) {
-      const auto [d, f] = farthest.top();
-      farthest.pop();
-      if (taken[static_cast<size_t>(f)]) continue;
-      if (d > dist[static_cast<size_t>(f)]) {  // stale: distances only shrink, re-file it
-        farthest.push({dist[static_cast<size_t>(f)], f});
-        continue;
-      }
-      next = f;
-      break;
-    }
+    if (!buckets) buckets = std::make_unique<DistanceBuckets>(candidates, dist);
+    next = buckets->farthest(dist, taken);
     if (next < 0) break;
   }
 }
@@ -177,15 +228,18 @@ std::vector<int> place_seeds(const FaceData& faces, const MeshTopology& topology
   SplitMix64 rng(seed);
   std::vector<char> taken(static_cast<size_t>(faces.num_faces()), 0);
   std::vector<double> dist;
-  if (method == SeedingMethod::FarthestPoint)
+  std::vector<std::array<double, 3>> hop;
+  if (method == SeedingMethod::FarthestPoint) {
     dist.assign(static_cast<size_t>(faces.num_faces()), std::numeric_limits<double>::infinity());
+    hop = dual_edge_lengths(faces, topology);
+  }
   std::vector<int> seeds;
   seeds.reserve(static_cast<size_t>(n));
   for (size_t c = 0; c < counts.size(); ++c) {
     if (method == SeedingMethod::Random) {
       random_seeds(faces, members[c], counts[c], rng, taken, seeds);
     } else {
-      farthest_seeds(faces, topology, members[c], counts[c], rng, taken, dist, seeds);
+      farthest_seeds(faces, topology, hop, members[c], counts[c], rng, taken, dist, seeds);
     }
   }
   return seeds;
