@@ -13,16 +13,18 @@ namespace ff {
 // One face's record, laid out together (two cache lines) because flooding reads all of it
 // for faces in no particular order: one miss instead of five.
 struct alignas(64) FaceRecord {
-  Vec3 centroid = Vec3::Zero();  // local frame
-  Vec3 normal = Vec3::Zero();    // unit, zero for zero-area faces
-  // Per-unit-area spread of the triangle about its centroid, (1/12) sum_j (p_j-c)(p_j-c)^T,
-  // stored as xx, yy, zz, xy, xz, yz: the exact L2 integral of a plane's squared distance is
-  // area * ((N.(c-x))^2 + N^T spread N).
-  std::array<double, 6> spread{};
+  // First cache line: everything the euclidean and L2,1 terms read.
+  Vec3 normal = Vec3::Zero();  // unit, zero for zero-area faces
   double area = 0.0;
   // Normalised to an area-weighted mean of 1 over the mesh (1 everywhere when none is given).
   double density = 1.0;
+  Vec3 centroid = Vec3::Zero();  // local frame
+  // Second line, read by the L2 term only: the per-unit-area spread of the triangle about
+  // its centroid, (1/12) sum_j (p_j-c)(p_j-c)^T, stored as xx, yy, zz, xy, xz, yz; the exact
+  // L2 integral of a plane's squared distance is area * ((N.(c-x))^2 + N^T spread N).
+  std::array<double, 6> spread{};
 };
+static_assert(sizeof(FaceRecord) == 128, "a face record is two cache lines");
 
 struct FaceData {
   Vec3 origin = Vec3::Zero();  // local frame: local = world - origin
