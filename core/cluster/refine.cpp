@@ -67,35 +67,55 @@ Triangle corners_of(const MeshTopology& topology, int f) {
 int refine_boundaries(const Metric& metric, const MeshTopology& topology, Clustering& c, int max_passes) {
   std::vector<Metric::Terms> terms;
   for (const Proxy& p : c.proxies) terms.push_back(metric.terms(p));
-  std::vector<char> is_seed(c.labels.size(), 0);
+  const size_t faces = c.labels.size();
+  std::vector<char> is_seed(faces, 0);
   for (int s : c.seeds) is_seed[static_cast<size_t>(s)] = 1;
-  std::vector<int> ring, stack;
-  int total = 0;
-  for (int pass = 0; pass < max_passes; ++pass) {
-    int moves = 0;
-    for (int f = 0; f < static_cast<int>(c.labels.size()); ++f) {
-      if (is_seed[static_cast<size_t>(f)]) continue;
-      const int a = c.labels[static_cast<size_t>(f)];
-      double best = metric.cost(f, terms[static_cast<size_t>(a)]);
-      int target = -1;
-      for (int g : topology.face_neighbors[static_cast<size_t>(f)]) {
-        if (g < 0) continue;
-        const int b = c.labels[static_cast<size_t>(g)];
-        if (b == a || b == target) continue;
-        const double cost = metric.cost(f, terms[static_cast<size_t>(b)]);
-        if (cost < best) {
-          best = cost;
-          target = b;
-        }
+
+  // Only border faces can move: start from them in face order, and queue the neighbours of
+  // every face that moves. Each move lowers the energy, so this ends; the budget of
+  // max_passes visits per border face keeps it short.
+  std::vector<int> queue;
+  std::vector<char> queued(faces, 0);
+  for (size_t f = 0; f < faces; ++f) {
+    for (int g : topology.face_neighbors[f]) {
+      if (g >= 0 && c.labels[static_cast<size_t>(g)] != c.labels[f]) {
+        queue.push_back(static_cast<int>(f));
+        queued[f] = 1;
+        break;
       }
-      if (target < 0 || !can_leave(topology, c.labels, f, corners_of(topology, f), ring, stack)) continue;
-      c.labels[static_cast<size_t>(f)] = target;
-      ++moves;
     }
-    total += moves;
-    if (moves == 0) break;
   }
-  return total;
+  const size_t budget = static_cast<size_t>(std::max(1, max_passes)) * queue.size();
+  std::vector<int> ring, stack;
+  int moves = 0;
+  for (size_t head = 0; head < queue.size() && head < budget; ++head) {
+    const int f = queue[head];
+    queued[static_cast<size_t>(f)] = 0;
+    if (is_seed[static_cast<size_t>(f)]) continue;
+    const int a = c.labels[static_cast<size_t>(f)];
+    double best = metric.cost(f, terms[static_cast<size_t>(a)]);
+    int target = -1;
+    for (int g : topology.face_neighbors[static_cast<size_t>(f)]) {
+      if (g < 0) continue;
+      const int b = c.labels[static_cast<size_t>(g)];
+      if (b == a || b == target) continue;
+      const double cost = metric.cost(f, terms[static_cast<size_t>(b)]);
+      if (cost < best) {
+        best = cost;
+        target = b;
+      }
+    }
+    if (target < 0 || !can_leave(topology, c.labels, f, corners_of(topology, f), ring, stack)) continue;
+    c.labels[static_cast<size_t>(f)] = target;
+    ++moves;
+    for (int g : topology.face_neighbors[static_cast<size_t>(f)]) {
+      if (g >= 0 && !queued[static_cast<size_t>(g)]) {
+        queued[static_cast<size_t>(g)] = 1;
+        queue.push_back(g);
+      }
+    }
+  }
+  return moves;
 }
 
 }  // namespace ff

@@ -7,8 +7,8 @@
 
 namespace ff {
 
-// Up to max_passes sweeps over the faces (stops at a sweep without moves). Returns the
-// number of moves.
+// Visits border faces (and the neighbours of faces that moved) until nothing moves or
+// max_passes visits per initial border face are spent. Returns the number of moves.
 int refine_boundaries(const Metric& metric, const MeshTopology& topology, Clustering& clustering, int max_passes = 8);
 
 }  // namespace ff
