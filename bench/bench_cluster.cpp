@@ -10,9 +10,6 @@
 //
 // Every (case, method) runs in a fresh child process (fork + exec of this binary) so the
 // peak resident set of each is its own: wait4() returns the child's rusage, ru_maxrss.
-#include <sys/resource.h>
-#include <sys/types.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <Eigen/Geometry>
@@ -30,6 +27,9 @@
 #include <string>
 #include <vector>
 
+#include "bench/bench_case.h"
+#include "bench/child_process.h"
+#include "bench/partition_energy.h"
 #include "core/cluster/clustering.h"
 #include "core/mesh/clean.h"
 #include "core/mesh/mesh_io.h"
@@ -46,105 +46,10 @@
 
 namespace {
 
+using namespace ff::bench;
 using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
-
-// ---------------------------------------------------------------------------------------
-// Inputs
-
-struct Case {
-  std::string name;   // command-line id
-  std::string label;  // table label
-  int target_faces = 0;  // roof: about this many triangles
-  std::string file;      // or a file in the meshes folder
-  int panels = 0;
-};
-
-// "roof-10k", "roof-100k", "roof-1m", "hyperboloid", or "roof:FACES:PANELS" for any size.
-bool parse_case(const std::string& name, Case& c) {
-  c = Case{};
-  c.name = name;
-  if (name == "roof-10k") {
-    c.label = "roof ~10k";
-    c.target_faces = 10000;
-    c.panels = 100;
-  } else if (name == "roof-100k") {
-    c.label = "roof ~100k";
-    c.target_faces = 100000;
-    c.panels = 1000;
-  } else if (name == "roof-1m") {
-    c.label = "roof ~1M";
-    c.target_faces = 1000000;
-    c.panels = 1000;
-  } else if (name == "hyperboloid") {
-    c.label = "hyperboloid_s4.off";
-    c.file = "hyperboloid_s4.off";
-    c.panels = 500;
-  } else if (name.rfind("roof:", 0) == 0) {
-    int faces = 0, panels = 0;
-    if (std::sscanf(name.c_str(), "roof:%d:%d", &faces, &panels) != 2 || faces < 2 || panels < 1) return false;
-    c.label = "roof ~" + std::to_string(faces);
-    c.target_faces = faces;
-    c.panels = panels;
-  } else {
-    return false;
-  }
-  return true;
-}
-
-ff::TriMesh make_input(const Case& c, const std::string& meshes) {
-  if (c.file.empty()) {
-    const int r = ff::grid_resolution_for(c.target_faces);
-    return ff::make_roof(r, r);
-  }
-  const ff::RawMesh raw = ff::read_mesh_file(meshes + "/" + c.file);
-  return ff::clean_mesh(raw.mesh).mesh;
-}
-
-// ---------------------------------------------------------------------------------------
-// Quality: the L2,1 energy of a partition, computed here from the triangles alone so that
-// both libraries' partitions are scored by the same code: sum over faces of
-// area * |n_f - N_i|^2, N_i the normalised area-weighted mean normal of the face's cluster
-// (the optimal L2,1 proxy normal of that cluster).
-
-struct FaceGeom {
-  double area;
-  ff::Vec3 normal;
-};
-
-FaceGeom face_geom(const ff::TriMesh& m, size_t f) {
-  const ff::Triangle& t = m.triangles[f];
-  const ff::Vec3& a = m.positions[static_cast<size_t>(t[0])];
-  const ff::Vec3 cross = (m.positions[static_cast<size_t>(t[1])] - a).cross(m.positions[static_cast<size_t>(t[2])] - a);
-  const double len = cross.norm();
-  return {0.5 * len, len > 0.0 ? ff::Vec3(cross / len) : ff::Vec3::Zero()};
-}
-
-// Returns a negative value when labels are not a partition into n non-empty clusters.
-double l21_energy(const ff::TriMesh& m, const std::vector<int>& labels, int n) {
-  if (labels.size() != m.triangles.size()) return -1.0;
-  std::vector<ff::Vec3> sum(static_cast<size_t>(n), ff::Vec3::Zero());
-  std::vector<int> count(static_cast<size_t>(n), 0);
-  for (size_t f = 0; f < labels.size(); ++f) {
-    const int l = labels[f];
-    if (l < 0 || l >= n) return -1.0;
-    const FaceGeom g = face_geom(m, f);
-    sum[static_cast<size_t>(l)] += g.area * g.normal;
-    ++count[static_cast<size_t>(l)];
-  }
-  if (std::find(count.begin(), count.end(), 0) != count.end()) return -2.0;
-  for (ff::Vec3& s : sum) {
-    const double len = s.norm();
-    s = len > 0.0 ? ff::Vec3(s / len) : ff::Vec3::Zero();
-  }
-  double e = 0.0;
-  for (size_t f = 0; f < labels.size(); ++f) {
-    const FaceGeom g = face_geom(m, f);
-    e += g.area * (g.normal - sum[static_cast<size_t>(labels[f])]).squaredNorm();
-  }
-  return e;
-}
 
 bool close_enough(double a, double b, double scale, double rel) { return std::abs(a - b) <= rel * std::max(scale, 1e-300); }
 
@@ -219,15 +124,14 @@ Result run_cgal(const ff::TriMesh& mesh, int panels, int iterations, unsigned se
   r.method = "cgal";
   r.faces = mesh.num_faces();
   r.panels = panels;
-  ffbench::CgalVsaRun run = ffbench::run_cgal_vsa(mesh, panels, iterations, seed);
+  ff::bench::CgalVsaRun run = ff::bench::run_cgal_vsa(mesh, panels, iterations, seed);
   r.setup_a = run.build_seconds;
   r.setup_b = run.seed_seconds;
   r.iteration_seconds = run.iteration_seconds;
   r.iterations = static_cast<int>(run.iteration_seconds.size());
   r.energy = l21_energy(mesh, run.labels, run.proxies);
   r.lib_energy = run.cgal_error;
-  double area = 0.0;
-  for (size_t f = 0; f < mesh.triangles.size(); ++f) area += face_geom(mesh, f).area;
+  const double area = ff::total_area(mesh);
   if (run.proxies != panels) r.failure = "CGAL made " + std::to_string(run.proxies) + " proxies, asked for " + std::to_string(panels);
   else if (r.energy < 0.0) r.failure = "CGAL labels are not a partition into non-empty clusters";
   else if (!std::isfinite(r.energy)) r.failure = "energy is not finite";
@@ -285,63 +189,15 @@ struct Measured {
   }
 };
 
-std::string self_path(const char* argv0) {
-  std::vector<char> buf(4096);
-  const ssize_t len = readlink("/proc/self/exe", buf.data(), buf.size() - 1);
-  if (len > 0) return std::string(buf.data(), static_cast<size_t>(len));
-  return argv0;
-}
-
 Measured measure_once(const std::string& exe, const std::string& method, const Case& c, const std::string& meshes,
-                 int iterations, std::uint64_t seed) {
+                      int iterations, std::uint64_t seed) {
+  const ChildRun run = run_child({exe, "--only", method, "--case", c.name, "--meshes", meshes, "--iterations",
+                                  std::to_string(iterations), "--seed", std::to_string(seed)});
   Measured m;
-  std::vector<std::string> args = {exe, "--only", method, "--case", c.name, "--meshes", meshes,
-                                   "--iterations", std::to_string(iterations), "--seed", std::to_string(seed)};
-  int fds[2];
-  if (pipe(fds) != 0) {
-    m.error = std::string("pipe: ") + std::strerror(errno);
-    return m;
-  }
-  std::fflush(stdout);
-  std::fflush(stderr);
-  const Clock::time_point start = Clock::now();
-  const pid_t pid = fork();
-  if (pid < 0) {
-    m.error = std::string("fork: ") + std::strerror(errno);
-    close(fds[0]);
-    close(fds[1]);
-    return m;
-  }
-  if (pid == 0) {
-    dup2(fds[1], STDOUT_FILENO);
-    close(fds[0]);
-    close(fds[1]);
-    std::vector<char*> argv;
-    for (std::string& a : args) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    execv(exe.c_str(), argv.data());
-    std::fprintf(stderr, "bench_cluster: exec %s: %s\n", exe.c_str(), std::strerror(errno));
-    _exit(127);
-  }
-  close(fds[1]);
-  std::string out;
-  char buf[4096];
-  for (;;) {
-    const ssize_t n = read(fds[0], buf, sizeof buf);
-    if (n > 0) out.append(buf, static_cast<size_t>(n));
-    else if (n == 0 || errno != EINTR) break;
-  }
-  close(fds[0]);
-  int status = 0;
-  struct rusage usage {};
-  while (wait4(pid, &status, 0, &usage) < 0 && errno == EINTR) {
-  }
-  m.process_seconds = seconds_since(start);
-  m.peak_rss_mib = static_cast<double>(usage.ru_maxrss) / 1024.0;  // KiB on Linux
-  m.process_cpu = static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
-                  1e-6 * static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
-
-  std::istringstream lines(out);
+  m.process_seconds = run.wall_seconds;
+  m.process_cpu = run.cpu_seconds;
+  m.peak_rss_mib = run.peak_rss_mib;
+  std::istringstream lines(run.out);
   std::string line;
   while (std::getline(lines, line)) {
     if (line.rfind("result ", 0) != 0) continue;
@@ -352,15 +208,8 @@ Measured measure_once(const std::string& exe, const std::string& method, const C
       if (eq != std::string::npos) m.values[kv.substr(0, eq)] = kv.substr(eq + 1);
     }
   }
-  if (WIFEXITED(status) && WEXITSTATUS(status) == 0 && !m.values.empty()) {
-    m.ok = true;
-  } else if (WIFEXITED(status)) {
-    m.error = "exit code " + std::to_string(WEXITSTATUS(status));
-  } else if (WIFSIGNALED(status)) {
-    m.error = std::string("killed by signal ") + std::to_string(WTERMSIG(status));
-  } else {
-    m.error = "no result";
-  }
+  m.ok = run.ok && !m.values.empty();
+  m.error = !run.ok ? run.error : (m.values.empty() ? "no result" : "");
   return m;
 }
 
@@ -419,7 +268,7 @@ std::string machine_line() {
 #endif
   std::string cgal = "without CGAL";
 #ifdef FF_HAVE_CGAL
-  cgal = "CGAL " + ffbench::cgal_version();
+  cgal = "CGAL " + ff::bench::cgal_version();
 #endif
   return cpu + ", " + std::to_string(cores) + " cores; " + compiler + "; " + cgal;
 }

@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace ffbench {
+namespace ff::bench {
 
 namespace {
 
@@ -75,4 +75,4 @@ CgalVsaRun run_cgal_vsa(const ff::TriMesh& input, int panels, int iterations, un
 
 std::string cgal_version() { return CGAL_VERSION_STR; }
 
-}  // namespace ffbench
+}  // namespace ff::bench

@@ -9,7 +9,7 @@
 
 #include "core/mesh/tri_mesh.h"
 
-namespace ffbench {
+namespace ff::bench {
 
 struct CgalVsaRun {
   double build_seconds = 0.0;  // TriMesh -> CGAL::Surface_mesh, L21 metric (face normals, areas)
@@ -28,4 +28,4 @@ CgalVsaRun run_cgal_vsa(const ff::TriMesh& mesh, int panels, int iterations, uns
 // CGAL_VERSION_STR of the headers compiled in.
 std::string cgal_version();
 
-}  // namespace ffbench
+}  // namespace ff::bench

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Builds and runs every test: the native GoogleTest suite and CLI checks (Release), the same
-# core tests under AddressSanitizer + UndefinedBehaviorSanitizer, and a smoke run of the
-# benchmark driver. Installs what is missing first (scripts/setup.sh).
+# Builds and runs every test: a smoke run of the benchmark driver, the native GoogleTest
+# suite and CLI checks (Release), and the same tests under AddressSanitizer +
+# UndefinedBehaviorSanitizer. Installs what is missing first (scripts/setup.sh).
+# The last lines are ctest's summary, so CI reads the test count.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 jobs=$(nproc 2>/dev/null || echo 2)
@@ -12,6 +13,9 @@ echo "== native build (Release)"
 cmake -S . -B build/release -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build/release -j"$jobs"
 
+echo "== benchmark smoke run"
+build/release/bench/bench_cluster --smoke
+
 echo "== native tests"
 ctest --test-dir build/release --output-on-failure -j"$jobs"
 
@@ -20,8 +24,3 @@ cmake -S . -B build/sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFF_SANITIZE=ON 
 cmake --build build/sanitize -j"$jobs" --target ff_core_tests flatfacet
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
   ctest --test-dir build/sanitize --output-on-failure -j"$jobs"
-
-echo "== benchmark smoke run"
-if [ -x build/release/bench/bench_cluster ]; then
-  build/release/bench/bench_cluster --smoke
-fi
