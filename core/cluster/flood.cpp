@@ -21,6 +21,8 @@ inline bool before(const Entry& a, const Entry& b) { return a.cost < b.cost || (
 class QuadHeap {
  public:
   bool empty() const { return items_.empty(); }
+  size_t size() const { return items_.size(); }
+  const Entry& at(size_t i) const { return items_[i]; }
   const Entry& top() const { return items_.front(); }
   void reserve(size_t n) { items_.reserve(n); }
   void push(Entry e) {
@@ -84,16 +86,11 @@ double flood(const Metric& metric, const MeshTopology& topology, Clustering& clu
   queue.reserve(static_cast<size_t>(faces) / 8 + 64);
 
   const FaceData& records = metric.faces();
+  const bool reads_spread = metric.weights().l2 != 0.0;
+  // Below a few MB the face data sits in the core's own cache and prefetching only costs.
+  const bool prefetch = static_cast<size_t>(faces) * sizeof(FaceRecord) > (size_t{4} << 20);
   const auto push_neighbours = [&](int face, int cluster) {
     const std::array<int, 3>& neighbours = topology.face_neighbors[static_cast<size_t>(face)];
-    // The neighbours sit anywhere in memory: ask for all of them at once so the cache misses
-    // overlap instead of queueing up (a flood is bound by memory latency, not arithmetic).
-    for (int g : neighbours) {
-      if (g < 0) continue;
-      __builtin_prefetch(&state[static_cast<size_t>(g)]);
-      __builtin_prefetch(&records[static_cast<size_t>(g)]);
-      __builtin_prefetch(reinterpret_cast<const char*>(&records[static_cast<size_t>(g)]) + 64);
-    }
     for (int g : neighbours) {
       if (g < 0) continue;
       FaceState& s = state[static_cast<size_t>(g)];
@@ -124,9 +121,21 @@ double flood(const Metric& metric, const MeshTopology& topology, Clustering& clu
   }
   while (!queue.empty()) {
     const Entry e = queue.pop();
-    if (!queue.empty()) {  // the next face to settle: start fetching it now
-      __builtin_prefetch(&state[static_cast<size_t>(queue.top().face)]);
-      __builtin_prefetch(&topology.face_neighbors[static_cast<size_t>(queue.top().face)]);
+    if (prefetch && !queue.empty()) {
+      // A flood waits on memory, not arithmetic: consecutive pops jump between all fronts.
+      // Fetch in two stages: the neighbour lists of the likely pops after next (the root's
+      // children), and everything the next pop reads (its list is cached by now).
+      for (size_t k = 1; k < std::min<size_t>(queue.size(), 5); ++k)
+        __builtin_prefetch(&topology.face_neighbors[static_cast<size_t>(queue.at(k).face)]);
+      const int next = queue.top().face;
+      __builtin_prefetch(&state[static_cast<size_t>(next)]);
+      for (int g : topology.face_neighbors[static_cast<size_t>(next)]) {
+        if (g < 0) continue;
+        __builtin_prefetch(&state[static_cast<size_t>(g)]);
+        const char* record = reinterpret_cast<const char*>(&records[static_cast<size_t>(g)]);
+        __builtin_prefetch(record);
+        if (reads_spread) __builtin_prefetch(record + 64);
+      }
     }
     FaceState& s = state[static_cast<size_t>(e.face)];
     if (s.label >= 0 || e.cost != s.best) continue;  // assigned already, or superseded
