@@ -89,8 +89,9 @@ int run_cluster(const std::vector<std::string>& argv) {
 
   const double total_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
   const std::string summary = args.has("summary") ? summary_json(in, remesher, cluster_s, total_s, seeding) : "";
-  write_file_atomic(args.get("labels"), text);
-  if (args.has("summary")) write_file_atomic(args.get("summary"), summary);
+  std::vector<OutputFile> outputs = {{args.get("labels"), text}};
+  if (args.has("summary")) outputs.push_back({args.get("summary"), summary});
+  write_files_atomic(outputs);
   return 0;
 }
 

@@ -7,20 +7,30 @@
 
 namespace ff::cli {
 
-void write_file_atomic(const std::string& path, const std::string& content) {
-  const std::string tmp = path + ".tmp";
-  {
+void write_files_atomic(const std::vector<OutputFile>& files) {
+  std::vector<std::string> written;
+  const auto remove_written = [&] {
+    for (const std::string& tmp : written) std::remove(tmp.c_str());
+  };
+  for (const OutputFile& file : files) {
+    const std::string tmp = file.path + ".tmp";
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw UsageError("cannot write '" + path + "'");
-    out.write(content.data(), static_cast<std::streamsize>(content.size()));
+    if (out) {
+      written.push_back(tmp);
+      out.write(file.content.data(), static_cast<std::streamsize>(file.content.size()));
+      out.close();
+    }
     if (!out) {
-      std::remove(tmp.c_str());
-      throw UsageError("failed while writing '" + path + "'");
+      remove_written();
+      throw UsageError("cannot write '" + file.path + "'");
     }
   }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    std::remove(tmp.c_str());
-    throw UsageError("cannot write '" + path + "'");
+  for (size_t i = 0; i < files.size(); ++i) {
+    if (std::rename(written[i].c_str(), files[i].path.c_str()) != 0) {
+      // Renames within one folder do not fail in practice; undo what is left.
+      for (size_t j = i; j < written.size(); ++j) std::remove(written[j].c_str());
+      throw UsageError("cannot write '" + files[i].path + "'");
+    }
   }
 }
 

@@ -1,10 +1,17 @@
 #pragma once
 #include <string>
+#include <vector>
 
 namespace ff::cli {
 
-// Writes through a temporary file and renames it into place, so a failure never leaves a
-// half-written output (or clobbers an old one). Throws UsageError naming the path.
-void write_file_atomic(const std::string& path, const std::string& content);
+struct OutputFile {
+  std::string path;
+  std::string content;
+};
+
+// Writes every file to a temporary beside it, and only when all of them are written renames
+// them into place: a failure leaves no output at all (and no old output clobbered). Throws
+// UsageError naming the path that failed.
+void write_files_atomic(const std::vector<OutputFile>& files);
 
 }  // namespace ff::cli

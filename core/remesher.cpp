@@ -43,14 +43,15 @@ void Remesher::validate(const RemeshParams& p) const {
 void Remesher::start_lloyd() {
   lloyd_done_ = 0;
   converged_ = false;
-  progress_ = Progress{Stage::Lloyd, 0, params_.lloyd_iterations, energy().total(), 0};
+  progress_ = Progress{Stage::Lloyd, 0, params_.lloyd_iterations, clustering_.energy * faces_.area_to_world(), 0};
   if (params_.lloyd_iterations == 0) progress_.stage = Stage::Done;
 }
 
 Progress Remesher::step() {
   switch (progress_.stage) {
     case Stage::Seeding: {
-      const std::vector<int> seeds = place_seeds(faces_, topology_, params_.panels, params_.seeding, params_.seed);
+      const std::vector<int> seeds = place_seeds(faces_, topology_, params_.panels, params_.seeding, params_.seed,
+                                                 params_.weights.density);
       clustering_ = initial_clustering(metric_, topology_, seeds);
       start_lloyd();
       break;
@@ -72,7 +73,7 @@ Progress Remesher::step() {
       }
       lloyd_done_ = it;
       progress_.iteration = it;
-      progress_.energy = clustering_.energy;
+      progress_.energy = clustering_.energy * faces_.area_to_world();
       if (converged_ || it >= params_.lloyd_iterations) progress_.stage = Stage::Done;
       break;
     }
@@ -90,25 +91,32 @@ Progress Remesher::run() {
 EnergyTerms Remesher::energy() const {
   if (clustering_.labels.empty()) return {};
   return clustering_energy(metric_, cluster_moments(faces_, clustering_.labels, clustering_.num_clusters()),
-                           clustering_.proxies);
+                           clustering_.proxies)
+      .scaled(faces_.area_to_world());
 }
 
 void Remesher::set_params(RemeshParams params) {
+  // Build and check everything first: bad parameters throw and leave the Remesher, and the
+  // designer's last good result, exactly as they were.
+  validate(params);
+  FaceData faces = params.density != params_.density ? make_face_data(mesh_, params.density) : faces_;
+  Metric(faces, params.weights, params.panels);  // throws on bad weights
   const bool restart = clustering_.labels.empty() || params.seed != params_.seed || params.seeding != params_.seeding;
-  const bool density_changed = params.density != params_.density;
-  validate(params);  // against the current face data; density is checked by make_face_data
-  FaceData faces = density_changed ? make_face_data(mesh_, params.density) : faces_;
   const int old_panels = params_.panels;
   params_ = std::move(params);
   faces_ = std::move(faces);
   metric_ = Metric(faces_, params_.weights, params_.panels);
   if (restart) {
+    clustering_ = Clustering{};
+    teleports_ = 0;
+    lloyd_done_ = 0;
+    converged_ = false;
     progress_ = Progress{Stage::Seeding, 0, 1, 0.0, 0};
     return;
   }
   if (params_.panels > old_panels) add_clusters(metric_, topology_, clustering_, params_.panels - old_panels);
   if (params_.panels < old_panels) remove_clusters(metric_, topology_, clustering_, old_panels - params_.panels);
-  if (params_.panels == old_panels) lloyd_iteration(metric_, topology_, clustering_);  // refit under the new metric
+  if (params_.panels == old_panels) refit(metric_, clustering_);  // proxies and energy under the new metric
   start_lloyd();
 }
 

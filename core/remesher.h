@@ -58,8 +58,10 @@ class Remesher {
   const Progress& progress() const { return progress_; }
 
   // New parameters, warm-started from the current clustering: a changed panel count splits
-  // the worst or merges the cheapest clusters, changed weights or density refit; then the
-  // Lloyd phase runs again. A changed seed or seeding method starts over.
+  // the worst or merges the cheapest clusters, changed weights or density refit the proxies;
+  // then the Lloyd phase runs again. A changed seed or seeding method starts over (and the
+  // clustering is empty until the next step()). Throws InputError for bad parameters and
+  // then leaves everything as it was.
   void set_params(RemeshParams params);
 
   const TriMesh& mesh() const { return mesh_; }
@@ -67,6 +69,7 @@ class Remesher {
   const RemeshParams& params() const { return params_; }
   const Clustering& clustering() const { return clustering_; }
   const Metric& metric() const { return metric_; }
+  // Energy of the current clustering by term, in world units (areas of the input mesh).
   EnergyTerms energy() const;
   int lloyd_iterations_done() const { return lloyd_done_; }
   int teleports_done() const { return teleports_; }

@@ -15,10 +15,22 @@ std::vector<ClusterMoments> cluster_moments(const FaceData& faces, const std::ve
   return moments;
 }
 
-std::vector<ClusterMoments> fit_proxies(const Metric& metric, Clustering& clustering) {
-  std::vector<ClusterMoments> moments = cluster_moments(metric.faces(), clustering.labels, clustering.num_clusters());
+Proxy single_face_proxy(const FaceData& faces, int face, const Vec3& fallback_normal) {
+  const FaceRecord& r = faces[static_cast<size_t>(face)];
+  Proxy p;
+  p.center = r.centroid;
+  p.normal = r.normal.squaredNorm() > 0.0 ? r.normal : fallback_normal;
+  p.density = r.density;
+  return p;
+}
+
+EnergyTerms refit(const Metric& metric, Clustering& clustering) {
+  const std::vector<ClusterMoments> moments =
+      cluster_moments(metric.faces(), clustering.labels, clustering.num_clusters());
   for (size_t i = 0; i < moments.size(); ++i) clustering.proxies[i] = metric.fit(moments[i], clustering.proxies[i]);
-  return moments;
+  const EnergyTerms energy = clustering_energy(metric, moments, clustering.proxies);
+  clustering.energy = energy.total();
+  return energy;
 }
 
 EnergyTerms clustering_energy(const Metric& metric, const std::vector<ClusterMoments>& moments,
@@ -30,9 +42,7 @@ EnergyTerms clustering_energy(const Metric& metric, const std::vector<ClusterMom
 
 void choose_seeds(const Metric& metric, Clustering& clustering) {
   const int n = clustering.num_clusters();
-  std::vector<Metric::Terms> terms;
-  terms.reserve(static_cast<size_t>(n));
-  for (const Proxy& p : clustering.proxies) terms.push_back(metric.terms(p));
+  const std::vector<Metric::Terms> terms = metric.terms(clustering.proxies);
   std::vector<double> best(static_cast<size_t>(n), std::numeric_limits<double>::infinity());
   std::vector<int> seeds = clustering.seeds;
   for (int f = 0; f < metric.faces().num_faces(); ++f) {

@@ -14,16 +14,21 @@ struct Clustering {
   std::vector<Proxy> proxies; // per cluster
   std::vector<int> seeds;     // per cluster: its seed face
   std::vector<int> sticky;    // per cluster: iterations left during which its seed stays put
-  double energy = 0.0;        // total metric energy of labels under proxies, kept by every refit
+  double energy = 0.0;        // energy of labels under proxies (local frame), set by refit()
 
   int num_clusters() const { return static_cast<int>(proxies.size()); }
 };
 
+// The proxy of a cluster grown from one face: its centroid, its normal (or `fallback_normal`
+// for a zero-area face) and its density.
+Proxy single_face_proxy(const FaceData& faces, int face, const Vec3& fallback_normal);
+
 std::vector<ClusterMoments> cluster_moments(const FaceData& faces, const std::vector<int>& labels,
                                             int num_clusters);
 
-// Refits every proxy to its cluster (Metric::fit); returns the moments it used.
-std::vector<ClusterMoments> fit_proxies(const Metric& metric, Clustering& clustering);
+// Refits every proxy to its cluster (Metric::fit), sets clustering.energy and returns the
+// energy by term. Call it whenever labels or the metric changed.
+EnergyTerms refit(const Metric& metric, Clustering& clustering);
 
 EnergyTerms clustering_energy(const Metric& metric, const std::vector<ClusterMoments>& moments,
                               const std::vector<Proxy>& proxies);

@@ -47,16 +47,21 @@ FaceData make_face_data(const TriMesh& mesh, const std::vector<double>& density)
       lo = lo.cwiseMin(p);
       hi = hi.cwiseMax(p);
     }
-    data.origin = 0.5 * (lo + hi);
+    // Halves first: hi - lo may overflow for coordinates near the largest double.
+    data.origin = 0.5 * lo + 0.5 * hi;
+    const double half_extent = (0.5 * hi - 0.5 * lo).maxCoeff();
+    if (half_extent > 0.0 && std::isfinite(half_extent)) data.scale = half_extent;
   }
+  const double inv_scale = 1.0 / data.scale;
+  const auto local = [&](int v) {
+    return Vec3(mesh.positions[static_cast<size_t>(v)] * inv_scale - data.origin * inv_scale);
+  };
   data.records.resize(faces);
   const std::vector<double> density_per_face = face_density(mesh, density);
   for (size_t f = 0; f < faces; ++f) {
     FaceRecord& r = data.records[f];
     const Triangle& t = mesh.triangles[f];
-    const Vec3 a = mesh.positions[static_cast<size_t>(t[0])] - data.origin;
-    const Vec3 b = mesh.positions[static_cast<size_t>(t[1])] - data.origin;
-    const Vec3 c = mesh.positions[static_cast<size_t>(t[2])] - data.origin;
+    const Vec3 a = local(t[0]), b = local(t[1]), c = local(t[2]);
     const Vec3 cross = (b - a).cross(c - a);
     const double len = cross.norm();
     r.area = 0.5 * len;

@@ -1,7 +1,9 @@
 #pragma once
 // FaceData: what the clustering metric needs of each triangle, computed once per mesh in a
-// local frame centred on the bounding box (so second moments do not lose precision on
-// georeferenced coordinates far from the origin).
+// local frame: centred on the bounding box and scaled to its size. Second moments then keep
+// their precision on georeferenced coordinates far from the origin, and neither overflow
+// (sizes ~1e80 and up) nor underflow (~1e-80) whatever units the file uses. Clustering is
+// invariant under this similarity, so nothing else changes.
 #include <Eigen/Core>
 #include <array>
 #include <vector>
@@ -27,9 +29,15 @@ struct alignas(64) FaceRecord {
 static_assert(sizeof(FaceRecord) == 128, "a face record is two cache lines");
 
 struct FaceData {
-  Vec3 origin = Vec3::Zero();  // local frame: local = world - origin
+  // Local frame: local = (world - origin) / scale.
+  Vec3 origin = Vec3::Zero();
+  double scale = 1.0;
   std::vector<FaceRecord> records;
-  double total_area = 0.0;
+  double total_area = 0.0;  // local frame
+
+  Vec3 to_world(const Vec3& local) const { return origin + scale * local; }
+  // Local areas (and the energies, which are areas) times this are world areas.
+  double area_to_world() const { return scale * scale; }
 
   int num_faces() const { return static_cast<int>(records.size()); }
   const FaceRecord& operator[](size_t face) const { return records[face]; }

@@ -69,9 +69,7 @@ double flood(const Metric& metric, const MeshTopology& topology, Clustering& clu
   const int faces = metric.faces().num_faces();
   const int n = clustering.num_clusters();
 
-  std::vector<Metric::Terms> terms;
-  terms.reserve(static_cast<size_t>(n));
-  for (const Proxy& p : clustering.proxies) terms.push_back(metric.terms(p));
+  const std::vector<Metric::Terms> terms = metric.terms(clustering.proxies);
 
   // Per face, together so one cache miss brings all of it: its label, and its cheapest
   // pending offer. A face is pushed only when an offer beats the pending one, and when
@@ -95,7 +93,10 @@ double flood(const Metric& metric, const MeshTopology& topology, Clustering& clu
       if (g < 0) continue;
       FaceState& s = state[static_cast<size_t>(g)];
       if (s.label >= 0 || s.best_cluster == cluster) continue;
-      const double c = metric.cost(g, terms[static_cast<size_t>(cluster)]);
+      double c = metric.cost(g, terms[static_cast<size_t>(cluster)]);
+      // Costs are finite for validated input; should one not be, the face must still be
+      // reached (an unassigned face would break every caller), just last.
+      if (!(c <= std::numeric_limits<double>::max())) c = std::numeric_limits<double>::max();
       if (c < s.best) {
         s.best = c;
         s.best_cluster = cluster;

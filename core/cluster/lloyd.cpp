@@ -5,20 +5,22 @@
 
 namespace ff {
 
+namespace {
+
+int count_changes(const std::vector<int>& before, const std::vector<int>& after) {
+  int changed = 0;
+  for (size_t f = 0; f < after.size(); ++f) changed += f >= before.size() || before[f] != after[f];
+  return changed;
+}
+
+}  // namespace
+
 Clustering initial_clustering(const Metric& metric, const MeshTopology& topology, const std::vector<int>& seeds) {
-  const FaceData& faces = metric.faces();
   Clustering c;
   c.seeds = seeds;
   c.sticky.assign(seeds.size(), 0);
   c.proxies.reserve(seeds.size());
-  for (int f : seeds) {
-    Proxy p;
-    p.center = faces[f].centroid;
-    const Vec3& n = faces[f].normal;
-    p.normal = n.squaredNorm() > 0.0 ? n : Vec3::UnitZ();
-    p.density = faces[f].density;
-    c.proxies.push_back(p);
-  }
+  for (int f : seeds) c.proxies.push_back(single_face_proxy(metric.faces(), f, Vec3::UnitZ()));
   reflood(metric, topology, c);
   return c;
 }
@@ -27,31 +29,27 @@ LloydResult reflood(const Metric& metric, const MeshTopology& topology, Clusteri
   const std::vector<int> before = clustering.labels;
   flood(metric, topology, clustering);
   LloydResult result;
-  for (size_t f = 0; f < clustering.labels.size(); ++f) {
-    if (f >= before.size() || before[f] != clustering.labels[f]) ++result.changed_faces;
-  }
-  const std::vector<ClusterMoments> moments = fit_proxies(metric, clustering);
-  result.energy = clustering_energy(metric, moments, clustering.proxies);
-  clustering.energy = result.energy.total();
+  result.changed_faces = count_changes(before, clustering.labels);
+  result.energy = refit(metric, clustering);
   return result;
 }
 
 LloydResult lloyd_iteration(const Metric& metric, const MeshTopology& topology, Clustering& clustering) {
   choose_seeds(metric, clustering);
   const std::vector<int> before = clustering.labels;
-  const double energy_before = clustering.energy;  // under the current proxies
+  const double energy_before = clustering.energy;  // under the current proxies (refit() keeps it)
   const double flooded = flood(metric, topology, clustering);
-  // Flooding is greedy and can, rarely, land on a worse partition; then improve the previous
-  // one by boundary moves instead, so the energy never rises (fitting then only lowers it).
+  // Flooding is greedy and can land on a worse partition; then improve the previous one by
+  // boundary moves instead, so the energy never rises (fitting then only lowers it, density
+  // aside: see Metric::fit). Near convergence with few faces per cluster this happens often
+  // and late iterations become pure boundary refinement, which is what a fixed point needs.
   if (flooded > energy_before * (1.0 + 1e-12)) {
     clustering.labels = before;
     refine_boundaries(metric, topology, clustering);
   }
   LloydResult result;
-  for (size_t f = 0; f < before.size(); ++f) result.changed_faces += before[f] != clustering.labels[f];
-  const std::vector<ClusterMoments> moments = fit_proxies(metric, clustering);
-  result.energy = clustering_energy(metric, moments, clustering.proxies);
-  clustering.energy = result.energy.total();
+  result.changed_faces = count_changes(before, clustering.labels);
+  result.energy = refit(metric, clustering);
   for (int& s : clustering.sticky) {
     if (s > 0) --s;
   }

@@ -33,6 +33,10 @@ void ClusterMoments::add(const ClusterMoments& o) {
   density_area += o.density_area;
 }
 
+EnergyTerms EnergyTerms::scaled(double factor) const {
+  return EnergyTerms{euclidean * factor, l2 * factor, l21 * factor, density * factor};
+}
+
 EnergyTerms& EnergyTerms::operator+=(const EnergyTerms& o) {
   euclidean += o.euclidean;
   l2 += o.l2;
@@ -43,11 +47,13 @@ EnergyTerms& EnergyTerms::operator+=(const EnergyTerms& o) {
 
 Metric::Metric(const FaceData& faces, const MetricWeights& weights, int num_clusters)
     : faces_(&faces), weights_(weights), diameter_(0.0) {
-  const auto bad = [](double w) { return !std::isfinite(w) || w < 0.0; };
-  if (bad(weights.euclidean) || bad(weights.l2) || bad(weights.l21) || bad(weights.density) ||
-      bad(weights.boundary)) {
-    throw InputError("metric weights must be finite and >= 0");
+  // Only ratios of weights matter; the caps keep every cost finite.
+  const auto bad = [](double w, double cap) { return !(w >= 0.0 && w <= cap); };
+  if (bad(weights.euclidean, kMaxWeight) || bad(weights.l2, kMaxWeight) || bad(weights.l21, kMaxWeight) ||
+      bad(weights.boundary, kMaxWeight)) {
+    throw InputError("metric weights must be between 0 and 1e6");
   }
+  if (bad(weights.density, kMaxDensityWeight)) throw InputError("the density weight must be between 0 and 8");
   if (weights.euclidean + weights.l2 + weights.l21 <= 0.0) {
     throw InputError("at least one of the euclidean, l2 and l21 weights must be > 0");
   }
@@ -56,11 +62,21 @@ Metric::Metric(const FaceData& faces, const MetricWeights& weights, int num_clus
   if (!(diameter_ > 0.0)) throw InputError("the surface has zero area");
 }
 
+double Metric::density_scale(double density) const {
+  return weights_.density == 0.0 ? 1.0 : std::pow(density, weights_.density);
+}
+
 Metric::Terms Metric::terms(const Proxy& proxy) const {
   const double inv_d2 = 1.0 / (diameter_ * diameter_);
-  const double density_scale = weights_.density == 0.0 ? 1.0 : std::pow(proxy.density, weights_.density);
-  return Terms{proxy.center, proxy.normal, weights_.euclidean * density_scale * inv_d2, weights_.l2 * inv_d2,
-               weights_.l21};
+  return Terms{proxy.center, proxy.normal, weights_.euclidean * density_scale(proxy.density) * inv_d2,
+               weights_.l2 * inv_d2, weights_.l21};
+}
+
+std::vector<Metric::Terms> Metric::terms(const std::vector<Proxy>& proxies) const {
+  std::vector<Terms> out;
+  out.reserve(proxies.size());
+  for (const Proxy& p : proxies) out.push_back(terms(p));
+  return out;
 }
 
 Vec3 minimize_quadratic_on_sphere(const Eigen::Matrix3d& A, const Vec3& b) {
@@ -81,24 +97,25 @@ Vec3 minimize_quadratic_on_sphere(const Eigen::Matrix3d& A, const Vec3& b) {
     }
     return sum;
   };
-  // Hard case: beta_0 ~ 0 and the other components alone do not reach the sphere at mu = lambda_0.
+  // Hard case: b has (almost) no component in the lowest eigenspace (every k with
+  // lambda_k ~ lambda_0), and the other components alone do not reach the sphere at
+  // mu = lambda_0: the minimiser is their part plus whatever length is left along e_0.
   const double tiny = 1e-12 * bnorm;
-  if (std::abs(beta[0]) <= tiny) {
-    double rest = 0.0;
-    Vec3 y = Vec3::Zero();
-    for (int k = 1; k < 3; ++k) {
-      const double d = lambda[k] - lambda[0];
-      if (d > 1e-14 * scale) {
-        y[k] = beta[k] / d;
-        rest += y[k] * y[k];
-      } else {
-        rest = 2.0;  // degenerate lowest eigenspace: the secular solve below handles it
-      }
+  const double gap = 1e-14 * scale;
+  double low_sq = 0.0, rest = 0.0;
+  Vec3 y = Vec3::Zero();
+  for (int k = 0; k < 3; ++k) {
+    const double d = lambda[k] - lambda[0];
+    if (d <= gap) {
+      low_sq += beta[k] * beta[k];
+    } else {
+      y[k] = beta[k] / d;
+      rest += y[k] * y[k];
     }
-    if (rest <= 1.0) {
-      y[0] = std::sqrt(1.0 - rest);
-      return Q * y;
-    }
+  }
+  if (low_sq <= tiny * tiny && rest <= 1.0) {
+    y[0] = std::sqrt(1.0 - rest);
+    return Q * y;
   }
   // norm_sq is increasing on (-inf, lambda_0) and <= 1 at lambda_0 - |b|: bisect for 1.
   double lo = lambda[0] - bnorm, hi = lambda[0];
@@ -107,7 +124,6 @@ Vec3 minimize_quadratic_on_sphere(const Eigen::Matrix3d& A, const Vec3& b) {
     if (mid <= lo || mid >= hi) break;
     (norm_sq(mid) > 1.0 ? hi : lo) = mid;
   }
-  Vec3 y;
   for (int k = 0; k < 3; ++k) {
     const double d = lambda[k] - lo;
     y[k] = d > 0.0 ? beta[k] / d : (beta[k] >= 0 ? 1.0 : -1.0);
@@ -148,10 +164,8 @@ EnergyTerms Metric::energy(const ClusterMoments& m, const Proxy& proxy) const {
       m.second - m.first * x.transpose() - x * m.first.transpose() + m.area * x * x.transpose();
   const double l2 = std::max(0.0, N.dot(about_x * N));
   const double l21 = std::max(0.0, 2.0 * m.area - 2.0 * N.dot(m.normal_sum));
-  const double density_scale =
-      weights_.density == 0.0 ? 1.0 : std::pow(proxy.density, weights_.density);
   e.euclidean = weights_.euclidean * euclid * inv_d2;
-  e.density = weights_.euclidean * (density_scale - 1.0) * euclid * inv_d2;
+  e.density = weights_.euclidean * (density_scale(proxy.density) - 1.0) * euclid * inv_d2;
   e.l2 = weights_.l2 * l2 * inv_d2;
   e.l21 = weights_.l21 * l21;
   return e;

@@ -55,6 +55,7 @@ struct EnergyTerms {
   double density = 0.0;
 
   double total() const { return euclidean + l2 + l21 + density; }
+  EnergyTerms scaled(double factor) const;
   EnergyTerms& operator+=(const EnergyTerms& o);
 };
 
@@ -76,6 +77,7 @@ class Metric {
     double l21_scale;     // w_21
   };
   Terms terms(const Proxy& proxy) const;
+  std::vector<Terms> terms(const std::vector<Proxy>& proxies) const;
 
   double cost(int face, const Terms& t) const {
     const FaceRecord& r = (*faces_)[static_cast<size_t>(face)];
@@ -98,13 +100,20 @@ class Metric {
   // The proxy minimising this cluster's weighted energy: centre at the area centroid (optimal
   // for both the euclidean and the L2 term), normal minimising w_2 L2 + w_21 L2,1 jointly on
   // the unit sphere (exact; reduces to the L2 eigenvector or the L2,1 mean normal when one
-  // weight is 0), oriented with the cluster's mean normal. `fallback` is returned for a
-  // cluster of zero area.
+  // weight is 0), oriented with the cluster's mean normal. The cluster's density becomes its
+  // area-mean density: a size target rather than a minimiser, so with a density field a
+  // refit may raise the energy slightly (without one, fits only lower it). `fallback` is
+  // returned for a cluster of zero area.
   Proxy fit(const ClusterMoments& m, const Proxy& fallback) const;
 
   EnergyTerms energy(const ClusterMoments& m, const Proxy& proxy) const;
 
+  static constexpr double kMaxWeight = 1e6;
+  static constexpr double kMaxDensityWeight = 8.0;
+
  private:
+  double density_scale(double density) const;
+
   const FaceData* faces_;
   MetricWeights weights_;
   double diameter_;

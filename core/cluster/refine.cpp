@@ -65,8 +65,7 @@ Triangle corners_of(const MeshTopology& topology, int f) {
 }  // namespace
 
 int refine_boundaries(const Metric& metric, const MeshTopology& topology, Clustering& c, int max_passes) {
-  std::vector<Metric::Terms> terms;
-  for (const Proxy& p : c.proxies) terms.push_back(metric.terms(p));
+  const std::vector<Metric::Terms> terms = metric.terms(c.proxies);
   const size_t faces = c.labels.size();
   std::vector<char> is_seed(faces, 0);
   for (int s : c.seeds) is_seed[static_cast<size_t>(s)] = 1;

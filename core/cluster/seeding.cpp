@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <limits>
 #include <memory>
 #include <queue>
@@ -46,11 +47,20 @@ int random_face(const std::vector<int>& candidates, const std::vector<double>& c
   return -1;
 }
 
-void random_seeds(const FaceData& faces, const std::vector<int>& candidates, int count, SplitMix64& rng,
+// How much each face asks for seeds: its area, times density^w with a density field.
+std::vector<double> seed_weights(const FaceData& faces, double density_weight) {
+  std::vector<double> w(static_cast<size_t>(faces.num_faces()));
+  for (size_t f = 0; f < w.size(); ++f) {
+    w[f] = faces[f].area * (density_weight == 0.0 ? 1.0 : std::pow(faces[f].density, density_weight));
+  }
+  return w;
+}
+
+void random_seeds(const std::vector<double>& weight, const std::vector<int>& candidates, int count, SplitMix64& rng,
                   std::vector<char>& taken, std::vector<int>& seeds) {
   std::vector<double> cumulative(candidates.size());
   double sum = 0.0;
-  for (size_t k = 0; k < candidates.size(); ++k) cumulative[k] = (sum += faces[candidates[k]].area);
+  for (size_t k = 0; k < candidates.size(); ++k) cumulative[k] = (sum += weight[static_cast<size_t>(candidates[k])]);
   for (int s = 0; s < count; ++s) {
     const int f = random_face(candidates, cumulative, taken, rng);
     taken[static_cast<size_t>(f)] = 1;
@@ -111,23 +121,33 @@ class DistanceBuckets {
 // relaxes the faces it is now closer to.
 // Centroid-to-centroid lengths across each face's edges: the Dijkstra runs read these
 // (24 bytes a face) instead of whole face records.
-std::vector<std::array<double, 3>> dual_edge_lengths(const FaceData& faces, const MeshTopology& topology) {
+// Lengths are stretched by sqrt(density^w) so seeds crowd where panels are to be small.
+std::vector<std::array<double, 3>> dual_edge_lengths(const FaceData& faces, const MeshTopology& topology,
+                                                     double density_weight) {
   std::vector<std::array<double, 3>> hop(static_cast<size_t>(faces.num_faces()));
+  const auto stretch = [&](size_t f) {
+    return density_weight == 0.0 ? 1.0 : std::pow(faces[f].density, 0.5 * density_weight);
+  };
   for (size_t f = 0; f < hop.size(); ++f) {
     for (size_t i = 0; i < 3; ++i) {
       const int g = topology.face_neighbors[f][i];
-      hop[f][i] = g < 0 ? 0.0 : (faces[f].centroid - faces[static_cast<size_t>(g)].centroid).norm();
+      if (g < 0) {
+        hop[f][i] = 0.0;
+        continue;
+      }
+      const size_t h = static_cast<size_t>(g);
+      hop[f][i] = (faces[f].centroid - faces[h].centroid).norm() * 0.5 * (stretch(f) + stretch(h));
     }
   }
   return hop;
 }
 
-void farthest_seeds(const FaceData& faces, const MeshTopology& topology, const std::vector<std::array<double, 3>>& hop,
+void farthest_seeds(const std::vector<double>& weight, const MeshTopology& topology, const std::vector<std::array<double, 3>>& hop,
                     const std::vector<int>& candidates, int count, SplitMix64& rng, std::vector<char>& taken,
                     std::vector<double>& dist, std::vector<int>& seeds) {
   using Item = std::pair<double, int>;  // (distance, face)
   std::vector<int> first;
-  random_seeds(faces, candidates, 1, rng, taken, first);
+  random_seeds(weight, candidates, 1, rng, taken, first);
   int next = first.front();
   std::unique_ptr<DistanceBuckets> buckets;
   std::priority_queue<Item, std::vector<Item>, std::greater<Item>> frontier;
@@ -161,7 +181,8 @@ void farthest_seeds(const FaceData& faces, const MeshTopology& topology, const s
 
 }  // namespace
 
-std::vector<int> seeds_per_component(const FaceData& faces, const MeshTopology& topology, int n) {
+std::vector<int> seeds_per_component(const FaceData& faces, const MeshTopology& topology, int n,
+                                     double density_weight) {
   const int components = topology.num_components;
   const int total_faces = faces.num_faces();
   if (n > total_faces) {
@@ -172,16 +193,19 @@ std::vector<int> seeds_per_component(const FaceData& faces, const MeshTopology& 
     throw InputError("the mesh has " + std::to_string(components) + " disconnected parts but only " +
                      std::to_string(n) + " panels were asked for; each part needs at least one panel");
   }
-  std::vector<double> area(static_cast<size_t>(components), 0.0);
+  const std::vector<double> weight = seed_weights(faces, density_weight);
+  std::vector<double> area(static_cast<size_t>(components), 0.0);  // weighted by density
   std::vector<int> capacity(static_cast<size_t>(components), 0);
   for (int f = 0; f < total_faces; ++f) {
     const size_t c = static_cast<size_t>(topology.face_component[static_cast<size_t>(f)]);
-    area[c] += faces[f].area;
+    area[c] += weight[static_cast<size_t>(f)];
     ++capacity[c];
   }
   // Hamilton's method on the area quotas, with at least one seed per part and at most one
   // per face; ties go to the lower component index.
-  const double total = faces.total_area > 0.0 ? faces.total_area : 1.0;
+  double total = 0.0;
+  for (double a : area) total += a;
+  if (!(total > 0.0)) total = 1.0;
   std::vector<double> quota(static_cast<size_t>(components));
   std::vector<int> count(static_cast<size_t>(components));
   int assigned = 0;
@@ -190,40 +214,39 @@ std::vector<int> seeds_per_component(const FaceData& faces, const MeshTopology& 
     count[c] = std::min(capacity[c], std::max(1, static_cast<int>(quota[c])));
     assigned += count[c];
   }
+  // One sort by remainder, then whole passes in that order: linear in the number of parts,
+  // which matters for a facade of thousands of separate panels.
   std::vector<size_t> order(quota.size());
   for (size_t c = 0; c < order.size(); ++c) order[c] = c;
-  const auto remainder = [&](size_t c) { return quota[c] - count[c]; };
-  while (assigned != n) {
-    // Largest remainder gets one more (when short), smallest gives one back (when over).
-    std::stable_sort(order.begin(), order.end(), [&](size_t x, size_t y) { return remainder(x) > remainder(y); });
-    bool changed = false;
-    if (assigned < n) {
-      for (size_t c : order) {
-        if (count[c] < capacity[c]) {
-          ++count[c];
-          ++assigned;
-          changed = true;
-          break;
-        }
-      }
-    } else {
-      for (auto it = order.rbegin(); it != order.rend(); ++it) {
-        if (count[*it] > 1) {
-          --count[*it];
-          --assigned;
-          changed = true;
-          break;
-        }
+  std::stable_sort(order.begin(), order.end(),
+                   [&](size_t x, size_t y) { return quota[x] - count[x] > quota[y] - count[y]; });
+  while (assigned < n) {  // short: the largest remainders get one more
+    const int before = assigned;
+    for (size_t k = 0; k < order.size() && assigned < n; ++k) {
+      if (count[order[k]] < capacity[order[k]]) {
+        ++count[order[k]];
+        ++assigned;
       }
     }
-    if (!changed) break;  // cannot happen for components <= n <= faces
+    if (assigned == before) break;  // cannot happen for n <= faces
+  }
+  while (assigned > n) {  // over (every part has one): the smallest remainders give one back
+    const int before = assigned;
+    for (size_t k = order.size(); k-- > 0 && assigned > n;) {
+      if (count[order[k]] > 1) {
+        --count[order[k]];
+        --assigned;
+      }
+    }
+    if (assigned == before) break;  // cannot happen for n >= parts
   }
   return count;
 }
 
 std::vector<int> place_seeds(const FaceData& faces, const MeshTopology& topology, int n, SeedingMethod method,
-                             std::uint64_t seed) {
-  const std::vector<int> counts = seeds_per_component(faces, topology, n);
+                             std::uint64_t seed, double density_weight) {
+  const std::vector<int> counts = seeds_per_component(faces, topology, n, density_weight);
+  const std::vector<double> weight = seed_weights(faces, density_weight);
   const std::vector<std::vector<int>> members = component_faces(topology, faces.num_faces());
   SplitMix64 rng(seed);
   std::vector<char> taken(static_cast<size_t>(faces.num_faces()), 0);
@@ -231,15 +254,15 @@ std::vector<int> place_seeds(const FaceData& faces, const MeshTopology& topology
   std::vector<std::array<double, 3>> hop;
   if (method == SeedingMethod::FarthestPoint) {
     dist.assign(static_cast<size_t>(faces.num_faces()), std::numeric_limits<double>::infinity());
-    hop = dual_edge_lengths(faces, topology);
+    hop = dual_edge_lengths(faces, topology, density_weight);
   }
   std::vector<int> seeds;
   seeds.reserve(static_cast<size_t>(n));
   for (size_t c = 0; c < counts.size(); ++c) {
     if (method == SeedingMethod::Random) {
-      random_seeds(faces, members[c], counts[c], rng, taken, seeds);
+      random_seeds(weight, members[c], counts[c], rng, taken, seeds);
     } else {
-      farthest_seeds(faces, topology, hop, members[c], counts[c], rng, taken, dist, seeds);
+      farthest_seeds(weight, topology, hop, members[c], counts[c], rng, taken, dist, seeds);
     }
   }
   return seeds;

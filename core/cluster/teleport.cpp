@@ -31,8 +31,7 @@ ClusterStats cluster_stats(const Metric& metric, const Clustering& c) {
   s.moments = cluster_moments(metric.faces(), c.labels, n);
   s.energy.resize(static_cast<size_t>(n));
   for (size_t i = 0; i < s.moments.size(); ++i) s.energy[i] = metric.energy(s.moments[i], c.proxies[i]).total();
-  std::vector<Metric::Terms> terms;
-  for (const Proxy& p : c.proxies) terms.push_back(metric.terms(p));
+  const std::vector<Metric::Terms> terms = metric.terms(c.proxies);
   s.worst_face.assign(static_cast<size_t>(n), -1);
   std::vector<double> worst_cost(static_cast<size_t>(n), -1.0);
   for (int f = 0; f < metric.faces().num_faces(); ++f) {
@@ -80,13 +79,7 @@ void merge_into(const Metric& metric, Clustering& c, ClusterStats& s, std::vecto
 bool split_into(const Metric& metric, Clustering& c, const ClusterStats& s, int w, int id, int sticky_iterations) {
   const int face = s.worst_face[static_cast<size_t>(w)];
   if (face < 0) return false;  // a one-face cluster cannot be split
-  const FaceData& faces = metric.faces();
-  Proxy p;
-  p.center = faces[face].centroid;
-  const Vec3& n = faces[face].normal;
-  p.normal = n.squaredNorm() > 0.0 ? n : c.proxies[static_cast<size_t>(w)].normal;
-  p.density = faces[face].density;
-  c.proxies[static_cast<size_t>(id)] = p;
+  c.proxies[static_cast<size_t>(id)] = single_face_proxy(metric.faces(), face, c.proxies[static_cast<size_t>(w)].normal);
   c.seeds[static_cast<size_t>(id)] = face;
   c.sticky[static_cast<size_t>(id)] = sticky_iterations;
   return true;

@@ -1,6 +1,7 @@
 #pragma once
 // TriMesh: the triangle soup every algorithm reads. Positions and index triples only;
-// adjacency lives in MeshTopology (topology.h), per-face geometry in face_geometry().
+// adjacency lives in MeshTopology (topology.h); the per-face data the clustering reads is
+// built by make_face_data() (cluster/face_data.h).
 #include <Eigen/Core>
 #include <array>
 #include <vector>

@@ -16,7 +16,8 @@ class SplitMix64 {
     return z ^ (z >> 31);
   }
 
-  // Uniform integer in [0, bound) without modulo bias (Lemire's method, 64-bit).
+  // Uniform integer in [0, bound) without modulo bias: reject draws below 2^64 mod bound
+  // (the arc4random_uniform method).
   std::uint64_t below(std::uint64_t bound) {
     if (bound <= 1) return 0;
     const std::uint64_t threshold = (0 - bound) % bound;

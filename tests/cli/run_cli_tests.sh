@@ -67,6 +67,17 @@ xs=[float(l.split()[0]) for l in lines[2:2+n]]
 mid=sorted(xs)[n//2]
 print('\n'.join('4' if x<mid else '1' for x in xs))" >"$tmp/density.txt"
 "$bin" cluster "$m" --panels 50 --density "$tmp/density.txt" --labels "$tmp/e.txt" && ok || bad "density run"
+# Per-triangle density works too.
+nf=$(awk 'NR==2{print $2}' "$m")
+python3 -c "print('\n'.join('3' if i % 2 else '1' for i in range($nf)))" >"$tmp/face_density.txt"
+"$bin" cluster "$m" --panels 50 --density "$tmp/face_density.txt" --labels "$tmp/f.txt" && ok || bad "per-triangle density run"
+# Zero iterations: the seeded clustering itself.
+"$bin" cluster "$m" --panels 30 --iterations 0 --labels "$tmp/g.txt" --summary "$tmp/g.json" &&
+  python3 -c "import json; d=json.load(open('$tmp/g.json')); assert d['iterations'] == 0 and d['clusters'] == 30" && ok ||
+  bad "--iterations 0"
+# An output that cannot be written: exit 2 and no other output left behind.
+rm -f "$tmp/never.txt"
+expect_error 2 "cannot write" cluster "$m" --panels 10 --labels "$tmp/never.txt" --summary "$tmp/no/such/dir/s.json"
 echo "1 2 3" >"$tmp/short.txt"
 expect_error 2 "density.*3 values.*$nv" cluster "$m" --panels 10 --density "$tmp/short.txt" --labels "$tmp/never.txt"
 

@@ -54,12 +54,14 @@ TEST(Metric, L2ClosedFormMatchesNumericIntegration) {
     Proxy p;
     p.center = r() * 0.5;
     p.normal = r().normalized();
-    const double d2 = metric.diameter() * metric.diameter();
-    // The metric works in FaceData's local frame; integrate in world coordinates.
-    const Vec3 x_world = p.center + fd.origin;
+    // The metric works in FaceData's local frame; integrate in world coordinates, where D
+    // and the cost (an area) carry the frame's scale.
+    const double d_world = metric.diameter() * fd.scale;
+    const Vec3 x_world = fd.to_world(p.center);
     const double numeric =
-        integrate(a, b, c, [&](const Vec3& q) { return std::pow(p.normal.dot(q - x_world), 2); }) / d2;
-    EXPECT_NEAR(metric.cost(0, metric.terms(p)), numeric, 1e-4 * std::max(1e-3, numeric));
+        integrate(a, b, c, [&](const Vec3& q) { return std::pow(p.normal.dot(q - x_world), 2); }) / (d_world * d_world);
+    const double cost_world = metric.cost(0, metric.terms(p)) * fd.area_to_world();
+    EXPECT_NEAR(cost_world, numeric, 1e-4 * std::max(1e-3, numeric));
   }
 }
 
@@ -71,10 +73,11 @@ TEST(Metric, SecondMomentMatchesNumericIntegration) {
   m.add_face(fd, 0);
   for (int i = 0; i < 3; ++i) {
     for (int j = 0; j < 3; ++j) {
+      // Local coordinates l = (q - origin) / scale, local area = world area / scale^2.
       const double numeric = integrate(a, b, c, [&](const Vec3& q) {
-        const Vec3 l = q - fd.origin;
+        const Vec3 l = (q - fd.origin) / fd.scale;
         return l[i] * l[j];
-      });
+      }) / fd.area_to_world();
       EXPECT_NEAR(m.second(i, j), numeric, 1e-4 * std::max(1.0, std::abs(numeric)));
     }
   }
@@ -130,6 +133,15 @@ TEST(Metric, RejectsBadDensityAndWeights) {
   w = MetricWeights{};
   w.euclidean = w.l2 = w.l21 = 0.0;
   EXPECT_THROW(Metric(fd, w, 2), std::runtime_error);
+  w = MetricWeights{};
+  w.euclidean = 1e308;  // would make costs overflow
+  EXPECT_THROW(Metric(fd, w, 2), std::runtime_error);
+  w = MetricWeights{};
+  w.density = 100.0;
+  EXPECT_THROW(Metric(fd, w, 2), std::runtime_error);
+  w = MetricWeights{};
+  w.l21 = std::nan("");
+  EXPECT_THROW(Metric(fd, w, 2), std::runtime_error);
 }
 
 double sphere_objective(const Eigen::Matrix3d& A, const Vec3& b, const Vec3& n) { return n.dot(A * n) - 2.0 * b.dot(n); }
@@ -182,6 +194,12 @@ TEST(Metric, SphereFitHardCaseAndPureCases) {
   Vec3 b(0.0, 0.5, 0.0);
   Vec3 n = minimize_quadratic_on_sphere(A, b);
   EXPECT_NEAR(sphere_objective(A, b, n), brute_force_min(A, b), 1e-9);
+  // Hard case with a repeated lowest eigenvalue: the minimiser mixes e0/e1 with b's direction.
+  const Eigen::Matrix3d flat = Eigen::Vector3d(0.0, 0.0, 1.0).asDiagonal();
+  const Vec3 up(0.0, 0.0, 0.5);
+  n = minimize_quadratic_on_sphere(flat, up);
+  EXPECT_NEAR(sphere_objective(flat, up, n), -0.25, 1e-12);
+  EXPECT_NEAR(sphere_objective(flat, up, n), brute_force_min(flat, up), 1e-9);
   // b = 0: the smallest eigenvector.
   n = minimize_quadratic_on_sphere(A, Vec3::Zero());
   EXPECT_NEAR(std::abs(n.x()), 1.0, 1e-12);
