@@ -42,14 +42,10 @@ FaceData make_face_data(const TriMesh& mesh, const std::vector<double>& density)
   FaceData data;
   const size_t faces = mesh.triangles.size();
   if (!mesh.positions.empty()) {
-    Vec3 lo = mesh.positions.front(), hi = lo;
-    for (const Vec3& p : mesh.positions) {
-      lo = lo.cwiseMin(p);
-      hi = hi.cwiseMax(p);
-    }
+    const BoundingBox box = bounding_box(mesh);
     // Halves first: hi - lo may overflow for coordinates near the largest double.
-    data.origin = 0.5 * lo + 0.5 * hi;
-    const double half_extent = (0.5 * hi - 0.5 * lo).maxCoeff();
+    data.origin = 0.5 * box.lo + 0.5 * box.hi;
+    const double half_extent = (0.5 * box.hi - 0.5 * box.lo).maxCoeff();
     if (half_extent > 0.0 && std::isfinite(half_extent)) data.scale = half_extent;
   }
   const double inv_scale = 1.0 / data.scale;

@@ -29,14 +29,19 @@ Vec3 face_centroid(const TriMesh& mesh, int face) {
          3.0;
 }
 
-double bbox_diagonal(const TriMesh& mesh) {
-  if (mesh.positions.empty()) return 0.0;
-  Vec3 lo = mesh.positions.front(), hi = lo;
+BoundingBox bounding_box(const TriMesh& mesh) {
+  if (mesh.positions.empty()) return {};
+  BoundingBox box{mesh.positions.front(), mesh.positions.front()};
   for (const Vec3& p : mesh.positions) {
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
+    box.lo = box.lo.cwiseMin(p);
+    box.hi = box.hi.cwiseMax(p);
   }
-  return (hi - lo).norm();
+  return box;
+}
+
+double bbox_diagonal(const TriMesh& mesh) {
+  const BoundingBox box = bounding_box(mesh);
+  return (box.hi - box.lo).norm();
 }
 
 double total_area(const TriMesh& mesh) {

@@ -24,7 +24,13 @@ double face_area(const TriMesh& mesh, int face);
 Vec3 face_normal(const TriMesh& mesh, int face);
 Vec3 face_centroid(const TriMesh& mesh, int face);
 
-// Axis-aligned bounding box diagonal length (0 for an empty mesh).
+struct BoundingBox {
+  Vec3 lo = Vec3::Zero();
+  Vec3 hi = Vec3::Zero();
+};
+// Of all positions (a zero box for an empty mesh).
+BoundingBox bounding_box(const TriMesh& mesh);
+// Its diagonal's length: the unit of the Hausdorff distance in the report.
 double bbox_diagonal(const TriMesh& mesh);
 double total_area(const TriMesh& mesh);
 
