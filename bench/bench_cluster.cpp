@@ -51,7 +51,9 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
-bool close_enough(double a, double b, double scale, double rel) { return std::abs(a - b) <= rel * std::max(scale, 1e-300); }
+bool close_enough(double a, double b, double scale, double rel) {
+  return std::abs(a - b) <= rel * std::max(scale, 1e-300);
+}
 
 // ---------------------------------------------------------------------------------------
 // One measurement (in the child)
@@ -109,10 +111,14 @@ Result run_ours(const std::string& method, ff::TriMesh mesh, int panels, int ite
   const ff::Clustering& c = remesher.clustering();
   r.energy = l21_energy(remesher.mesh(), c.labels, c.num_clusters());
   r.lib_energy = remesher.energy().l21;
-  if (c.num_clusters() != panels) r.failure = "expected " + std::to_string(panels) + " clusters, got " + std::to_string(c.num_clusters());
-  else if (r.energy < 0.0) r.failure = "labels are not a partition into non-empty clusters";
-  else if (!ff::clusters_are_contiguous(remesher.topology(), c.labels, c.num_clusters())) r.failure = "a cluster is not edge-connected";
-  else if (!std::isfinite(r.energy)) r.failure = "energy is not finite";
+  if (c.num_clusters() != panels)
+    r.failure = "expected " + std::to_string(panels) + " clusters, got " + std::to_string(c.num_clusters());
+  else if (r.energy < 0.0)
+    r.failure = "labels are not a partition into non-empty clusters";
+  else if (!ff::clusters_are_contiguous(remesher.topology(), c.labels, c.num_clusters()))
+    r.failure = "a cluster is not edge-connected";
+  else if (!std::isfinite(r.energy))
+    r.failure = "energy is not finite";
   else if (method == "ours-l21" && !close_enough(r.energy, r.lib_energy, remesher.metric().faces().total_area, 1e-9))
     r.failure = "our L2,1 energy disagrees with the library's";
   return r;
@@ -132,9 +138,12 @@ Result run_cgal(const ff::TriMesh& mesh, int panels, int iterations, unsigned se
   r.energy = l21_energy(mesh, run.labels, run.proxies);
   r.lib_energy = run.cgal_error;
   const double area = ff::total_area(mesh);
-  if (run.proxies != panels) r.failure = "CGAL made " + std::to_string(run.proxies) + " proxies, asked for " + std::to_string(panels);
-  else if (r.energy < 0.0) r.failure = "CGAL labels are not a partition into non-empty clusters";
-  else if (!std::isfinite(r.energy)) r.failure = "energy is not finite";
+  if (run.proxies != panels)
+    r.failure = "CGAL made " + std::to_string(run.proxies) + " proxies, asked for " + std::to_string(panels);
+  else if (r.energy < 0.0)
+    r.failure = "CGAL labels are not a partition into non-empty clusters";
+  else if (!std::isfinite(r.energy))
+    r.failure = "energy is not finite";
   else if (iterations > 0 && !close_enough(r.energy, r.lib_energy, area, 1e-9))
     r.failure = "our L2,1 energy of CGAL's partition disagrees with CGAL's error";
   return r;
@@ -162,8 +171,10 @@ int run_only(const std::string& method, const Case& c, const std::string& meshes
     std::fprintf(stderr, "bench_cluster: unknown method '%s'\n", method.c_str());
     return 2;
   }
-  std::printf("result faces=%d panels=%d iterations=%d setup_a=%.9g setup_b=%.9g iter_total=%.9g energy=%.17g lib_energy=%.17g\n",
-              r.faces, r.panels, r.iterations, r.setup_a, r.setup_b, r.iterations_total(), r.energy, r.lib_energy);
+  std::printf(
+      "result faces=%d panels=%d iterations=%d setup_a=%.9g setup_b=%.9g iter_total=%.9g energy=%.17g "
+      "lib_energy=%.17g\n",
+      r.faces, r.panels, r.iterations, r.setup_a, r.setup_b, r.iterations_total(), r.energy, r.lib_energy);
   std::fflush(stdout);
   if (!r.failure.empty()) {
     std::fprintf(stderr, "bench_cluster: %s on %s: %s\n", method.c_str(), c.name.c_str(), r.failure.c_str());
@@ -285,11 +296,12 @@ struct Options {
 };
 
 void usage() {
-  std::fprintf(stderr,
-               "usage: bench_cluster [--smoke] [--cases a,b,...] [--meshes DIR] [--iterations N] [--seed S] [--repeat R]\n"
-               "       bench_cluster --only input|ours-l21|ours-default|cgal --case CASE [--meshes DIR]\n"
-               "                     [--iterations N] [--seed S]\n"
-               "cases: roof-10k roof-100k roof-1m hyperboloid, or roof:FACES:PANELS\n");
+  std::fprintf(
+      stderr,
+      "usage: bench_cluster [--smoke] [--cases a,b,...] [--meshes DIR] [--iterations N] [--seed S] [--repeat R]\n"
+      "       bench_cluster --only input|ours-l21|ours-default|cgal --case CASE [--meshes DIR]\n"
+      "                     [--iterations N] [--seed S]\n"
+      "cases: roof-10k roof-100k roof-1m hyperboloid, or roof:FACES:PANELS\n");
 }
 
 int run_table(const Options& o, const char* argv0) {
@@ -311,14 +323,16 @@ int run_table(const Options& o, const char* argv0) {
   std::printf("Machine: %s.  \n", machine_line().c_str());
   std::printf("%d Lloyd iterations; seed %llu; every cell measured in its own child process, best of %d run(s).\n\n",
               iterations, static_cast<unsigned long long>(o.seed), std::max(1, o.repeat));
-  std::printf("| input | faces | n | method | iterations | setup s (a + b) | per iteration ms | iterations s | total s | process s (CPU s) | peak RSS MiB | L2,1 energy |\n");
+  std::printf(
+      "| input | faces | n | method | iterations | setup s (a + b) | per iteration ms | iterations s | total s | "
+      "process s (CPU s) | peak RSS MiB | L2,1 energy |\n");
   std::printf("|---|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   std::fflush(stdout);
 
   struct Pair {
     std::string label;
-    double ours_total = NAN, cgal_total = NAN, ours_process = NAN, cgal_process = NAN, ours_cpu = NAN,
-           cgal_cpu = NAN, ours_energy = NAN, cgal_energy = NAN;
+    double ours_total = NAN, cgal_total = NAN, ours_process = NAN, cgal_process = NAN, ours_cpu = NAN, cgal_cpu = NAN,
+           ours_energy = NAN, cgal_energy = NAN;
     int faces = 0, panels = 0;
   };
   std::vector<Pair> pairs;
@@ -341,8 +355,8 @@ int run_table(const Options& o, const char* argv0) {
       continue;
     }
     const int faces = static_cast<int>(base.num("faces"));
-    std::printf("| %s | %d | %d | input only (make/read the mesh) | | | | | | %s (%s) | %s | |\n", c.label.c_str(), faces,
-                c.panels, fmt("%.2f", base.process_seconds).c_str(), fmt("%.2f", base.process_cpu).c_str(),
+    std::printf("| %s | %d | %d | input only (make/read the mesh) | | | | | | %s (%s) | %s | |\n", c.label.c_str(),
+                faces, c.panels, fmt("%.2f", base.process_seconds).c_str(), fmt("%.2f", base.process_cpu).c_str(),
                 fmt("%.0f", base.peak_rss_mib).c_str());
     Pair pair;
     pair.label = c.label;
@@ -362,11 +376,12 @@ int run_table(const Options& o, const char* argv0) {
       const double sa = m.num("setup_a"), sb = m.num("setup_b"), it_total = m.num("iter_total");
       const double total = sa + sb + it_total;
       const std::string setup = fmt("%.3f", sa + sb) + " (" + fmt("%.3f", sa) + " + " + fmt("%.3f", sb) + ")";
-      std::printf("| %s | %d | %d | %s | %d%s | %s | %s | %s | %s | %s (%s) | %s | %s |\n", c.label.c_str(), faces, c.panels,
-                  method_label(method).c_str(), its, its < iterations ? " (converged)" : "", setup.c_str(),
+      std::printf("| %s | %d | %d | %s | %d%s | %s | %s | %s | %s | %s (%s) | %s | %s |\n", c.label.c_str(), faces,
+                  c.panels, method_label(method).c_str(), its, its < iterations ? " (converged)" : "", setup.c_str(),
                   fmt("%.1f", its > 0 ? 1000.0 * it_total / its : NAN).c_str(), fmt("%.3f", it_total).c_str(),
-                  fmt("%.3f", total).c_str(), fmt("%.2f", m.process_seconds).c_str(), fmt("%.2f", m.process_cpu).c_str(),
-                  fmt("%.0f", m.peak_rss_mib).c_str(), fmt("%.6g", m.num("energy")).c_str());
+                  fmt("%.3f", total).c_str(), fmt("%.2f", m.process_seconds).c_str(),
+                  fmt("%.2f", m.process_cpu).c_str(), fmt("%.0f", m.peak_rss_mib).c_str(),
+                  fmt("%.6g", m.num("energy")).c_str());
       std::fflush(stdout);
       if (method == "ours-l21") {
         pair.ours_total = total;
@@ -383,18 +398,20 @@ int run_table(const Options& o, const char* argv0) {
     pairs.push_back(pair);
   }
 
-  std::printf("\nSetup: (a) ours = topology + face data, CGAL = Surface_mesh + L21 face normals/areas; "
-              "(b) ours = seeding + first flood and fit, CGAL = seeding (VSA object, random seeds, no relaxation). "
-              "Iterations: ours = choose seeds + flood + refit; CGAL = run(1) = partition + refit (+ its seed choice). "
-              "Process = wall clock of the whole child, including making or reading the input. "
-              "L2,1 energy = sum of area |n_f - N_i|^2 with N_i the area-weighted mean normal of the cluster, "
-              "computed by the benchmark itself for every partition.\n\n");
+  std::printf(
+      "\nSetup: (a) ours = topology + face data, CGAL = Surface_mesh + L21 face normals/areas; "
+      "(b) ours = seeding + first flood and fit, CGAL = seeding (VSA object, random seeds, no relaxation). "
+      "Iterations: ours = choose seeds + flood + refit; CGAL = run(1) = partition + refit (+ its seed choice). "
+      "Process = wall clock of the whole child, including making or reading the input. "
+      "L2,1 energy = sum of area |n_f - N_i|^2 with N_i the area-weighted mean normal of the cluster, "
+      "computed by the benchmark itself for every partition.\n\n");
   bool any_pair = false;
   for (const Pair& p : pairs) {
     if (std::isnan(p.cgal_total) || std::isnan(p.ours_total)) continue;
     if (!any_pair) {
-      std::printf("| input | ours L2,1 / CGAL: total time | process time | process CPU time | L2,1 energy |\n"
-                  "|---|---:|---:|---:|---:|\n");
+      std::printf(
+          "| input | ours L2,1 / CGAL: total time | process time | process CPU time | L2,1 energy |\n"
+          "|---|---:|---:|---:|---:|\n");
       any_pair = true;
     }
     std::printf("| %s | %s | %s | %s | %s |\n", p.label.c_str(), fmt("%.2f", p.ours_total / p.cgal_total).c_str(),
@@ -405,9 +422,10 @@ int run_table(const Options& o, const char* argv0) {
   if (!o.smoke) {
     for (const Pair& p : pairs) {
       if (p.label != "roof ~1M" || std::isnan(p.ours_total)) continue;
-      std::printf("Target 1M triangles x %d clusters x %d iterations under 5 s (ours, L2,1): total %.2f s, "
-                  "process %.2f s: %s.  \n",
-                  p.panels, iterations, p.ours_total, p.ours_process, p.ours_total < 5.0 ? "met" : "MISSED");
+      std::printf(
+          "Target 1M triangles x %d clusters x %d iterations under 5 s (ours, L2,1): total %.2f s, "
+          "process %.2f s: %s.  \n",
+          p.panels, iterations, p.ours_total, p.ours_process, p.ours_total < 5.0 ? "met" : "MISSED");
     }
     bool slower = false, compared = false;
     for (const Pair& p : pairs) {
@@ -432,8 +450,10 @@ int run_table(const Options& o, const char* argv0) {
 
 int main(int argc, char** argv) {
   Options o;
-  if (const char* env = std::getenv("FF_SHARED_MESHES"); env && *env) o.meshes = env;
-  else o.meshes = FF_DEFAULT_SHARED_MESHES;
+  if (const char* env = std::getenv("FF_SHARED_MESHES"); env && *env)
+    o.meshes = env;
+  else
+    o.meshes = FF_DEFAULT_SHARED_MESHES;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     const auto value = [&]() -> std::string {
@@ -443,19 +463,26 @@ int main(int argc, char** argv) {
       }
       return argv[++i];
     };
-    if (a == "--smoke") o.smoke = true;
-    else if (a == "--only") o.only = value();
-    else if (a == "--case") o.case_name = value();
+    if (a == "--smoke")
+      o.smoke = true;
+    else if (a == "--only")
+      o.only = value();
+    else if (a == "--case")
+      o.case_name = value();
     else if (a == "--cases") {
       std::istringstream list(value());
       std::string item;
       while (std::getline(list, item, ',')) {
         if (!item.empty()) o.cases.push_back(item);
       }
-    } else if (a == "--meshes") o.meshes = value();
-    else if (a == "--iterations") o.iterations = std::atoi(value().c_str());
-    else if (a == "--repeat") o.repeat = std::atoi(value().c_str());
-    else if (a == "--seed") o.seed = std::strtoull(value().c_str(), nullptr, 10);
+    } else if (a == "--meshes")
+      o.meshes = value();
+    else if (a == "--iterations")
+      o.iterations = std::atoi(value().c_str());
+    else if (a == "--repeat")
+      o.repeat = std::atoi(value().c_str());
+    else if (a == "--seed")
+      o.seed = std::strtoull(value().c_str(), nullptr, 10);
     else if (a == "--help" || a == "-h") {
       usage();
       return 0;
@@ -469,7 +496,8 @@ int main(int argc, char** argv) {
     if (!o.only.empty()) {
       Case c;
       if (!parse_case(o.case_name, c)) {
-        std::fprintf(stderr, "bench_cluster: --only needs --case (roof-10k, roof-100k, roof-1m, hyperboloid, roof:F:N)\n");
+        std::fprintf(stderr,
+                     "bench_cluster: --only needs --case (roof-10k, roof-100k, roof-1m, hyperboloid, roof:F:N)\n");
         return 2;
       }
       return run_only(o.only, c, o.meshes, o.iterations >= 0 ? o.iterations : 20, o.seed);

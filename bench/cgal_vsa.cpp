@@ -30,7 +30,8 @@ CgalVsaRun run_cgal_vsa(const ff::TriMesh& input, int panels, int iterations, un
   CgalVsaRun out;
   auto start = std::chrono::steady_clock::now();
   Mesh mesh;
-  mesh.reserve(static_cast<Mesh::size_type>(input.num_vertices()), static_cast<Mesh::size_type>(3 * input.num_faces() / 2 + 16),
+  mesh.reserve(static_cast<Mesh::size_type>(input.num_vertices()),
+               static_cast<Mesh::size_type>(3 * input.num_faces() / 2 + 16),
                static_cast<Mesh::size_type>(input.num_faces()));
   std::vector<Mesh::Vertex_index> vertex(input.positions.size());
   for (size_t v = 0; v < input.positions.size(); ++v) {
@@ -52,9 +53,10 @@ CgalVsaRun run_cgal_vsa(const ff::TriMesh& input, int panels, int iterations, un
   start = std::chrono::steady_clock::now();
   Approximation vsa(mesh, vpm, metric);
   std::srand(seed);
-  out.proxies = static_cast<int>(vsa.initialize_seeds(CGAL::parameters::seeding_method(CGAL::Surface_mesh_approximation::RANDOM)
-                                                          .max_number_of_proxies(static_cast<std::size_t>(panels))
-                                                          .number_of_relaxations(0)));
+  out.proxies =
+      static_cast<int>(vsa.initialize_seeds(CGAL::parameters::seeding_method(CGAL::Surface_mesh_approximation::RANDOM)
+                                                .max_number_of_proxies(static_cast<std::size_t>(panels))
+                                                .number_of_relaxations(0)));
   out.seed_seconds = seconds_since(start);
 
   for (int it = 0; it < iterations; ++it) {

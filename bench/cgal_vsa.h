@@ -12,12 +12,12 @@
 namespace ff::bench {
 
 struct CgalVsaRun {
-  double build_seconds = 0.0;  // TriMesh -> CGAL::Surface_mesh, L21 metric (face normals, areas)
-  double seed_seconds = 0.0;   // VSA object and initialize_seeds (random, no relaxation)
+  double build_seconds = 0.0;             // TriMesh -> CGAL::Surface_mesh, L21 metric (face normals, areas)
+  double seed_seconds = 0.0;              // VSA object and initialize_seeds (random, no relaxation)
   std::vector<double> iteration_seconds;  // one entry per run(1)
-  std::vector<int> labels;     // proxy index per face, in the TriMesh's face order
-  int proxies = 0;             // number of proxies after seeding
-  double cgal_error = 0.0;     // CGAL's own total L2,1 error after the last iteration
+  std::vector<int> labels;                // proxy index per face, in the TriMesh's face order
+  int proxies = 0;                        // number of proxies after seeding
+  double cgal_error = 0.0;                // CGAL's own total L2,1 error after the last iteration
 };
 
 // Random seeding of `panels` proxies (std::srand(seed) first: CGAL picks with std::rand),

@@ -36,7 +36,8 @@ long long Args::get_int(const std::string& name, long long fallback, long long l
   if (ec != std::errc() || ptr != text.data() + text.size())
     throw UsageError("--" + name + ": '" + text + "' is not a whole number");
   if (v < lo || v > hi)
-    throw UsageError("--" + name + ": " + text + " is out of range [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+    throw UsageError("--" + name + ": " + text + " is out of range [" + std::to_string(lo) + ", " + std::to_string(hi) +
+                     "]");
   return v;
 }
 
@@ -93,12 +94,18 @@ MetricWeights parse_weights(const std::string& text) {
     const std::string name = item.substr(0, eq);
     const double v = parse_double(item.substr(eq + 1), "--weights " + name);
     if (v < 0.0) throw UsageError("--weights " + name + ": weights must be >= 0");
-    if (name == "euclidean") w.euclidean = v;
-    else if (name == "l2") w.l2 = v;
-    else if (name == "l21") w.l21 = v;
-    else if (name == "density") w.density = v;
-    else if (name == "boundary") w.boundary = v;
-    else throw UsageError("--weights: unknown term '" + name + "' (use euclidean, l2, l21, density, boundary)");
+    if (name == "euclidean")
+      w.euclidean = v;
+    else if (name == "l2")
+      w.l2 = v;
+    else if (name == "l21")
+      w.l21 = v;
+    else if (name == "density")
+      w.density = v;
+    else if (name == "boundary")
+      w.boundary = v;
+    else
+      throw UsageError("--weights: unknown term '" + name + "' (use euclidean, l2, l21, density, boundary)");
   }
   return w;
 }

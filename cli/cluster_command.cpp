@@ -57,8 +57,8 @@ std::string summary_json(const LoadedInput& in, const Remesher& r, double cluste
 
 int run_cluster(const std::vector<std::string>& argv) {
   const auto t_start = std::chrono::steady_clock::now();
-  const Args args = parse_args(argv, {"panels", "seed", "weights", "density", "iterations", "labels", "summary", "seeding"},
-                               {"no-teleport"});
+  const Args args = parse_args(
+      argv, {"panels", "seed", "weights", "density", "iterations", "labels", "summary", "seeding"}, {"no-teleport"});
   if (args.positional.size() != 1) throw UsageError("expected exactly one INPUT mesh (see flatfacet --help)");
   if (!args.has("panels")) throw UsageError("--panels N is required");
   if (!args.has("labels")) throw UsageError("--labels LABELS.txt is required");
@@ -69,8 +69,10 @@ int run_cluster(const std::vector<std::string>& argv) {
   params.lloyd_iterations = static_cast<int>(args.get_int("iterations", 20, 0, 100000));
   if (args.has("weights")) params.weights = parse_weights(args.get("weights"));
   const std::string seeding = args.get("seeding", "farthest");
-  if (seeding == "random") params.seeding = SeedingMethod::Random;
-  else if (seeding != "farthest") throw UsageError("--seeding: expected farthest or random, got '" + seeding + "'");
+  if (seeding == "random")
+    params.seeding = SeedingMethod::Random;
+  else if (seeding != "farthest")
+    throw UsageError("--seeding: expected farthest or random, got '" + seeding + "'");
   if (args.flags.count("no-teleport")) params.teleport_interval = 0;
 
   const LoadedInput in = load_input(args.positional[0]);

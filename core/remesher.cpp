@@ -10,9 +10,12 @@ namespace ff {
 
 const char* stage_name(Stage stage) {
   switch (stage) {
-    case Stage::Seeding: return "seeding";
-    case Stage::Lloyd: return "lloyd";
-    case Stage::Done: return "done";
+    case Stage::Seeding:
+      return "seeding";
+    case Stage::Lloyd:
+      return "lloyd";
+    case Stage::Done:
+      return "done";
   }
   return "unknown";
 }
@@ -35,8 +38,7 @@ void Remesher::validate(const RemeshParams& p) const {
   if (p.panels < 1) throw InputError("the number of panels must be at least 1");
   if (p.lloyd_iterations < 0 || p.lloyd_iterations > kMaxIterations)
     throw InputError("iterations must be between 0 and " + std::to_string(kMaxIterations));
-  if (p.teleport_interval < 0 || p.teleport_moves < 0)
-    throw InputError("teleport interval and moves must be >= 0");
+  if (p.teleport_interval < 0 || p.teleport_moves < 0) throw InputError("teleport interval and moves must be >= 0");
   seeds_per_component(faces_, topology_, p.panels);  // throws on too many / too few panels
 }
 
@@ -50,8 +52,8 @@ void Remesher::start_lloyd() {
 Progress Remesher::step() {
   switch (progress_.stage) {
     case Stage::Seeding: {
-      const std::vector<int> seeds = place_seeds(faces_, topology_, params_.panels, params_.seeding, params_.seed,
-                                                 params_.weights.density);
+      const std::vector<int> seeds =
+          place_seeds(faces_, topology_, params_.panels, params_.seeding, params_.seed, params_.weights.density);
       clustering_ = initial_clustering(metric_, topology_, seeds);
       start_lloyd();
       break;

@@ -5,8 +5,7 @@
 
 namespace ff {
 
-std::vector<ClusterMoments> cluster_moments(const FaceData& faces, const std::vector<int>& labels,
-                                            int num_clusters) {
+std::vector<ClusterMoments> cluster_moments(const FaceData& faces, const std::vector<int>& labels, int num_clusters) {
   std::vector<ClusterMoments> moments(static_cast<size_t>(num_clusters));
   for (int f = 0; f < faces.num_faces(); ++f) {
     const int label = labels[static_cast<size_t>(f)];
@@ -60,8 +59,7 @@ void choose_seeds(const Metric& metric, Clustering& clustering) {
   clustering.seeds = std::move(seeds);
 }
 
-std::vector<std::pair<int, int>> adjacent_cluster_pairs(const MeshTopology& topology,
-                                                        const std::vector<int>& labels) {
+std::vector<std::pair<int, int>> adjacent_cluster_pairs(const MeshTopology& topology, const std::vector<int>& labels) {
   std::vector<std::pair<int, int>> pairs;
   for (const auto& ef : topology.edge_faces) {
     if (ef[1] < 0) continue;

@@ -10,11 +10,11 @@
 namespace ff {
 
 struct Clustering {
-  std::vector<int> labels;    // per face
-  std::vector<Proxy> proxies; // per cluster
-  std::vector<int> seeds;     // per cluster: its seed face
-  std::vector<int> sticky;    // per cluster: iterations left during which its seed stays put
-  double energy = 0.0;        // energy of labels under proxies (local frame), set by refit()
+  std::vector<int> labels;     // per face
+  std::vector<Proxy> proxies;  // per cluster
+  std::vector<int> seeds;      // per cluster: its seed face
+  std::vector<int> sticky;     // per cluster: iterations left during which its seed stays put
+  double energy = 0.0;         // energy of labels under proxies (local frame), set by refit()
 
   int num_clusters() const { return static_cast<int>(proxies.size()); }
 };
@@ -23,8 +23,7 @@ struct Clustering {
 // for a zero-area face) and its density.
 Proxy single_face_proxy(const FaceData& faces, int face, const Vec3& fallback_normal);
 
-std::vector<ClusterMoments> cluster_moments(const FaceData& faces, const std::vector<int>& labels,
-                                            int num_clusters);
+std::vector<ClusterMoments> cluster_moments(const FaceData& faces, const std::vector<int>& labels, int num_clusters);
 
 // Refits every proxy to its cluster (Metric::fit), sets clustering.energy and returns the
 // energy by term. Call it whenever labels or the metric changed.
@@ -38,8 +37,7 @@ EnergyTerms clustering_energy(const Metric& metric, const std::vector<ClusterMom
 void choose_seeds(const Metric& metric, Clustering& clustering);
 
 // The clusters adjacent to each other across an edge, as sorted unique pairs (a < b).
-std::vector<std::pair<int, int>> adjacent_cluster_pairs(const MeshTopology& topology,
-                                                        const std::vector<int>& labels);
+std::vector<std::pair<int, int>> adjacent_cluster_pairs(const MeshTopology& topology, const std::vector<int>& labels);
 
 // True when every cluster is non-empty and edge-connected (for tests and debug checks).
 bool clusters_are_contiguous(const MeshTopology& topology, const std::vector<int>& labels, int num_clusters);

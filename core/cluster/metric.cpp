@@ -145,8 +145,8 @@ Proxy Metric::fit(const ClusterMoments& m, const Proxy& fallback) const {
     normal = minimize_quadratic_on_sphere(weights_.l2 * inv_d2 * cov, weights_.l21 * mean_normal);
   } else {
     // Euclidean only: the normal plays no part in the cost; keep the plane meaningful.
-    normal = mean_normal.norm() > 0.0 ? Vec3(mean_normal.normalized())
-                                      : minimize_quadratic_on_sphere(cov, Vec3::Zero());
+    normal =
+        mean_normal.norm() > 0.0 ? Vec3(mean_normal.normalized()) : minimize_quadratic_on_sphere(cov, Vec3::Zero());
   }
   if (normal.dot(mean_normal) < 0.0) normal = -normal;
   p.normal = normal;

@@ -36,11 +36,11 @@ struct Proxy {
 // Additive sufficient statistics of a set of faces.
 struct ClusterMoments {
   double area = 0.0;
-  Vec3 first = Vec3::Zero();             // sum a c  (= integral of p dA)
-  double centroid_sq = 0.0;              // sum a |c|^2
+  Vec3 first = Vec3::Zero();                         // sum a c  (= integral of p dA)
+  double centroid_sq = 0.0;                          // sum a |c|^2
   Eigen::Matrix3d second = Eigen::Matrix3d::Zero();  // integral of p p^T dA
-  Vec3 normal_sum = Vec3::Zero();        // sum a n
-  double density_area = 0.0;             // sum a rho_f
+  Vec3 normal_sum = Vec3::Zero();                    // sum a n
+  double density_area = 0.0;                         // sum a rho_f
 
   void add_face(const FaceData& faces, int f);
   void add(const ClusterMoments& other);

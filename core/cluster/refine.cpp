@@ -9,8 +9,8 @@ namespace {
 // Whether face f can leave its cluster without splitting it: its same-cluster edge
 // neighbours must stay connected through same-cluster faces of f's vertex rings (a local,
 // sufficient test).
-bool can_leave(const MeshTopology& topology, const std::vector<int>& labels, int f,
-               const Triangle& corners, std::vector<int>& ring, std::vector<int>& stack) {
+bool can_leave(const MeshTopology& topology, const std::vector<int>& labels, int f, const Triangle& corners,
+               std::vector<int>& ring, std::vector<int>& stack) {
   const int a = labels[static_cast<size_t>(f)];
   int same = 0, first = -1;
   for (int g : topology.face_neighbors[static_cast<size_t>(f)]) {
@@ -23,7 +23,8 @@ bool can_leave(const MeshTopology& topology, const std::vector<int>& labels, int
   if (same == 1) return true;   // a leaf: the rest stays connected through its one neighbour
   ring.clear();
   for (int v : corners) {
-    for (int k = topology.vertex_face_offsets[static_cast<size_t>(v)]; k < topology.vertex_face_offsets[static_cast<size_t>(v) + 1]; ++k) {
+    for (int k = topology.vertex_face_offsets[static_cast<size_t>(v)];
+         k < topology.vertex_face_offsets[static_cast<size_t>(v) + 1]; ++k) {
       const int g = topology.vertex_faces[static_cast<size_t>(k)];
       if (g != f && labels[static_cast<size_t>(g)] == a) ring.push_back(g);
     }

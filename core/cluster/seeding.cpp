@@ -18,7 +18,8 @@ namespace {
 // Faces of each component, in increasing face order.
 std::vector<std::vector<int>> component_faces(const MeshTopology& topology, int faces) {
   std::vector<std::vector<int>> out(static_cast<size_t>(topology.num_components));
-  for (int f = 0; f < faces; ++f) out[static_cast<size_t>(topology.face_component[static_cast<size_t>(f)])].push_back(f);
+  for (int f = 0; f < faces; ++f)
+    out[static_cast<size_t>(topology.face_component[static_cast<size_t>(f)])].push_back(f);
   return out;
 }
 
@@ -142,9 +143,9 @@ std::vector<std::array<double, 3>> dual_edge_lengths(const FaceData& faces, cons
   return hop;
 }
 
-void farthest_seeds(const std::vector<double>& weight, const MeshTopology& topology, const std::vector<std::array<double, 3>>& hop,
-                    const std::vector<int>& candidates, int count, SplitMix64& rng, std::vector<char>& taken,
-                    std::vector<double>& dist, std::vector<int>& seeds) {
+void farthest_seeds(const std::vector<double>& weight, const MeshTopology& topology,
+                    const std::vector<std::array<double, 3>>& hop, const std::vector<int>& candidates, int count,
+                    SplitMix64& rng, std::vector<char>& taken, std::vector<double>& dist, std::vector<int>& seeds) {
   using Item = std::pair<double, int>;  // (distance, face)
   std::vector<int> first;
   random_seeds(weight, candidates, 1, rng, taken, first);
@@ -186,8 +187,8 @@ std::vector<int> seeds_per_component(const FaceData& faces, const MeshTopology& 
   const int components = topology.num_components;
   const int total_faces = faces.num_faces();
   if (n > total_faces) {
-    throw InputError("asked for " + std::to_string(n) + " panels but the mesh has only " +
-                     std::to_string(total_faces) + " triangles; ask for fewer panels or refine the mesh");
+    throw InputError("asked for " + std::to_string(n) + " panels but the mesh has only " + std::to_string(total_faces) +
+                     " triangles; ask for fewer panels or refine the mesh");
   }
   if (n < components) {
     throw InputError("the mesh has " + std::to_string(components) + " disconnected parts but only " +

@@ -46,14 +46,15 @@ ClusterStats cluster_stats(const Metric& metric, const Clustering& c) {
   return s;
 }
 
-std::vector<MergeCandidate> merge_candidates(const Metric& metric, const MeshTopology& topology,
-                                             const Clustering& c, const ClusterStats& s) {
+std::vector<MergeCandidate> merge_candidates(const Metric& metric, const MeshTopology& topology, const Clustering& c,
+                                             const ClusterStats& s) {
   std::vector<MergeCandidate> out;
   for (const auto& [a, b] : adjacent_cluster_pairs(topology, c.labels)) {
     ClusterMoments merged = s.moments[static_cast<size_t>(a)];
     merged.add(s.moments[static_cast<size_t>(b)]);
     const Proxy p = metric.fit(merged, c.proxies[static_cast<size_t>(a)]);
-    out.push_back({metric.energy(merged, p).total() - s.energy[static_cast<size_t>(a)] - s.energy[static_cast<size_t>(b)], a, b});
+    out.push_back(
+        {metric.energy(merged, p).total() - s.energy[static_cast<size_t>(a)] - s.energy[static_cast<size_t>(b)], a, b});
   }
   std::sort(out.begin(), out.end());
   return out;
@@ -79,7 +80,8 @@ void merge_into(const Metric& metric, Clustering& c, ClusterStats& s, std::vecto
 bool split_into(const Metric& metric, Clustering& c, const ClusterStats& s, int w, int id, int sticky_iterations) {
   const int face = s.worst_face[static_cast<size_t>(w)];
   if (face < 0) return false;  // a one-face cluster cannot be split
-  c.proxies[static_cast<size_t>(id)] = single_face_proxy(metric.faces(), face, c.proxies[static_cast<size_t>(w)].normal);
+  c.proxies[static_cast<size_t>(id)] =
+      single_face_proxy(metric.faces(), face, c.proxies[static_cast<size_t>(w)].normal);
   c.seeds[static_cast<size_t>(id)] = face;
   c.sticky[static_cast<size_t>(id)] = sticky_iterations;
   return true;
@@ -105,8 +107,8 @@ int teleport(const Metric& metric, const MeshTopology& topology, Clustering& c, 
   int moves = 0;
   size_t next_merge = 0, next_worst = 0;
   while (moves < options.max_moves) {
-    while (next_worst < worst.size() && (used[static_cast<size_t>(worst[next_worst])] ||
-                                         s.worst_face[static_cast<size_t>(worst[next_worst])] < 0)) {
+    while (next_worst < worst.size() &&
+           (used[static_cast<size_t>(worst[next_worst])] || s.worst_face[static_cast<size_t>(worst[next_worst])] < 0)) {
       ++next_worst;
     }
     if (next_worst == worst.size()) break;
@@ -182,7 +184,8 @@ void remove_clusters(const Metric& metric, const MeshTopology& topology, Cluster
       kept.seeds.push_back(c.seeds[static_cast<size_t>(i)]);
       kept.sticky.push_back(c.sticky[static_cast<size_t>(i)]);
     }
-    for (int i = 0; i < n; ++i) remap[static_cast<size_t>(i)] = compact[static_cast<size_t>(remap[static_cast<size_t>(i)])];
+    for (int i = 0; i < n; ++i)
+      remap[static_cast<size_t>(i)] = compact[static_cast<size_t>(remap[static_cast<size_t>(i)])];
     kept.labels = std::move(c.labels);
     apply_remap(kept, remap);
     c = std::move(kept);

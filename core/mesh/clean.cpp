@@ -59,8 +59,7 @@ FaceFilter filter_faces(const std::vector<Triangle>& tris, int num_vertices) {
     if (!keep[f]) continue;
     Triangle t = tris[f];
     std::sort(t.begin(), t.end());
-    const std::uint64_t key =
-        (static_cast<std::uint64_t>(t[1]) << 32) | static_cast<std::uint64_t>(t[2]);
+    const std::uint64_t key = (static_cast<std::uint64_t>(t[1]) << 32) | static_cast<std::uint64_t>(t[2]);
     keyed[static_cast<size_t>(cursor[static_cast<size_t>(t[0])]++)] = {key, static_cast<int>(f)};
   }
   for (size_t v = 0; v < n; ++v) {
@@ -86,8 +85,7 @@ int count_zero_area(const std::vector<Triangle>& tris, const std::vector<Vec3>& 
     const Vec3& a = positions[static_cast<size_t>(t[0])];
     const Vec3& b = positions[static_cast<size_t>(t[1])];
     const Vec3& c = positions[static_cast<size_t>(t[2])];
-    const double longest2 =
-        std::max({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()});
+    const double longest2 = std::max({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()});
     if ((b - a).cross(c - a).norm() <= 1e-12 * longest2) ++count;
   }
   return count;
@@ -130,8 +128,7 @@ std::vector<int> weld(const TriMesh& input, double tolerance) {
     for (int v : t) ++faces_at[static_cast<size_t>(v)];
   }
   if (!any_weld_touches([&](size_t v) { return faces_at[v] > 1; })) return rep;
-  const std::vector<char> weldable =
-      weldable_vertices(input.triangles, static_cast<int>(rep.size()));
+  const std::vector<char> weldable = weldable_vertices(input.triangles, static_cast<int>(rep.size()));
   if (!any_weld_touches([&](size_t v) { return !weldable[v]; })) return rep;
   return detail::weld_representatives(input.positions, tolerance, weldable);
 }
@@ -150,8 +147,8 @@ int find_root(std::vector<int>& parent, int x) {
 // with the matching corner across each interior edge; a vertex with corners in several
 // sets is non-manifold. Returns how many vertices were split. Edges keep their faces, so
 // `groups` stays valid.
-int split_nonmanifold_vertices(std::vector<Triangle>& tris, const HalfEdgeGroups& groups,
-                               int num_vertices, std::vector<int>& copy_origin) {
+int split_nonmanifold_vertices(std::vector<Triangle>& tris, const HalfEdgeGroups& groups, int num_vertices,
+                               std::vector<int>& copy_origin) {
   const size_t corners = 3 * tris.size();
   std::vector<int> parent(corners);
   std::iota(parent.begin(), parent.end(), 0);
@@ -211,31 +208,26 @@ std::vector<std::string> CleanReport::messages() const {
     out.push_back("welded " + count_of(welded_vertices, "duplicate vertex", "duplicate vertices"));
   }
   if (degenerate_faces_dropped > 0) {
-    out.push_back("dropped " +
-                  count_of(degenerate_faces_dropped, "degenerate face", "degenerate faces") +
+    out.push_back("dropped " + count_of(degenerate_faces_dropped, "degenerate face", "degenerate faces") +
                   " (a corner used twice)");
   }
   if (duplicate_faces_dropped > 0) {
-    out.push_back("dropped " +
-                  count_of(duplicate_faces_dropped, "duplicate face", "duplicate faces"));
+    out.push_back("dropped " + count_of(duplicate_faces_dropped, "duplicate face", "duplicate faces"));
   }
   if (zero_area_faces > 0) {
     out.push_back("kept " + count_of(zero_area_faces, "face", "faces") + " with zero area (" +
                   (zero_area_faces == 1 ? "it carries" : "they carry") + " no weight)");
   }
   if (nonmanifold_vertices_split > 0) {
-    out.push_back(
-        "split " +
-        count_of(nonmanifold_vertices_split, "non-manifold vertex", "non-manifold vertices") +
-        " where parts touched at a single point");
+    out.push_back("split " + count_of(nonmanifold_vertices_split, "non-manifold vertex", "non-manifold vertices") +
+                  " where parts touched at a single point");
   }
   if (faces_flipped > 0) {
     out.push_back("flipped " + count_of(faces_flipped, "face", "faces") +
                   " to make the orientation consistent (closed parts facing outward)");
   }
   if (unreferenced_vertices_removed > 0) {
-    out.push_back("removed " +
-                  count_of(unreferenced_vertices_removed, "unused vertex", "unused vertices"));
+    out.push_back("removed " + count_of(unreferenced_vertices_removed, "unused vertex", "unused vertices"));
   }
   if (components > 1) {
     out.push_back("the mesh has " + std::to_string(components) + " disconnected parts");
@@ -270,8 +262,8 @@ CleanMesh clean_mesh(const TriMesh& input, const CleanOptions& options) {
   report.degenerate_faces_dropped = filter.degenerate;
   report.duplicate_faces_dropped = filter.duplicate;
   if (filter.kept.empty()) {
-    throw InputError("no usable faces left after clean-up (all " +
-                     std::to_string(report.input_faces) + " faces were degenerate)");
+    throw InputError("no usable faces left after clean-up (all " + std::to_string(report.input_faces) +
+                     " faces were degenerate)");
   }
   std::vector<Triangle> tris(filter.kept.size());
   for (size_t k = 0; k < tris.size(); ++k) tris[k] = welded[static_cast<size_t>(filter.kept[k])];
@@ -288,8 +280,7 @@ CleanMesh clean_mesh(const TriMesh& input, const CleanOptions& options) {
   // after renumbering is the same, and builds the positions once.
   const size_t total = static_cast<size_t>(n) + copy_origin.size();
   const auto origin = [&](size_t v) {
-    return v < static_cast<size_t>(n) ? static_cast<int>(v)
-                                      : copy_origin[v - static_cast<size_t>(n)];
+    return v < static_cast<size_t>(n) ? static_cast<int>(v) : copy_origin[v - static_cast<size_t>(n)];
   };
   std::vector<int> new_index(total, -1);
   for (const Triangle& t : tris) {
@@ -300,8 +291,7 @@ CleanMesh clean_mesh(const TriMesh& input, const CleanOptions& options) {
   for (size_t v = 0; v < total; ++v) {
     if (new_index[v] < 0) {
       // Only input vertices can be unreferenced (a copy exists because a face uses it).
-      report.unreferenced_vertices_removed +=
-          v < static_cast<size_t>(n) && rep[v] == static_cast<int>(v) ? 1 : 0;
+      report.unreferenced_vertices_removed += v < static_cast<size_t>(n) && rep[v] == static_cast<int>(v) ? 1 : 0;
       continue;
     }
     new_index[v] = static_cast<int>(vertex_name.size());
@@ -316,8 +306,8 @@ CleanMesh clean_mesh(const TriMesh& input, const CleanOptions& options) {
   }
   out.mesh.triangles = std::move(tris);
 
-  const detail::OrientResult orient = detail::orient_faces(
-      out.mesh.triangles, groups, out.mesh.positions, vertex_name, options.orient_closed_outward);
+  const detail::OrientResult orient =
+      detail::orient_faces(out.mesh.triangles, groups, out.mesh.positions, vertex_name, options.orient_closed_outward);
   report.faces_flipped = orient.faces_flipped;
   report.components = orient.components;
 

@@ -24,12 +24,12 @@ struct CleanOptions {
 struct CleanReport {
   int input_vertices = 0;
   int input_faces = 0;
-  int welded_vertices = 0;          // vertices merged into another one
-  int degenerate_faces_dropped = 0; // faces with a repeated vertex after welding
-  int duplicate_faces_dropped = 0;  // faces with the same vertex set as an earlier face
-  int zero_area_faces = 0;          // kept (they carry no weight), counted for the report
+  int welded_vertices = 0;           // vertices merged into another one
+  int degenerate_faces_dropped = 0;  // faces with a repeated vertex after welding
+  int duplicate_faces_dropped = 0;   // faces with the same vertex set as an earlier face
+  int zero_area_faces = 0;           // kept (they carry no weight), counted for the report
   int nonmanifold_vertices_split = 0;
-  int faces_flipped = 0;            // to make orientation consistent
+  int faces_flipped = 0;  // to make orientation consistent
   int unreferenced_vertices_removed = 0;
   int components = 0;
 

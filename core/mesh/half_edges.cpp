@@ -21,12 +21,10 @@ std::string format_number(double x) {
 }  // namespace
 
 std::string format_point(const Vec3& p) {
-  return "(" + format_number(p.x()) + ", " + format_number(p.y()) + ", " + format_number(p.z()) +
-         ")";
+  return "(" + format_number(p.x()) + ", " + format_number(p.y()) + ", " + format_number(p.z()) + ")";
 }
 
-void require_valid_indices(const std::vector<Triangle>& tris, int num_vertices,
-                           bool require_distinct) {
+void require_valid_indices(const std::vector<Triangle>& tris, int num_vertices, bool require_distinct) {
   // Half-edge ids are ints.
   if (tris.size() > static_cast<size_t>(std::numeric_limits<int>::max() / 3)) {
     throw InputError("the mesh has too many faces (" + std::to_string(tris.size()) + ")");
@@ -36,8 +34,7 @@ void require_valid_indices(const std::vector<Triangle>& tris, int num_vertices,
     for (int v : t) {
       if (v < 0 || v >= num_vertices) {
         throw InputError("face " + std::to_string(f) + " refers to vertex " + std::to_string(v) +
-                         ", but the mesh has only " + std::to_string(num_vertices) +
-                         " vertices (numbered from 0)");
+                         ", but the mesh has only " + std::to_string(num_vertices) + " vertices (numbered from 0)");
       }
     }
     if (require_distinct && (t[0] == t[1] || t[1] == t[2] || t[0] == t[2])) {
@@ -93,8 +90,7 @@ HalfEdgeGroups group_half_edges(const std::vector<Triangle>& tris, int num_verti
 }
 
 void require_edge_manifold(const HalfEdgeGroups& groups, const std::vector<Triangle>& tris,
-                           const std::vector<Vec3>& positions,
-                           const std::vector<int>& vertex_name) {
+                           const std::vector<Vec3>& positions, const std::vector<int>& vertex_name) {
   int first = -1, count = 0;
   for (int g = 0; g < groups.num_groups(); ++g) {
     if (groups.group_size(g) < 3) continue;
@@ -110,12 +106,10 @@ void require_edge_manifold(const HalfEdgeGroups& groups, const std::vector<Trian
     return std::to_string(vertex_name.empty() ? v : vertex_name[static_cast<size_t>(v)]);
   };
   const Vec3 mid = 0.5 * (positions[static_cast<size_t>(a)] + positions[static_cast<size_t>(b)]);
-  std::string message = "non-manifold edge between vertices " + name(a) + " and " + name(b) +
-                        " at " + format_point(mid) + ": shared by " +
-                        std::to_string(groups.group_size(first)) + " faces";
+  std::string message = "non-manifold edge between vertices " + name(a) + " and " + name(b) + " at " +
+                        format_point(mid) + ": shared by " + std::to_string(groups.group_size(first)) + " faces";
   if (count > 1) {
-    message += " (and " + std::to_string(count - 1) + " more non-manifold edge" +
-               (count > 2 ? "s" : "") + ")";
+    message += " (and " + std::to_string(count - 1) + " more non-manifold edge" + (count > 2 ? "s" : "") + ")";
   }
   throw InputError(message);
 }

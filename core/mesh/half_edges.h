@@ -27,13 +27,9 @@ struct HalfEdgeGroups {
   std::vector<int> edge_of;      // half-edge -> group
 
   int num_groups() const { return static_cast<int>(group_start.size()) - 1; }
-  int group_size(int g) const {
-    return group_start[static_cast<size_t>(g) + 1] - group_start[static_cast<size_t>(g)];
-  }
+  int group_size(int g) const { return group_start[static_cast<size_t>(g) + 1] - group_start[static_cast<size_t>(g)]; }
   int first(int g) const { return order[static_cast<size_t>(group_start[static_cast<size_t>(g)])]; }
-  int second(int g) const {
-    return order[static_cast<size_t>(group_start[static_cast<size_t>(g)]) + 1];
-  }
+  int second(int g) const { return order[static_cast<size_t>(group_start[static_cast<size_t>(g)]) + 1]; }
 };
 
 // O(m + n): counting sort by the smaller vertex, then a small sort per vertex.
@@ -43,13 +39,11 @@ HalfEdgeGroups group_half_edges(const std::vector<Triangle>& tris, int num_verti
 // how many more there are. vertex_name maps a vertex to the number shown to the user
 // (empty: the index itself).
 void require_edge_manifold(const HalfEdgeGroups& groups, const std::vector<Triangle>& tris,
-                           const std::vector<Vec3>& positions,
-                           const std::vector<int>& vertex_name = {});
+                           const std::vector<Vec3>& positions, const std::vector<int>& vertex_name = {});
 
 // Throws InputError for an index outside [0, num_vertices) (and, when require_distinct,
 // for a triangle with a repeated vertex).
-void require_valid_indices(const std::vector<Triangle>& tris, int num_vertices,
-                           bool require_distinct);
+void require_valid_indices(const std::vector<Triangle>& tris, int num_vertices, bool require_distinct);
 
 // "(x, y, z)" with six significant digits; non-finite values as nan / inf / -inf.
 std::string format_point(const Vec3& p);

@@ -150,8 +150,8 @@ Vec3 newell_normal(const std::vector<Vec3>& positions, const int* polygon, size_
   for (size_t i = 0; i < count; ++i) {
     const Vec3& a = positions[static_cast<size_t>(polygon[i])];
     const Vec3& b = positions[static_cast<size_t>(polygon[(i + 1) % count])];
-    normal += Vec3((a.y() - b.y()) * (a.z() + b.z()), (a.z() - b.z()) * (a.x() + b.x()),
-                   (a.x() - b.x()) * (a.y() + b.y()));
+    normal +=
+        Vec3((a.y() - b.y()) * (a.z() + b.z()), (a.z() - b.z()) * (a.x() + b.x()), (a.x() - b.x()) * (a.y() + b.y()));
   }
   return normal;
 }
@@ -166,9 +166,7 @@ void triangulate_quad(const std::vector<Vec3>& positions, const int* q, const Ve
   auto p = [&](int i) -> const Vec3& { return positions[static_cast<size_t>(q[i])]; };
   // A split is valid when both triangles face like the quad (false only for the diagonal
   // that runs outside a non-convex quad).
-  auto faces_up = [&](int a, int b, int c) {
-    return (p(b) - p(a)).cross(p(c) - p(a)).dot(normal) >= 0.0;
-  };
+  auto faces_up = [&](int a, int b, int c) { return (p(b) - p(a)).cross(p(c) - p(a)).dot(normal) >= 0.0; };
   const bool valid02 = faces_up(0, 1, 2) && faces_up(0, 2, 3);
   const bool valid13 = faces_up(1, 2, 3) && faces_up(1, 3, 0);
   bool use02 = (p(0) - p(2)).squaredNorm() <= (p(1) - p(3)).squaredNorm();
@@ -187,8 +185,8 @@ void triangulate_quad(const std::vector<Vec3>& positions, const int* q, const Ve
 // runs counter-clockwise there). Only reflex vertices can lie inside an ear, so convex
 // polygons cost O(n). A work budget linear in n bounds hostile inputs; when it runs out or
 // no ear is left (self-intersecting polygon), the rest becomes a fan.
-void ear_clip(const std::vector<Vec3>& positions, const int* polygon, size_t count,
-              const Vec3& normal, std::vector<Triangle>& out) {
+void ear_clip(const std::vector<Vec3>& positions, const int* polygon, size_t count, const Vec3& normal,
+              std::vector<Triangle>& out) {
   const Vec3 n = normal.normalized();
   const Vec3 u = n.unitOrthogonal();
   const Vec3 v = n.cross(u);
@@ -290,8 +288,7 @@ RawMesh build_raw_mesh(std::vector<Vec3> positions, const PolygonList& polygons)
   raw.source_polygon.reserve(polygons.indices.size() - 2 * count);
   for (size_t p = 0; p < count; ++p) {
     const size_t begin = polygons.starts[p];
-    triangulate_polygon(positions, polygons.indices.data() + begin, polygons.starts[p + 1] - begin,
-                        raw.mesh.triangles);
+    triangulate_polygon(positions, polygons.indices.data() + begin, polygons.starts[p + 1] - begin, raw.mesh.triangles);
     raw.source_polygon.resize(raw.mesh.triangles.size(), static_cast<int>(p));
   }
   raw.mesh.positions = std::move(positions);

@@ -29,9 +29,7 @@ std::string_view skip_bom(std::string_view data);
 // The checks every text reader starts with: empty, then binary garbage.
 void check_text(std::string_view format, std::string_view data);
 
-inline bool is_space(char c) {
-  return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v';
-}
+inline bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
 
 // Iterates the lines of a buffer ('\n' or "\r\n"; the '\r' is left for the tokenizer,
 // which treats it as space), counting them from 1.
@@ -105,8 +103,8 @@ RawMesh build_raw_mesh(std::vector<Vec3> positions, const PolygonList& polygons)
 
 // Little-endian loads; `p` must have the bytes available (callers check sizes first).
 inline uint32_t load_u32_le(const unsigned char* p) {
-  return static_cast<uint32_t>(p[0]) | (static_cast<uint32_t>(p[1]) << 8) |
-         (static_cast<uint32_t>(p[2]) << 16) | (static_cast<uint32_t>(p[3]) << 24);
+  return static_cast<uint32_t>(p[0]) | (static_cast<uint32_t>(p[1]) << 8) | (static_cast<uint32_t>(p[2]) << 16) |
+         (static_cast<uint32_t>(p[3]) << 24);
 }
 inline uint64_t load_u64_le(const unsigned char* p) {
   return static_cast<uint64_t>(load_u32_le(p)) | (static_cast<uint64_t>(load_u32_le(p + 4)) << 32);

@@ -7,9 +7,8 @@
 
 namespace ff::detail {
 
-OrientResult orient_faces(std::vector<Triangle>& tris, const HalfEdgeGroups& groups,
-                          const std::vector<Vec3>& positions, const std::vector<int>& vertex_name,
-                          bool closed_outward) {
+OrientResult orient_faces(std::vector<Triangle>& tris, const HalfEdgeGroups& groups, const std::vector<Vec3>& positions,
+                          const std::vector<int>& vertex_name, bool closed_outward) {
   const size_t m = tris.size();
   // flip[f]: -1 unvisited, else 1 when f must be flipped relative to its component's seed.
   std::vector<signed char> flip(m, -1);
@@ -39,8 +38,7 @@ OrientResult orient_faces(std::vector<Triangle>& tris, const HalfEdgeGroups& gro
         const auto o = static_cast<size_t>(twin / 3);
         // Agreeing neighbours run the shared edge in opposite directions.
         const bool same_direction = tail_of(tris, h) == tail_of(tris, twin);
-        const auto need =
-            static_cast<signed char>(flip[static_cast<size_t>(f)] ^ (same_direction ? 1 : 0));
+        const auto need = static_cast<signed char>(flip[static_cast<size_t>(f)] ^ (same_direction ? 1 : 0));
         if (flip[o] < 0) {
           flip[o] = need;
           component[o] = c;
@@ -58,11 +56,8 @@ OrientResult orient_faces(std::vector<Triangle>& tris, const HalfEdgeGroups& gro
   // Which of its two consistent orientations each component keeps. One pass in face
   // order (not BFS order) to stay cache-friendly on large meshes.
   const size_t num_components = seed_face.size();
-  const auto corner = [&](size_t f, size_t i) -> const Vec3& {
-    return positions[static_cast<size_t>(tris[f][i])];
-  };
-  std::vector<double> volume(num_components, 0.0), area_kept(num_components, 0.0),
-      area_flipped(num_components, 0.0);
+  const auto corner = [&](size_t f, size_t i) -> const Vec3& { return positions[static_cast<size_t>(tris[f][i])]; };
+  std::vector<double> volume(num_components, 0.0), area_kept(num_components, 0.0), area_flipped(num_components, 0.0);
   std::vector<int> faces(num_components, 0), faces_flipped(num_components, 0);
   for (size_t f = 0; f < m; ++f) {
     const auto c = static_cast<size_t>(component[f]);

@@ -20,8 +20,7 @@ struct OrientResult {
 // list at most two half-edges per edge; a flip renumbers a face's half-edges, so they no
 // longer fit afterwards. Throws InputError when a component is not orientable, naming a
 // vertex there through vertex_name.
-OrientResult orient_faces(std::vector<Triangle>& tris, const HalfEdgeGroups& groups,
-                          const std::vector<Vec3>& positions, const std::vector<int>& vertex_name,
-                          bool closed_outward);
+OrientResult orient_faces(std::vector<Triangle>& tris, const HalfEdgeGroups& groups, const std::vector<Vec3>& positions,
+                          const std::vector<int>& vertex_name, bool closed_outward);
 
 }  // namespace ff::detail

@@ -48,8 +48,7 @@ bool is_off_keyword(std::string_view key) {
 
 // The first statement of an OBJ file is one of these (after comments and blank lines).
 bool is_obj_keyword(std::string_view key) {
-  static constexpr std::string_view kKeys[] = {"v", "vt", "vn",     "vp",     "f", "o",
-                                               "g", "s",  "mtllib", "usemtl", "l"};
+  static constexpr std::string_view kKeys[] = {"v", "vt", "vn", "vp", "f", "o", "g", "s", "mtllib", "usemtl", "l"};
   for (const std::string_view k : kKeys)
     if (key == k) return true;
   return false;
@@ -92,8 +91,7 @@ bool from_content(std::string_view data, MeshFormat& format) {
 MeshFormat detect_format(std::string_view name, std::string_view data) {
   MeshFormat format = MeshFormat::Obj;
   if (from_extension(name, format) || from_content(data, format)) return format;
-  throw InputError("unrecognised mesh format for " + quote(name, 400) +
-                   ": expected .obj, .off, .stl or .ply");
+  throw InputError("unrecognised mesh format for " + quote(name, 400) + ": expected .obj, .off, .stl or .ply");
 }
 
 RawMesh read_mesh(std::string_view data, std::string_view name) {

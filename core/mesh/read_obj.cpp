@@ -96,13 +96,11 @@ class ObjParser {
     double xyz[3];
     for (int k = 0; k < 3; ++k) {
       const std::string_view token = next_token(rest);
-      if (token.empty())
-        fail_line(kFormat, line_no, "vertex has " + std::to_string(k) + " coordinates, needs 3");
+      if (token.empty()) fail_line(kFormat, line_no, "vertex has " + std::to_string(k) + " coordinates, needs 3");
       xyz[k] = coordinate_or_fail(kFormat, line_no, token);
     }
     // A 4th value (w) or vertex colours may follow; they do not change the position.
-    if (positions_.size() >= static_cast<size_t>(INT_MAX))
-      fail_line(kFormat, line_no, "too many vertices");
+    if (positions_.size() >= static_cast<size_t>(INT_MAX)) fail_line(kFormat, line_no, "too many vertices");
     positions_.emplace_back(xyz[0], xyz[1], xyz[2]);
   }
 
@@ -112,18 +110,15 @@ class ObjParser {
     for (std::string_view token = next_token(rest); !token.empty(); token = next_token(rest)) {
       const std::string_view part = vertex_part(token);
       int64_t index = 0;
-      if (part.empty() || !parse_int(part, index))
-        fail_line(kFormat, line_no, "malformed face vertex " + quote(token));
-      if (index == 0)
-        fail_line(kFormat, line_no, "face index 0 is invalid (OBJ indices start at 1)");
+      if (part.empty() || !parse_int(part, index)) fail_line(kFormat, line_no, "malformed face vertex " + quote(token));
+      if (index == 0) fail_line(kFormat, line_no, "face index 0 is invalid (OBJ indices start at 1)");
       int64_t resolved = 0;
       if (index < 0) {
         // Relative: -1 is the vertex defined last before this line.
         resolved = defined + index;
         if (resolved < 0)
           fail_line(kFormat, line_no,
-                    out_of_range(index, "only " + std::to_string(defined) +
-                                            " vertices are defined before this line"));
+                    out_of_range(index, "only " + std::to_string(defined) + " vertices are defined before this line"));
       } else {
         resolved = index - 1;
         if (index > INT_MAX) fail_line(kFormat, line_no, out_of_range(index, file_has()));
@@ -134,8 +129,7 @@ class ObjParser {
       ++corners;
     }
     if (corners < 3) {
-      fail_line(kFormat, line_no,
-                "face has " + std::to_string(corners) + " vertices, needs at least 3");
+      fail_line(kFormat, line_no, "face has " + std::to_string(corners) + " vertices, needs at least 3");
     }
     polygons_.end_polygon();
   }
@@ -143,9 +137,7 @@ class ObjParser {
   static std::string out_of_range(int64_t index, const std::string& why) {
     return "face index " + std::to_string(index) + " is out of range (" + why + ")";
   }
-  std::string file_has() const {
-    return "file has " + std::to_string(positions_.size()) + " vertices";
-  }
+  std::string file_has() const { return "file has " + std::to_string(positions_.size()) + " vertices"; }
 
   std::vector<Vec3> positions_;
   PolygonList polygons_;

@@ -58,9 +58,9 @@ class OffParser {
   size_t line_no() const { return lines_.line_number(); }
 
   [[noreturn]] void truncated(int64_t got, int64_t announced, const char* what) const {
-    fail_line(kFormat, line_no(),
-              "file ends after " + std::to_string(got) + " of " + std::to_string(announced) + " " +
-                  what + " (truncated?)");
+    fail_line(
+        kFormat, line_no(),
+        "file ends after " + std::to_string(got) + " of " + std::to_string(announced) + " " + what + " (truncated?)");
   }
 
   void header(std::string_view line) {
@@ -70,8 +70,7 @@ class OffParser {
     // Prefixes: ST (texture), C (colour), N (normal): extra vertex columns we skip.
     // 4 and n change the dimension, which we cannot read as 3D positions.
     for (const char c : key.substr(0, key.size() - 3)) {
-      if (c == '4' || c == 'n')
-        fail_line(kFormat, line_no(), quote(key) + " (not 3D) is not supported");
+      if (c == '4' || c == 'n') fail_line(kFormat, line_no(), quote(key) + " (not 3D) is not supported");
       if (c != 'S' && c != 'T' && c != 'C' && c != 'N')
         fail_line(kFormat, line_no(), "expected 'OFF' header, found " + quote(key));
     }
@@ -79,21 +78,17 @@ class OffParser {
     std::string_view probe = counts;
     const std::string_view first = next_token(probe);
     if (first == "BINARY") fail_line(kFormat, line_no(), "binary OFF is not supported");
-    if (first.empty() && !next_content(counts))
-      fail(kFormat, "file ends after the header (no vertex and face counts)");
+    if (first.empty() && !next_content(counts)) fail(kFormat, "file ends after the header (no vertex and face counts)");
 
     int64_t values[3] = {0, 0, 0};
     int n = 0;
-    for (std::string_view token = next_token(counts); !token.empty() && n < 3;
-         token = next_token(counts), ++n) {
-      if (!parse_int(token, values[n]))
-        fail_line(kFormat, line_no(), "cannot parse count " + quote(token));
+    for (std::string_view token = next_token(counts); !token.empty() && n < 3; token = next_token(counts), ++n) {
+      if (!parse_int(token, values[n])) fail_line(kFormat, line_no(), "cannot parse count " + quote(token));
     }
     if (n < 2) fail_line(kFormat, line_no(), "expected vertex and face counts");
     num_vertices_ = values[0];
     num_faces_ = values[1];
-    if (num_vertices_ < 0 || num_faces_ < 0)
-      fail_line(kFormat, line_no(), "negative vertex or face count");
+    if (num_vertices_ < 0 || num_faces_ < 0) fail_line(kFormat, line_no(), "negative vertex or face count");
     if (num_vertices_ > INT_MAX || num_faces_ > INT_MAX)
       fail_line(kFormat, line_no(), "vertex or face count is too large");
     if (num_faces_ == 0) fail(kFormat, "file has no faces");
@@ -103,9 +98,8 @@ class OffParser {
     const int64_t needed = 6 * num_vertices_ + 2 * num_faces_ - 1;
     if (needed > static_cast<int64_t>(lines_.remaining())) {
       fail_line(kFormat, line_no(),
-                "header announces " + std::to_string(num_vertices_) + " vertices and " +
-                    std::to_string(num_faces_) + " faces but only " +
-                    std::to_string(lines_.remaining()) + " bytes follow (truncated?)");
+                "header announces " + std::to_string(num_vertices_) + " vertices and " + std::to_string(num_faces_) +
+                    " faces but only " + std::to_string(lines_.remaining()) + " bytes follow (truncated?)");
     }
   }
 
@@ -113,8 +107,7 @@ class OffParser {
     double xyz[3];
     for (int k = 0; k < 3; ++k) {
       const std::string_view token = next_token(line);
-      if (token.empty())
-        fail_line(kFormat, line_no(), "vertex has " + std::to_string(k) + " coordinates, needs 3");
+      if (token.empty()) fail_line(kFormat, line_no(), "vertex has " + std::to_string(k) + " coordinates, needs 3");
       xyz[k] = coordinate_or_fail(kFormat, line_no(), token);
     }
     return Vec3(xyz[0], xyz[1], xyz[2]);
@@ -125,19 +118,15 @@ class OffParser {
     int64_t count = 0;
     if (!parse_int(count_token, count))
       fail_line(kFormat, line_no(), "cannot parse face vertex count " + quote(count_token));
-    if (count < 3)
-      fail_line(kFormat, line_no(),
-                "face has " + std::to_string(count) + " vertices, needs at least 3");
+    if (count < 3) fail_line(kFormat, line_no(), "face has " + std::to_string(count) + " vertices, needs at least 3");
     for (int64_t k = 0; k < count; ++k) {
       const std::string_view token = next_token(line);
       int64_t index = 0;
       if (token.empty()) {
-        fail_line(
-            kFormat, line_no(),
-            "face announces " + std::to_string(count) + " vertices but lists " + std::to_string(k));
+        fail_line(kFormat, line_no(),
+                  "face announces " + std::to_string(count) + " vertices but lists " + std::to_string(k));
       }
-      if (!parse_int(token, index))
-        fail_line(kFormat, line_no(), "malformed face index " + quote(token));
+      if (!parse_int(token, index)) fail_line(kFormat, line_no(), "malformed face index " + quote(token));
       if (index < 0 || index >= num_vertices_) {
         fail_line(kFormat, line_no(),
                   "face index " + std::to_string(index) + " is out of range (file has " +

@@ -66,9 +66,7 @@ double load_double(Scalar type, const unsigned char* p) {
 }
 
 // Integer types only (checked in the header); exact for all of them.
-int64_t load_int(Scalar type, const unsigned char* p) {
-  return static_cast<int64_t>(load_double(type, p));
-}
+int64_t load_int(Scalar type, const unsigned char* p) { return static_cast<int64_t>(load_double(type, p)); }
 
 struct Property {
   std::string name;
@@ -97,8 +95,7 @@ Header parse_header(std::string_view data) {
   std::string_view line;
   lines.next(line);
   std::string_view magic = line;
-  if (next_token(magic) != "ply" || !next_token(magic).empty())
-    fail(kFormat, "file does not start with 'ply'");
+  if (next_token(magic) != "ply" || !next_token(magic).empty()) fail(kFormat, "file does not start with 'ply'");
   Header header;
   bool have_format = false;
   while (lines.next(line)) {
@@ -131,12 +128,10 @@ Header parse_header(std::string_view data) {
         property.is_list = true;
         const std::string_view count_type = next_token(line);
         if (!scalar_from_name(count_type, property.count_type) || !is_integer(property.count_type))
-          fail_line(kFormat, n,
-                    "list count type must be an integer type, not " + quote(count_type));
+          fail_line(kFormat, n, "list count type must be an integer type, not " + quote(count_type));
         type = next_token(line);
       }
-      if (!scalar_from_name(type, property.type))
-        fail_line(kFormat, n, "unknown property type " + quote(type));
+      if (!scalar_from_name(type, property.type)) fail_line(kFormat, n, "unknown property type " + quote(type));
       property.name = std::string(next_token(line));
       if (property.name.empty()) fail_line(kFormat, n, "property has no name");
       header.elements.back().properties.push_back(std::move(property));
@@ -163,15 +158,13 @@ void assign_roles(Header& header) {
           }
         }
       }
-      if (!found[0] || !found[1] || !found[2])
-        fail(kFormat, "vertex element lacks an x, y or z property");
+      if (!found[0] || !found[1] || !found[2]) fail(kFormat, "vertex element lacks an x, y or z property");
     } else if (element.name == "face") {
       if (header.face_element >= 0) fail(kFormat, "header has two 'face' elements");
       header.face_element = static_cast<int>(e);
       bool has_list = false;
       for (Property& property : element.properties) {
-        if (property.is_list &&
-            (property.name == "vertex_indices" || property.name == "vertex_index")) {
+        if (property.is_list && (property.name == "vertex_indices" || property.name == "vertex_index")) {
           if (!is_integer(property.type)) fail(kFormat, "face vertex indices must be integers");
           property.role = 3;
           has_list = true;
@@ -186,8 +179,7 @@ void assign_roles(Header& header) {
   const Element& vertices = header.elements[static_cast<size_t>(header.vertex_element)];
   const Element& faces = header.elements[static_cast<size_t>(header.face_element)];
   if (faces.count == 0) fail(kFormat, "file has no faces");
-  if (vertices.count > INT_MAX || faces.count > INT_MAX)
-    fail(kFormat, "vertex or face count is too large");
+  if (vertices.count > INT_MAX || faces.count > INT_MAX) fail(kFormat, "vertex or face count is too large");
 }
 
 // Before reserving anything: every record takes at least some bytes (binary: its scalars
@@ -199,8 +191,7 @@ void check_sizes(const Header& header, size_t body_bytes) {
   for (const Element& element : header.elements) {
     uint64_t record = 0;
     for (const Property& property : element.properties)
-      record +=
-          header.binary ? scalar_size(property.is_list ? property.count_type : property.type) : 2;
+      record += header.binary ? scalar_size(property.is_list ? property.count_type : property.type) : 2;
     if (record == 0 || element.count == 0) continue;
     if (static_cast<uint64_t>(element.count) > available / record ||
         (total += static_cast<uint64_t>(element.count) * record) > available) {
@@ -221,9 +212,7 @@ struct Output {
 class BinaryBody {
  public:
   BinaryBody(std::string_view body, Output& out)
-      : p_(reinterpret_cast<const unsigned char*>(body.data())),
-        end_(p_ + body.size()),
-        out_(out) {}
+      : p_(reinterpret_cast<const unsigned char*>(body.data())), end_(p_ + body.size()), out_(out) {}
 
   void read(const Element& element) {
     element_ = &element;
@@ -247,8 +236,7 @@ class BinaryBody {
           if (property.role >= 0) xyz[property.role] = load_double(property.type, q);
           continue;
         }
-        const int64_t count =
-            load_int(property.count_type, take_bytes(scalar_size(property.count_type)));
+        const int64_t count = load_int(property.count_type, take_bytes(scalar_size(property.count_type)));
         if (count < 0) fail(kFormat, where() + " has a negative list length");
         if (property.role == 3) {
           face(property, count);
@@ -268,24 +256,21 @@ class BinaryBody {
   std::string where() const { return element_->name + " " + std::to_string(record_); }
 
   const unsigned char* take_bytes(uint64_t n) {
-    if (n > static_cast<uint64_t>(end_ - p_))
-      fail(kFormat, "binary data ends inside " + where() + " (truncated?)");
+    if (n > static_cast<uint64_t>(end_ - p_)) fail(kFormat, "binary data ends inside " + where() + " (truncated?)");
     const unsigned char* q = p_;
     p_ += n;
     return q;
   }
 
   void face(const Property& property, int64_t count) {
-    if (count < 3)
-      fail(kFormat, where() + " has " + std::to_string(count) + " vertices, needs at least 3");
+    if (count < 3) fail(kFormat, where() + " has " + std::to_string(count) + " vertices, needs at least 3");
     const size_t size = scalar_size(property.type);
     const unsigned char* q = take_bytes(static_cast<uint64_t>(count) * size);
     for (int64_t k = 0; k < count; ++k, q += size) {
       const int64_t index = load_int(property.type, q);
       if (index < 0 || index >= out_.num_vertices) {
-        fail(kFormat, where() + ": vertex index " + std::to_string(index) +
-                          " is out of range (file has " + std::to_string(out_.num_vertices) +
-                          " vertices)");
+        fail(kFormat, where() + ": vertex index " + std::to_string(index) + " is out of range (file has " +
+                          std::to_string(out_.num_vertices) + " vertices)");
       }
       out_.polygons.indices.push_back(static_cast<int>(index));
     }
@@ -302,8 +287,7 @@ class BinaryBody {
 class AsciiBody {
  public:
   // `first_line` is the number of the first body line, for messages.
-  AsciiBody(std::string_view body, size_t first_line, Output& out)
-      : lines_(body), first_line_(first_line), out_(out) {}
+  AsciiBody(std::string_view body, size_t first_line, Output& out) : lines_(body), first_line_(first_line), out_(out) {}
 
   void read(const Element& element) {
     if (element.properties.empty()) return;  // its records are empty
@@ -312,9 +296,8 @@ class AsciiBody {
       do {
         if (!lines_.next(line)) {
           fail_line(kFormat, line_no(),
-                    "file ends after " + std::to_string(record) + " of " +
-                        std::to_string(element.count) + " '" + element.name +
-                        "' records (truncated?)");
+                    "file ends after " + std::to_string(record) + " of " + std::to_string(element.count) + " '" +
+                        element.name + "' records (truncated?)");
         }
       } while (is_blank(line));
       if (element.name == "vertex" || element.name == "face") parse(element, line);
@@ -326,16 +309,14 @@ class AsciiBody {
 
   std::string_view token(std::string_view& line) const {
     const std::string_view t = next_token(line);
-    if (t.empty())
-      fail_line(kFormat, line_no(), "record has fewer values than the header declares");
+    if (t.empty()) fail_line(kFormat, line_no(), "record has fewer values than the header declares");
     return t;
   }
 
   int64_t integer(std::string_view& line) const {
     const std::string_view t = token(line);
     int64_t value = 0;
-    if (!parse_int(t, value))
-      fail_line(kFormat, line_no(), "expected an integer, found " + quote(t));
+    if (!parse_int(t, value)) fail_line(kFormat, line_no(), "expected an integer, found " + quote(t));
     return value;
   }
 
@@ -353,9 +334,7 @@ class AsciiBody {
         for (int64_t k = 0; k < count; ++k) token(line);
         continue;
       }
-      if (count < 3)
-        fail_line(kFormat, line_no(),
-                  "face has " + std::to_string(count) + " vertices, needs at least 3");
+      if (count < 3) fail_line(kFormat, line_no(), "face has " + std::to_string(count) + " vertices, needs at least 3");
       for (int64_t k = 0; k < count; ++k) {
         const int64_t index = integer(line);
         if (index < 0 || index >= out_.num_vertices) {

@@ -21,9 +21,7 @@ constexpr size_t kFacetBytes = 50;   // normal, 3 vertices (12 floats) + uint16 
 bool iequals(std::string_view a, std::string_view b) {
   if (a.size() != b.size()) return false;
   for (size_t i = 0; i < a.size(); ++i) {
-    if (std::tolower(static_cast<unsigned char>(a[i])) !=
-        std::tolower(static_cast<unsigned char>(b[i])))
-      return false;
+    if (std::tolower(static_cast<unsigned char>(a[i])) != std::tolower(static_cast<unsigned char>(b[i]))) return false;
   }
   return true;
 }
@@ -54,12 +52,12 @@ RawMesh read_binary(std::string_view data) {
   const uint64_t count = load_u32_le(bytes + 80);
   const uint64_t expected = kHeaderBytes + kFacetBytes * count;
   if (data.size() < expected) {
-    fail(kFormat, "truncated binary STL: expected " + std::to_string(expected) + " bytes, got " +
-                      std::to_string(data.size()));
+    fail(kFormat,
+         "truncated binary STL: expected " + std::to_string(expected) + " bytes, got " + std::to_string(data.size()));
   }
   if (data.size() > expected) {
-    fail(kFormat, "binary STL size mismatch: expected " + std::to_string(expected) +
-                      " bytes, got " + std::to_string(data.size()));
+    fail(kFormat, "binary STL size mismatch: expected " + std::to_string(expected) + " bytes, got " +
+                      std::to_string(data.size()));
   }
   if (count == 0) fail(kFormat, "file has no triangles");
   if (count > static_cast<uint64_t>(INT32_MAX / 3)) fail(kFormat, "too many triangles");
@@ -71,8 +69,8 @@ RawMesh read_binary(std::string_view data) {
       const unsigned char* p = facet + 12 * (v + 1);  // skip the normal
       const Vec3 position(load_f32_le(p), load_f32_le(p + 4), load_f32_le(p + 8));
       if (!position.allFinite()) {
-        fail(kFormat, "triangle " + std::to_string(f) + " has a non-finite coordinate (byte " +
-                          std::to_string(p - bytes) + ")");
+        fail(kFormat,
+             "triangle " + std::to_string(f) + " has a non-finite coordinate (byte " + std::to_string(p - bytes) + ")");
       }
       positions.push_back(position);
     }
@@ -125,8 +123,7 @@ class AsciiParser {
         if (after.empty()) break;
         // Several solids in one file: read them all as one soup.
         if (!iequals(after, "solid"))
-          fail_line(kFormat, tokens_.line(),
-                    "expected 'solid' after 'endsolid', found " + quote(after));
+          fail_line(kFormat, tokens_.line(), "expected 'solid' after 'endsolid', found " + quote(after));
         tokens_.skip_line();
       } else if (token.empty()) {
         fail_line(kFormat, tokens_.line(), "file ends without 'endsolid' (truncated?)");
@@ -143,8 +140,7 @@ class AsciiParser {
     const std::string_view token = tokens_.next();
     if (token.empty()) fail_line(kFormat, tokens_.line(), "file ends inside a facet (truncated?)");
     if (!iequals(token, word)) {
-      fail_line(kFormat, tokens_.line(),
-                "expected '" + std::string(word) + "', found " + quote(token));
+      fail_line(kFormat, tokens_.line(), "expected '" + std::string(word) + "', found " + quote(token));
     }
   }
 
@@ -169,16 +165,13 @@ class AsciiParser {
     for (int v = 0; v < 3; ++v) {
       expect("vertex");
       double xyz[3];
-      for (int k = 0; k < 3; ++k)
-        xyz[k] = coordinate_or_fail(kFormat, tokens_.line(), number_token());
+      for (int k = 0; k < 3; ++k) xyz[k] = coordinate_or_fail(kFormat, tokens_.line(), number_token());
       positions_.emplace_back(xyz[0], xyz[1], xyz[2]);
     }
     const std::string_view end = tokens_.next();
-    if (iequals(end, "vertex"))
-      fail_line(kFormat, tokens_.line(), "facet has more than 3 vertices");
+    if (iequals(end, "vertex")) fail_line(kFormat, tokens_.line(), "facet has more than 3 vertices");
     if (end.empty()) fail_line(kFormat, tokens_.line(), "file ends inside a facet (truncated?)");
-    if (!iequals(end, "endloop"))
-      fail_line(kFormat, tokens_.line(), "expected 'endloop', found " + quote(end));
+    if (!iequals(end, "endloop")) fail_line(kFormat, tokens_.line(), "expected 'endloop', found " + quote(end));
     expect("endfacet");
     if (positions_.size() > static_cast<size_t>(INT32_MAX) - 3)
       fail_line(kFormat, tokens_.line(), "too many triangles");
@@ -203,8 +196,8 @@ RawMesh read_stl(std::string_view data) {
   }
   if (is_blank(data)) fail(kFormat, "file is empty");
   if (data.size() < kHeaderBytes) {
-    fail(kFormat, "truncated binary STL: expected at least " + std::to_string(kHeaderBytes) +
-                      " bytes, got " + std::to_string(data.size()));
+    fail(kFormat, "truncated binary STL: expected at least " + std::to_string(kHeaderBytes) + " bytes, got " +
+                      std::to_string(data.size()));
   }
   if (!binary_bytes) fail(kFormat, "text file does not start with 'solid' (not an ASCII STL)");
   return read_binary(data);

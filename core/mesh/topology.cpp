@@ -30,9 +30,7 @@ int other_edge_at(const TriMesh& mesh, const MeshTopology& topo, int f, int edge
 // edge_vertices[e][k], found from the faces and independent of their orientation.
 std::vector<std::array<int, 2>> pair_boundary_edges(const TriMesh& mesh, const MeshTopology& topo) {
   std::vector<std::array<int, 2>> partner(topo.edge_vertices.size(), {-1, -1});
-  const auto end_index = [&](int e, int v) {
-    return topo.edge_vertices[static_cast<size_t>(e)][0] == v ? 0 : 1;
-  };
+  const auto end_index = [&](int e, int v) { return topo.edge_vertices[static_cast<size_t>(e)][0] == v ? 0 : 1; };
   const int max_steps = static_cast<int>(topo.face_edges.size()) + 1;
   for (int e = 0; e < topo.num_edges(); ++e) {
     if (!topo.is_boundary_edge(e)) continue;
@@ -155,8 +153,7 @@ MeshTopology build_topology(const TriMesh& mesh) {
     std::vector<int> cursor(topo.vertex_face_offsets.begin(), topo.vertex_face_offsets.end() - 1);
     for (size_t f = 0; f < m; ++f) {
       for (int v : mesh.triangles[f]) {
-        topo.vertex_faces[static_cast<size_t>(cursor[static_cast<size_t>(v)]++)] =
-            static_cast<int>(f);
+        topo.vertex_faces[static_cast<size_t>(cursor[static_cast<size_t>(v)]++)] = static_cast<int>(f);
       }
     }
   }

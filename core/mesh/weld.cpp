@@ -71,8 +71,8 @@ std::vector<int> weld_exact(const std::vector<Vec3>& positions, const std::vecto
     for (size_t v = 0; v < n; ++v) {
       if (!weldable.empty() && !weldable[v]) continue;
       const Vec3& pos = positions[v];
-      entries[cursor[partition_of(hash[v])]++] = {static_cast<std::uint32_t>(hash[v]),
-                                                  static_cast<int>(v), pos.x(), pos.y(), pos.z()};
+      entries[cursor[partition_of(hash[v])]++] = {static_cast<std::uint32_t>(hash[v]), static_cast<int>(v), pos.x(),
+                                                  pos.y(), pos.z()};
     }
   }
 
@@ -112,8 +112,7 @@ class CellLists {
     if (keys_.empty()) return -1;
     for (size_t s = slot_of(c);; s = (s + 1) & (slots_.size() - 1)) {
       if (slots_[s] < 0) return -1;
-      if (same(keys_[static_cast<size_t>(slots_[s])], c))
-        return heads_[static_cast<size_t>(slots_[s])];
+      if (same(keys_[static_cast<size_t>(slots_[s])], c)) return heads_[static_cast<size_t>(slots_[s])];
     }
   }
   void push(const Cell& c, int v, std::vector<int>& next) {
@@ -133,9 +132,7 @@ class CellLists {
   }
 
  private:
-  static bool same(const Cell& a, const Cell& b) {
-    return a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
-  }
+  static bool same(const Cell& a, const Cell& b) { return a[0] == b[0] && a[1] == b[1] && a[2] == b[2]; }
   size_t slot_of(const Cell& c) const {
     std::uint64_t h = 0;
     for (std::int64_t x : c) h = mix((h ^ static_cast<std::uint64_t>(x)) * 0x9e3779b97f4a7c15ull);
@@ -159,8 +156,7 @@ class CellLists {
 // touch. Cells are 8 margins wide, so that is one cell per axis 3 times in 4, and never
 // more than two. Two representatives are more than `tolerance` apart, so a cell holds a
 // bounded number of them.
-std::vector<int> weld_within(const std::vector<Vec3>& positions, double tolerance,
-                             const std::vector<char>& weldable) {
+std::vector<int> weld_within(const std::vector<Vec3>& positions, double tolerance, const std::vector<char>& weldable) {
   const size_t n = positions.size();
   double largest = 0.0;
   for (const Vec3& p : positions) largest = std::max(largest, p.cwiseAbs().maxCoeff());

@@ -11,7 +11,8 @@ TriMesh make_grid_surface(int nu, int nv, const std::function<Vec3(double, doubl
   const int rows = wrap_v ? nv : nv + 1;
   mesh.positions.reserve(static_cast<size_t>(cols) * static_cast<size_t>(rows));
   for (int j = 0; j < rows; ++j) {
-    for (int i = 0; i < cols; ++i) mesh.positions.push_back(map(static_cast<double>(i) / nu, static_cast<double>(j) / nv));
+    for (int i = 0; i < cols; ++i)
+      mesh.positions.push_back(map(static_cast<double>(i) / nu, static_cast<double>(j) / nv));
   }
   const auto id = [&](int i, int j) { return (j % rows) * cols + (i % cols); };
   mesh.triangles.reserve(2 * static_cast<size_t>(nu) * static_cast<size_t>(nv));

@@ -35,7 +35,8 @@ inline ::testing::AssertionResult keeps_invariants(const MeshTopology& topology,
 }
 
 inline std::string test_name(std::string s) {
-  std::replace_if(s.begin(), s.end(), [](char ch) { return !std::isalnum(static_cast<unsigned char>(ch)); }, '_');
+  std::replace_if(
+      s.begin(), s.end(), [](char ch) { return !std::isalnum(static_cast<unsigned char>(ch)); }, '_');
   return s;
 }
 

@@ -62,8 +62,7 @@ inline TriMesh torus(int nu, int nv) {
   for (int j = 0; j < nv; ++j) {
     for (int i = 0; i < nu; ++i) {
       const double u = 2.0 * kPi * i / nu, v = 2.0 * kPi * j / nv;
-      m.positions.emplace_back((3.0 + std::cos(v)) * std::cos(u), (3.0 + std::cos(v)) * std::sin(u),
-                               std::sin(v));
+      m.positions.emplace_back((3.0 + std::cos(v)) * std::cos(u), (3.0 + std::cos(v)) * std::sin(u), std::sin(v));
     }
   }
   const auto id = [nu, nv](int i, int j) { return (j % nv) * nu + i % nu; };
@@ -81,8 +80,7 @@ inline TriMesh torus(int nu, int nv) {
 inline TriMesh cube_soup() {
   const Vec3 c[8] = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0),
                      Vec3(0, 0, 1), Vec3(1, 0, 1), Vec3(1, 1, 1), Vec3(0, 1, 1)};
-  const int quads[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
-                           {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+  const int quads[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
   TriMesh m;
   for (const auto& q : quads) {
     for (const auto& tri : {std::array<int, 3>{q[0], q[1], q[2]}, {q[0], q[2], q[3]}}) {
@@ -100,8 +98,8 @@ inline TriMesh moebius(int segments) {
   for (int s = 0; s < segments; ++s) {
     const double u = 2.0 * kPi * s / segments;
     for (double w : {-0.3, 0.3}) {
-      m.positions.emplace_back((2.0 + w * std::cos(u / 2)) * std::cos(u),
-                               (2.0 + w * std::cos(u / 2)) * std::sin(u), w * std::sin(u / 2));
+      m.positions.emplace_back((2.0 + w * std::cos(u / 2)) * std::cos(u), (2.0 + w * std::cos(u / 2)) * std::sin(u),
+                               w * std::sin(u / 2));
     }
   }
   for (int s = 0; s < segments; ++s) {

@@ -108,8 +108,7 @@ TEST(CleanMesh, OneFlippedFaceIsFixed) {
   const CleanMesh cg = clean_mesh(g);
   expect_clean(g, cg);
   EXPECT_EQ(cg.report.faces_flipped, 1);
-  EXPECT_EQ(cg.mesh.triangles[7],
-            (Triangle{g.triangles[7][0], g.triangles[7][2], g.triangles[7][1]}));
+  EXPECT_EQ(cg.mesh.triangles[7], (Triangle{g.triangles[7][0], g.triangles[7][2], g.triangles[7][1]}));
 }
 
 TEST(CleanMesh, InsideOutClosedMeshIsTurnedOutward) {
@@ -132,8 +131,7 @@ TEST(CleanMesh, InsideOutClosedMeshIsTurnedOutward) {
 TEST(CleanMesh, PartsAreOrientedIndependently) {
   // Two tetrahedra, the second inside out, and a grid with most faces pointing down.
   TriMesh m = test::tetrahedron();
-  for (const Triangle& t : test::tetrahedron().triangles)
-    m.triangles.push_back({t[0] + 4, t[2] + 4, t[1] + 4});
+  for (const Triangle& t : test::tetrahedron().triangles) m.triangles.push_back({t[0] + 4, t[2] + 4, t[1] + 4});
   for (const Vec3& p : test::tetrahedron().positions) m.positions.push_back(p + Vec3(3, 0, 0));
   TriMesh g = test::grid(2, 2);
   for (size_t f = 0; f < g.triangles.size(); ++f) {
@@ -168,16 +166,14 @@ TEST(CleanMesh, OpenPartKeepsTheLargerAreaOrientation) {
 
 TEST(CleanMesh, MoebiusStripIsRefused) {
   const std::string error = clean_error(test::moebius(12));
-  EXPECT_NE(error.find("not orientable (like a Moebius strip) near vertex "), std::string::npos)
-      << error;
+  EXPECT_NE(error.find("not orientable (like a Moebius strip) near vertex "), std::string::npos) << error;
 }
 
 TEST(CleanMesh, NonManifoldEdgeIsRefused) {
   TriMesh m;
   m.positions = {Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(1, 1, 0), Vec3(1, -1, 0), Vec3(1, 0, 1)};
   m.triangles = {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}};
-  EXPECT_EQ(clean_error(m),
-            "non-manifold edge between vertices 0 and 1 at (1, 0, 0): shared by 3 faces");
+  EXPECT_EQ(clean_error(m), "non-manifold edge between vertices 0 and 1 at (1, 0, 0): shared by 3 faces");
   // Found after welding, named by the input vertices that remain.
   TriMesh soup;
   for (const Triangle& t : m.triangles) {
@@ -185,8 +181,7 @@ TEST(CleanMesh, NonManifoldEdgeIsRefused) {
     const int b = soup.num_vertices() - 3;
     soup.triangles.push_back({b, b + 1, b + 2});
   }
-  EXPECT_EQ(clean_error(soup),
-            "non-manifold edge between vertices 0 and 1 at (1, 0, 0): shared by 3 faces");
+  EXPECT_EQ(clean_error(soup), "non-manifold edge between vertices 0 and 1 at (1, 0, 0): shared by 3 faces");
 }
 
 TEST(CleanMesh, NonFiniteCoordinateIsRefused) {
@@ -200,8 +195,7 @@ TEST(CleanMesh, NonFiniteCoordinateIsRefused) {
 TEST(CleanMesh, OutOfRangeIndexIsRefused) {
   TriMesh m = test::tetrahedron();
   m.triangles[1][2] = 7;
-  EXPECT_EQ(clean_error(m),
-            "face 1 refers to vertex 7, but the mesh has only 4 vertices (numbered from 0)");
+  EXPECT_EQ(clean_error(m), "face 1 refers to vertex 7, but the mesh has only 4 vertices (numbered from 0)");
   m.triangles[1][2] = -1;
   EXPECT_NE(clean_error(m).find("refers to vertex -1"), std::string::npos);
 }
@@ -209,8 +203,7 @@ TEST(CleanMesh, OutOfRangeIndexIsRefused) {
 TEST(CleanMesh, DuplicateAndDegenerateFacesAreDropped) {
   TriMesh m = test::tetrahedron();
   m.positions.push_back(m.positions[1]);  // vertex 4 welds into 1
-  m.triangles = {{0, 2, 1}, {0, 1, 3}, {1, 1, 2}, {0, 3, 2}, {2, 0, 1},
-                 {1, 2, 3}, {0, 4, 1}, {3, 1, 0}, {4, 2, 3}};
+  m.triangles = {{0, 2, 1}, {0, 1, 3}, {1, 1, 2}, {0, 3, 2}, {2, 0, 1}, {1, 2, 3}, {0, 4, 1}, {3, 1, 0}, {4, 2, 3}};
   // Faces 2 and 6 are degenerate (6 after welding), 4 repeats 0, 7 repeats 1 reversed,
   // 8 repeats 5 through the welded vertex.
   const CleanMesh c = clean_mesh(m);
@@ -273,10 +266,8 @@ TEST(CleanMesh, StitchedPartsThatTouchAreNotWelded) {
   // edge 0-1 but not its vertices, like the two sides of cow.off at one spot. Welding
   // would make that edge non-manifold; vertices whose edges are all stitched stay apart.
   TriMesh m = test::tetrahedron();
-  for (const Triangle& t : test::tetrahedron().triangles)
-    m.triangles.push_back({t[0] + 4, t[1] + 4, t[2] + 4});
-  for (const Vec3& p : test::tetrahedron().positions)
-    m.positions.emplace_back(p.x(), -p.y(), -p.z());
+  for (const Triangle& t : test::tetrahedron().triangles) m.triangles.push_back({t[0] + 4, t[1] + 4, t[2] + 4});
+  for (const Vec3& p : test::tetrahedron().positions) m.positions.emplace_back(p.x(), -p.y(), -p.z());
   const CleanMesh c = clean_mesh(m);
   const MeshTopology t = expect_clean(m, c);
   EXPECT_EQ(c.report.welded_vertices, 0);
@@ -292,8 +283,7 @@ TEST(CleanMesh, StitchedPartsThatTouchAreNotWelded) {
     const int b = soup.num_vertices() - 3;
     soup.triangles.push_back({b, b + 1, b + 2});
   }
-  EXPECT_EQ(clean_error(soup),
-            "non-manifold edge between vertices 0 and 2 at (0.5, 0, 0): shared by 4 faces");
+  EXPECT_EQ(clean_error(soup), "non-manifold edge between vertices 0 and 2 at (0.5, 0, 0): shared by 4 faces");
 }
 
 TEST(CleanMesh, BowtieVertexIsSplit) {
@@ -311,8 +301,7 @@ TEST(CleanMesh, BowtieVertexIsSplit) {
   EXPECT_EQ(t.boundary_loops.size(), 2u);
   EXPECT_EQ(euler_characteristic(c.mesh, t), 2);
   const auto messages = c.report.messages();
-  EXPECT_TRUE(
-      contains(messages, "split 1 non-manifold vertex where parts touched at a single point"));
+  EXPECT_TRUE(contains(messages, "split 1 non-manifold vertex where parts touched at a single point"));
   EXPECT_TRUE(contains(messages, "the mesh has 2 disconnected parts"));
 }
 
@@ -385,22 +374,20 @@ TEST(CleanMesh, MessagesOnePerRepair) {
   r.degenerate_faces_dropped = 3;
   r.faces_flipped = 40;
   r.components = 2;
-  EXPECT_EQ(r.messages(),
-            (std::vector<std::string>{
-                "welded 120 duplicate vertices", "dropped 3 degenerate faces (a corner used twice)",
-                "flipped 40 faces to make the orientation consistent (closed parts facing outward)",
-                "the mesh has 2 disconnected parts"}));
+  EXPECT_EQ(r.messages(), (std::vector<std::string>{
+                              "welded 120 duplicate vertices", "dropped 3 degenerate faces (a corner used twice)",
+                              "flipped 40 faces to make the orientation consistent (closed parts facing outward)",
+                              "the mesh has 2 disconnected parts"}));
   CleanReport one;
   one.welded_vertices = one.degenerate_faces_dropped = one.duplicate_faces_dropped = 1;
   one.zero_area_faces = one.nonmanifold_vertices_split = one.faces_flipped = 1;
   one.unreferenced_vertices_removed = one.components = 1;
   EXPECT_EQ(one.messages(),
-            (std::vector<std::string>{
-                "welded 1 duplicate vertex", "dropped 1 degenerate face (a corner used twice)",
-                "dropped 1 duplicate face", "kept 1 face with zero area (it carries no weight)",
-                "split 1 non-manifold vertex where parts touched at a single point",
-                "flipped 1 face to make the orientation consistent (closed parts facing outward)",
-                "removed 1 unused vertex"}));
+            (std::vector<std::string>{"welded 1 duplicate vertex", "dropped 1 degenerate face (a corner used twice)",
+                                      "dropped 1 duplicate face", "kept 1 face with zero area (it carries no weight)",
+                                      "split 1 non-manifold vertex where parts touched at a single point",
+                                      "flipped 1 face to make the orientation consistent (closed parts facing outward)",
+                                      "removed 1 unused vertex"}));
 }
 
 // The shared meshes, worked out independently of this code: every one is a single part,
@@ -409,13 +396,11 @@ TEST(CleanMesh, MessagesOnePerRepair) {
 // weld or drop. cow.off has one duplicate vertex (2761 on 621) where its two sides touch
 // along an edge: welding it would make that edge non-manifold, so it must stay apart.
 TEST(CleanMesh, SharedMeshesCleanToTheirTopology) {
-  const std::map<std::string, int> euler = {{"inspired_mesh.obj", 1}, {"hyperboloid_s4.off", 0},
-                                            {"YasIsland.off", -1},    {"epcot.off", 2},
-                                            {"Moomoo.off", 2},        {"bunny.off", 2},
-                                            {"bumpy.off", 2},         {"fandisk.off", 2},
-                                            {"3holes.off", -4},       {"camelhead.off", 1},
-                                            {"cow.off", 2},           {"face.obj", 1},
-                                            {"lilium.obj", 1}};
+  const std::map<std::string, int> euler = {
+      {"inspired_mesh.obj", 1}, {"hyperboloid_s4.off", 0}, {"YasIsland.off", -1}, {"epcot.off", 2},
+      {"Moomoo.off", 2},        {"bunny.off", 2},          {"bumpy.off", 2},      {"fandisk.off", 2},
+      {"3holes.off", -4},       {"camelhead.off", 1},      {"cow.off", 2},        {"face.obj", 1},
+      {"lilium.obj", 1}};
   ASSERT_EQ(test::shared_meshes().size(), euler.size());
   for (const test::SharedMesh& expected : test::shared_meshes()) {
     SCOPED_TRACE(expected.file);

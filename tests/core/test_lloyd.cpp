@@ -61,7 +61,8 @@ TEST_P(LloydEnergy, NeverIncreases) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Meshes, LloydEnergy, ::testing::Values("roof", "bunny.off", "inspired_mesh.obj", "fandisk.off"),
+INSTANTIATE_TEST_SUITE_P(Meshes, LloydEnergy,
+                         ::testing::Values("roof", "bunny.off", "inspired_mesh.obj", "fandisk.off"),
                          [](const auto& info) { return test::test_name(info.param); });
 
 TEST(Teleport, KeepsClusterCountContiguityAndLowersEnergy) {

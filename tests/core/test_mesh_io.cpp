@@ -143,8 +143,7 @@ TEST(MeshIo, ReadMeshFileReportsMissingFile) {
   const std::string folder = test::shared_mesh_dir();
   EXPECT_EQ(error_of([](const std::string& p) { read_mesh_file(p); }, folder + "/.x.obj"),
             "cannot open '" + folder + "/.x.obj'");
-  EXPECT_EQ(error_of([](const std::string& p) { read_mesh_file(p + "/."); }, folder),
-            "cannot read '" + folder + "/.'");
+  EXPECT_EQ(error_of([](const std::string& p) { read_mesh_file(p + "/."); }, folder), "cannot read '" + folder + "/.'");
 }
 
 TEST(MeshIo, ReadMeshDispatchesOnName) {
@@ -197,8 +196,7 @@ TEST(ObjReader, AcceptsFacesBeforeTheirVertices) {
 }
 
 TEST(ObjReader, HandlesCrlfContinuationAndBom) {
-  const RawMesh raw =
-      read_obj("\xEF\xBB\xBFv 0 0 0\r\nv 1 0 0\r\nv 0 1 0\r\nv 1 1 1\r\nf 1 2 \\\r\n 3\r\nf 2 3 4");
+  const RawMesh raw = read_obj("\xEF\xBB\xBFv 0 0 0\r\nv 1 0 0\r\nv 0 1 0\r\nv 1 1 1\r\nf 1 2 \\\r\n 3\r\nf 2 3 4");
   ASSERT_EQ(raw.mesh.num_faces(), 2);
   EXPECT_EQ(raw.mesh.triangles[0], (Triangle{0, 1, 2}));
   EXPECT_EQ(raw.mesh.triangles[1], (Triangle{1, 2, 3}));
@@ -304,8 +302,7 @@ TEST(OffReader, ReadsHeaderVariantsCommentsAndPolygons) {
   EXPECT_EQ(raw.source_polygon, (std::vector<int>{0, 1, 1, 2}));
   expect_valid(raw);
 
-  const RawMesh coff =
-      read_off("COFF\r\n3 1\r\n0 0 0 1 0 0 1\r\n1 0 0 1 0 0 1\r\n0 1 0 1 0 0 1\r\n3 0 1 2\r\n");
+  const RawMesh coff = read_off("COFF\r\n3 1\r\n0 0 0 1 0 0 1\r\n1 0 0 1 0 0 1\r\n0 1 0 1 0 0 1\r\n3 0 1 2\r\n");
   EXPECT_EQ(coff.mesh.positions[1], Vec3(1, 0, 0));
   const RawMesh noff = read_off("NOFF\n3 1 0\n0 0 0 0 0 1\n1 0 0 0 0 1\n0 1 0 0 0 1\n3 0 1 2\n");
   EXPECT_EQ(noff.mesh.num_faces(), 1);
@@ -326,8 +323,7 @@ std::string binary_stl(const std::vector<std::array<float, 9>>& facets, const ch
 }
 
 TEST(StlReader, ReadsBinaryEvenWhenItStartsWithSolid) {
-  const std::vector<std::array<float, 9>> facets = {{0, 0, 0, 1, 0, 0, 0, 1, 0},
-                                                    {1, 0, 0, 1, 1, 0, 0, 1, 0.5f}};
+  const std::vector<std::array<float, 9>> facets = {{0, 0, 0, 1, 0, 0, 0, 1, 0}, {1, 0, 0, 1, 1, 0, 0, 1, 0.5f}};
   for (const char* header : {"binary from a tool", "solid but really binary"}) {
     const RawMesh raw = read_stl(binary_stl(facets, header));
     ASSERT_EQ(raw.mesh.num_faces(), 2);
@@ -473,8 +469,7 @@ std::vector<BadInput> obj_cases() {
       {"Obj_NoFaces", M, "# only a comment\n" + tri, "OBJ: file has no faces", ""},
       {"Obj_Garbage", M, random_bytes(4096), "OBJ: file looks binary, not a text OBJ", ""},
       {"Obj_NulBytes", M, tri + std::string("f 1 2 3\0\0", 9), "OBJ: file looks binary", ""},
-      {"Obj_HighBytes", M, tri + "f 1 2 3\nf 1 2 \x80\xff\n",
-       "OBJ line 5:", "malformed face vertex '?\?'"},
+      {"Obj_HighBytes", M, tri + "f 1 2 3\nf 1 2 \x80\xff\n", "OBJ line 5:", "malformed face vertex '?\?'"},
       {"Obj_NaN", M, "v 0 0 0\nv 1 nan 0\n", "OBJ line 2:", "coordinate 'nan' is not finite"},
       {"Obj_Inf", M, "v 0 0 0\nv 1 0 -inf\n", "OBJ line 2:", "coordinate '-inf' is not finite"},
       {"Obj_Overflow", M, "v 0 0 1e999\n", "OBJ line 1:", "not finite"},
@@ -482,8 +477,7 @@ std::vector<BadInput> obj_cases() {
       {"Obj_ShortVertex", M, "v 0 0 0\nv 1 0\n", "OBJ line 2:", "vertex has 2 coordinates"},
       {"Obj_IndexOutOfRange", M, tri + "f 1 2 57\n",
        "OBJ line 4:", "face index 57 is out of range (file has 3 vertices)"},
-      {"Obj_NegativeOutOfRange", M, tri + "f 1 2 -4\n",
-       "OBJ line 4:", "face index -4 is out of range"},
+      {"Obj_NegativeOutOfRange", M, tri + "f 1 2 -4\n", "OBJ line 4:", "face index -4 is out of range"},
       {"Obj_HugeIndex", M, tri + "f 1 2 99999999999\n", "OBJ line 4:", "out of range"},
       {"Obj_ZeroIndex", M, tri + "f 0 1 2\n", "OBJ line 4:", "face index 0 is invalid"},
       {"Obj_TwoVertexFace", M, tri + "f 1 2\n", "OBJ line 4:", "face has 2 vertices"},
@@ -514,21 +508,15 @@ std::vector<BadInput> off_cases() {
       {"Off_HugeCounts", M, "OFF\n2000000000 2000000000 0\n0 0 0\n",
        "OFF line 2:", "header announces 2000000000 vertices"},
       {"Off_CountTooLarge", M, "OFF\n99999999999 1 0\n", "OFF line 2:", "too large"},
-      {"Off_NaN", M, "OFF\n3 1 0\n0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n",
-       "OFF line 4:", "coordinate 'nan' is not finite"},
-      {"Off_Inf", M, "OFF\n3 1 0\n0 0 0\n1 inf 0\n0 1 0\n3 0 1 2\n",
-       "OFF line 4:", "coordinate 'inf' is not finite"},
-      {"Off_ShortVertex", M, "OFF\n3 1 0\n0 0 0\n1 0\n0 1 0\n3 0 1 2\n",
-       "OFF line 4:", "vertex has 2 coordinates"},
+      {"Off_NaN", M, "OFF\n3 1 0\n0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n", "OFF line 4:", "coordinate 'nan' is not finite"},
+      {"Off_Inf", M, "OFF\n3 1 0\n0 0 0\n1 inf 0\n0 1 0\n3 0 1 2\n", "OFF line 4:", "coordinate 'inf' is not finite"},
+      {"Off_ShortVertex", M, "OFF\n3 1 0\n0 0 0\n1 0\n0 1 0\n3 0 1 2\n", "OFF line 4:", "vertex has 2 coordinates"},
       {"Off_IndexOutOfRange", M, "OFF\n3 1 0\n" + tri + "3 0 1 3\n",
        "OFF line 6:", "face index 3 is out of range (file has 3 vertices)"},
       {"Off_NegativeIndex", M, "OFF\n3 1 0\n" + tri + "3 0 -1 2\n", "OFF line 6:", "out of range"},
-      {"Off_MissingIndex", M, "OFF\n3 1 0\n" + tri + "3 0 1\n",
-       "OFF line 6:", "face announces 3 vertices but lists 2"},
-      {"Off_TwoVertexFace", M, "OFF\n3 1 0\n" + tri + "2 0 1\n",
-       "OFF line 6:", "face has 2 vertices"},
-      {"Off_MalformedIndex", M, "OFF\n3 1 0\n" + tri + "3 0 1 1.5\n",
-       "OFF line 6:", "malformed face index '1.5'"},
+      {"Off_MissingIndex", M, "OFF\n3 1 0\n" + tri + "3 0 1\n", "OFF line 6:", "face announces 3 vertices but lists 2"},
+      {"Off_TwoVertexFace", M, "OFF\n3 1 0\n" + tri + "2 0 1\n", "OFF line 6:", "face has 2 vertices"},
+      {"Off_MalformedIndex", M, "OFF\n3 1 0\n" + tri + "3 0 1 1.5\n", "OFF line 6:", "malformed face index '1.5'"},
       {"Off_Binary", M, "OFF BINARY\n", "OFF line 1:", "binary OFF is not supported"},
       {"Off_FourD", M, "4OFF\n", "OFF line 1:", "not supported"},
   };
@@ -546,30 +534,24 @@ std::vector<BadInput> stl_cases() {
   return {
       {"Stl_Empty", M, "", "STL: file is empty", ""},
       {"Stl_Garbage", M, random_bytes(4096), "STL: truncated binary STL", "got 4096"},
-      {"Stl_TooShort", M, "short", "STL: truncated binary STL",
-       "expected at least 84 bytes, got 5"},
+      {"Stl_TooShort", M, "short", "STL: truncated binary STL", "expected at least 84 bytes, got 5"},
       {"Stl_TruncatedBinary", M, good.substr(0, good.size() - 7), "STL: truncated binary STL",
        "expected 134 bytes, got 127"},
-      {"Stl_TrailingBytes", M, good + "xx", "STL: binary STL size mismatch",
-       "expected 134 bytes, got 136"},
+      {"Stl_TrailingBytes", M, good + "xx", "STL: binary STL size mismatch", "expected 134 bytes, got 136"},
       {"Stl_NoTriangles", M, binary_stl({}, "x"), "STL: file has no triangles", ""},
       {"Stl_HugeCount", M, huge, "STL: truncated binary STL", "expected 214748364834 bytes"},
-      {"Stl_BinaryNaN", M, binary_stl({{0, 0, 0, nan, 0, 0, 0, 1, 0}}, "x"), "STL: triangle 0",
-       "non-finite"},
-      {"Stl_BinaryInf", M, binary_stl({{0, 0, 0, 1, 0, 0, 0, inf, 0}}, "x"), "STL: triangle 0",
-       "non-finite"},
+      {"Stl_BinaryNaN", M, binary_stl({{0, 0, 0, nan, 0, 0, 0, 1, 0}}, "x"), "STL: triangle 0", "non-finite"},
+      {"Stl_BinaryInf", M, binary_stl({{0, 0, 0, 1, 0, 0, 0, inf, 0}}, "x"), "STL: triangle 0", "non-finite"},
       {"Stl_TruncatedAscii", M, head + "vertex 1 0 0\n", "STL line 6:", "file ends inside a facet"},
       {"Stl_NoEndsolid", M, head + "vertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\n",
        "STL line 9:", "without 'endsolid'"},
       {"Stl_AsciiNaN", M, head + "vertex 1 nan 0\n", "STL line 5:", "not finite"},
       {"Stl_AsciiInf", M, head + "vertex 1 inf 0\n", "STL line 5:", "not finite"},
-      {"Stl_BadNumber", M, head + "vertex 1 0,5 0\n",
-       "STL line 5:", "cannot parse coordinate '0,5'"},
+      {"Stl_BadNumber", M, head + "vertex 1 0,5 0\n", "STL line 5:", "cannot parse coordinate '0,5'"},
       {"Stl_FourVertices", M, head + "vertex 1 0 0\nvertex 0 1 0\nvertex 1 1 0\n",
        "STL line 7:", "more than 3 vertices"},
       {"Stl_TwoVertices", M, head + "vertex 1 0 0\nendloop\n", "STL line 6:", "expected 'vertex'"},
-      {"Stl_AsciiNoTriangles", M, "solid empty\nendsolid empty\n", "STL: file has no triangles",
-       ""},
+      {"Stl_AsciiNoTriangles", M, "solid empty\nendsolid empty\n", "STL: file has no triangles", ""},
       {"Stl_NotStl", M,
        "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n# an OBJ file with an .stl name, long enough for a "
        "header\n",
@@ -596,16 +578,14 @@ std::vector<BadInput> ply_cases() {
       {"Ply_Empty", M, "", "PLY: file is empty", ""},
       {"Ply_Garbage", M, random_bytes(4096), "PLY: file does not start with 'ply'", ""},
       {"Ply_NoMagic", M, "plx\n", "PLY: file does not start with 'ply'", ""},
-      {"Ply_BigEndian", M, "ply\nformat binary_big_endian 1.0\nend_header\n",
-       "PLY: big-endian PLY is not supported", ""},
-      {"Ply_TruncatedHeader", M, "ply\nformat ascii 1.0\nelement vertex 3\n",
-       "PLY: header has no 'end_header'", ""},
+      {"Ply_BigEndian", M, "ply\nformat binary_big_endian 1.0\nend_header\n", "PLY: big-endian PLY is not supported",
+       ""},
+      {"Ply_TruncatedHeader", M, "ply\nformat ascii 1.0\nelement vertex 3\n", "PLY: header has no 'end_header'", ""},
       {"Ply_NoXyz", M, "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nend_header\n",
        "PLY: vertex element lacks an x, y or z property", ""},
       {"Ply_UnknownHeaderLine", M, "ply\nformat ascii 1.0\nwhatever\nend_header\n",
        "PLY line 3:", "unknown header line 'whatever'"},
-      {"Ply_UnknownType", M,
-       "ply\nformat ascii 1.0\nelement vertex 1\nproperty flt x\nend_header\n",
+      {"Ply_UnknownType", M, "ply\nformat ascii 1.0\nelement vertex 1\nproperty flt x\nend_header\n",
        "PLY line 4:", "unknown property type 'flt'"},
       {"Ply_IndexOutOfRange", M, head + tri + "3 0 1 3\n",
        "PLY line 13:", "vertex index 3 is out of range (file has 3 vertices)"},
@@ -614,8 +594,7 @@ std::vector<BadInput> ply_cases() {
       {"Ply_AsciiInf", M, head + "0 0 0\n1 inf 0\n0 1 0\n3 0 1 2\n", "PLY line 11:", "not finite"},
       {"Ply_TwoVertexFace", M, head + tri + "2 0 1\n", "PLY line 13:", "face has 2 vertices"},
       {"Ply_ShortRecord", M, head + tri + "3 0 1\n", "PLY line 13:", "fewer values"},
-      {"Ply_TruncatedAscii", M, two_faces + tri + "3 0 1 2\n",
-       "PLY line 13:", "file ends after 1 of 2 'face' records"},
+      {"Ply_TruncatedAscii", M, two_faces + tri + "3 0 1 2\n", "PLY line 13:", "file ends after 1 of 2 'face' records"},
       {"Ply_AsciiBinaryBytes", M, head + tri + "\x01\x02\x03\x04\x05\x06\x07\x08 1 2\n",
        "PLY: ascii PLY holds binary data", ""},
       {"Ply_HugeCounts", M,
@@ -623,11 +602,9 @@ std::vector<BadInput> ply_cases() {
        "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
        "0 0 0\n",
        "PLY: header announces 2000000000 'vertex' records", "truncated"},
-      {"Ply_TruncatedBinary", M, good.substr(0, good.size() - 3),
-       "PLY: binary data ends inside face 1", "truncated"},
+      {"Ply_TruncatedBinary", M, good.substr(0, good.size() - 3), "PLY: binary data ends inside face 1", "truncated"},
       {"Ply_MissingBinaryFace", M, binary_ply(0, 3), "PLY: ", "truncated"},
-      {"Ply_BinaryIndexOutOfRange", M, binary_ply(9), "PLY: face 0: vertex index 9 is out of range",
-       ""},
+      {"Ply_BinaryIndexOutOfRange", M, binary_ply(9), "PLY: face 0: vertex index 9 is out of range", ""},
       {"Ply_BinaryNaN", M, nan, "PLY: vertex 0 has a non-finite coordinate", ""},
       {"Ply_BinaryInf", M, inf, "PLY: vertex 0 has a non-finite coordinate", ""},
   };
@@ -650,9 +627,7 @@ TEST_P(MeshIoBadInput, ThrowsOneLineInputError) {
 }
 
 INSTANTIATE_TEST_SUITE_P(AllFormats, MeshIoBadInput, testing::ValuesIn(bad_inputs()),
-                         [](const testing::TestParamInfo<BadInput>& info) {
-                           return info.param.name;
-                         });
+                         [](const testing::TestParamInfo<BadInput>& info) { return info.param.name; });
 
 // Random garbage through every reader, with every name: only InputError may come out.
 TEST(MeshIo, GarbageNeverCrashes) {

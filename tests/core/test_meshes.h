@@ -18,7 +18,7 @@ inline std::string shared_mesh(const std::string& name) { return shared_mesh_dir
 // Every mesh in ../shared/meshes/ with what we know about it from its README.
 struct SharedMesh {
   std::string file;
-  int faces;           // triangles after triangulating polygons
+  int faces;  // triangles after triangulating polygons
   bool closed;
   int boundary_loops;
 };
@@ -28,12 +28,18 @@ inline void PrintTo(const SharedMesh& mesh, std::ostream* os) { *os << mesh.file
 
 inline const std::vector<SharedMesh>& shared_meshes() {
   static const std::vector<SharedMesh> meshes = {
-      {"inspired_mesh.obj", 4288, false, 1}, {"hyperboloid_s4.off", 50454, false, 2},
-      {"YasIsland.off", 1952, false, 3},     {"epcot.off", 1536, true, 0},
-      {"Moomoo.off", 7776, true, 0},         {"bunny.off", 6966, true, 0},
-      {"bumpy.off", 2496, true, 0},          {"fandisk.off", 14454, true, 0},
-      {"3holes.off", 7200, true, 0},         {"camelhead.off", 22704, false, 1},
-      {"cow.off", 5520, true, 0},            {"face.obj", 51712, false, 1},
+      {"inspired_mesh.obj", 4288, false, 1},
+      {"hyperboloid_s4.off", 50454, false, 2},
+      {"YasIsland.off", 1952, false, 3},
+      {"epcot.off", 1536, true, 0},
+      {"Moomoo.off", 7776, true, 0},
+      {"bunny.off", 6966, true, 0},
+      {"bumpy.off", 2496, true, 0},
+      {"fandisk.off", 14454, true, 0},
+      {"3holes.off", 7200, true, 0},
+      {"camelhead.off", 22704, false, 1},
+      {"cow.off", 5520, true, 0},
+      {"face.obj", 51712, false, 1},
       {"lilium.obj", 6590, false, 1},
   };
   return meshes;

@@ -74,10 +74,12 @@ TEST(Metric, SecondMomentMatchesNumericIntegration) {
   for (int i = 0; i < 3; ++i) {
     for (int j = 0; j < 3; ++j) {
       // Local coordinates l = (q - origin) / scale, local area = world area / scale^2.
-      const double numeric = integrate(a, b, c, [&](const Vec3& q) {
-        const Vec3 l = (q - fd.origin) / fd.scale;
-        return l[i] * l[j];
-      }) / fd.area_to_world();
+      const double numeric = integrate(a, b, c,
+                                       [&](const Vec3& q) {
+                                         const Vec3 l = (q - fd.origin) / fd.scale;
+                                         return l[i] * l[j];
+                                       }) /
+                             fd.area_to_world();
       EXPECT_NEAR(m.second(i, j), numeric, 1e-4 * std::max(1.0, std::abs(numeric)));
     }
   }
@@ -144,7 +146,9 @@ TEST(Metric, RejectsBadDensityAndWeights) {
   EXPECT_THROW(Metric(fd, w, 2), std::runtime_error);
 }
 
-double sphere_objective(const Eigen::Matrix3d& A, const Vec3& b, const Vec3& n) { return n.dot(A * n) - 2.0 * b.dot(n); }
+double sphere_objective(const Eigen::Matrix3d& A, const Vec3& b, const Vec3& n) {
+  return n.dot(A * n) - 2.0 * b.dot(n);
+}
 
 // Brute force: dense sampling of the sphere, then local refinement.
 double brute_force_min(const Eigen::Matrix3d& A, const Vec3& b) {

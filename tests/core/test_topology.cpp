@@ -36,8 +36,7 @@ void expect_consistent(const TriMesh& m, const MeshTopology& t) {
     for (size_t i = 0; i < 3; ++i) {
       const int e = t.face_edges[static_cast<size_t>(f)][i];
       const int a = tri[i], b = tri[(i + 1) % 3];
-      EXPECT_EQ(t.edge_vertices[static_cast<size_t>(e)],
-                (std::array<int, 2>{std::min(a, b), std::max(a, b)}));
+      EXPECT_EQ(t.edge_vertices[static_cast<size_t>(e)], (std::array<int, 2>{std::min(a, b), std::max(a, b)}));
       const auto& ef = t.edge_faces[static_cast<size_t>(e)];
       EXPECT_TRUE(ef[0] == f || ef[1] == f);
       EXPECT_EQ(t.face_neighbors[static_cast<size_t>(f)][i], ef[0] == f ? ef[1] : ef[0]);
@@ -50,9 +49,8 @@ void expect_consistent(const TriMesh& m, const MeshTopology& t) {
       const Triangle& tri = m.triangles[static_cast<size_t>(f)];
       if (std::find(tri.begin(), tri.end(), v) != tri.end()) expected.push_back(f);
     }
-    const std::vector<int> got(
-        t.vertex_faces.begin() + t.vertex_face_offsets[static_cast<size_t>(v)],
-        t.vertex_faces.begin() + t.vertex_face_offsets[static_cast<size_t>(v) + 1]);
+    const std::vector<int> got(t.vertex_faces.begin() + t.vertex_face_offsets[static_cast<size_t>(v)],
+                               t.vertex_faces.begin() + t.vertex_face_offsets[static_cast<size_t>(v) + 1]);
     EXPECT_EQ(got, expected) << "vertex " << v;
   }
   // Loops follow the faces' direction and start at their smallest vertex, in order.
@@ -67,11 +65,9 @@ void expect_consistent(const TriMesh& m, const MeshTopology& t) {
       const int a = loop[k], b = loop[(k + 1) % loop.size()];
       bool found = false;
       for (int e = 0; e < t.num_edges(); ++e) {
-        if (t.edge_vertices[static_cast<size_t>(e)] ==
-            std::array<int, 2>{std::min(a, b), std::max(a, b)}) {
+        if (t.edge_vertices[static_cast<size_t>(e)] == std::array<int, 2>{std::min(a, b), std::max(a, b)}) {
           EXPECT_TRUE(t.is_boundary_edge(e));
-          EXPECT_TRUE(
-              test::face_has_directed_edge(m, t.edge_faces[static_cast<size_t>(e)][0], a, b));
+          EXPECT_TRUE(test::face_has_directed_edge(m, t.edge_faces[static_cast<size_t>(e)][0], a, b));
           found = true;
         }
       }
@@ -110,8 +106,7 @@ TEST(Topology, GridHasOneLoop) {
   ASSERT_EQ(t.boundary_loops.size(), 1u);
   // Counter-clockwise like the +z faces: 0 -> 1 -> ... along y = 0 first.
   const std::vector<int> expected_start = {0, 1, 2, 3, 4, 9};
-  EXPECT_TRUE(
-      std::equal(expected_start.begin(), expected_start.end(), t.boundary_loops[0].begin()));
+  EXPECT_TRUE(std::equal(expected_start.begin(), expected_start.end(), t.boundary_loops[0].begin()));
   EXPECT_EQ(t.boundary_loops[0].size(), 14u);
   EXPECT_EQ(t.num_components, 1);
 }
@@ -156,9 +151,7 @@ TEST(Topology, HolesPinchedAtAVertexPairByFan) {
   // faces between them (what splitting the vertex would give), so the two holes form one
   // loop through 12 twice, independent of the geometry.
   TriMesh m = grid(4, 4);
-  const auto remove = [&m](Triangle tri) {
-    m.triangles.erase(std::find(m.triangles.begin(), m.triangles.end(), tri));
-  };
+  const auto remove = [&m](Triangle tri) { m.triangles.erase(std::find(m.triangles.begin(), m.triangles.end(), tri)); };
   remove({12, 13, 18});  // (2,2) (3,2) (3,3)
   remove({6, 7, 12});    // (1,1) (2,1) (2,2)
   const MeshTopology t = build_topology(m);
@@ -215,8 +208,7 @@ TEST(Topology, NonManifoldEdgeNamesTheEdge) {
     build_topology(m);
     FAIL() << "expected InputError";
   } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()),
-              "non-manifold edge between vertices 0 and 1 at (1, 0, 0): shared by 3 faces");
+    EXPECT_EQ(std::string(e.what()), "non-manifold edge between vertices 0 and 1 at (1, 0, 0): shared by 3 faces");
   }
   m.triangles.push_back({2, 4, 3});
   m.triangles.push_back({4, 2, 1});
@@ -225,8 +217,7 @@ TEST(Topology, NonManifoldEdgeNamesTheEdge) {
     build_topology(m);
     FAIL() << "expected InputError";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("(and 1 more non-manifold edge)"), std::string::npos)
-        << e.what();
+    EXPECT_NE(std::string(e.what()).find("(and 1 more non-manifold edge)"), std::string::npos) << e.what();
   }
 }
 

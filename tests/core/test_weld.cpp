@@ -12,8 +12,8 @@ namespace {
 
 TEST(CleanMeshWeld, ToleranceDoesNotChain) {
   // 0 and 1 are within tolerance, 1 and 2 too, 0 and 2 not: 1 joins 0, 2 stays.
-  const std::vector<Vec3> points = {Vec3(0, 0, 0), Vec3(0.6, 0, 0), Vec3(1.2, 0, 0),
-                                    Vec3(1.25, 0.1, 0), Vec3(0.5, 0.0, 0.0)};
+  const std::vector<Vec3> points = {Vec3(0, 0, 0), Vec3(0.6, 0, 0), Vec3(1.2, 0, 0), Vec3(1.25, 0.1, 0),
+                                    Vec3(0.5, 0.0, 0.0)};
   // Nearest earlier representative wins: 4 is 0.5 from 0 and 0.7 from 2.
   EXPECT_EQ(detail::weld_representatives(points, 1.0), (std::vector<int>{0, 0, 2, 2, 0}));
   // Coincident vertices stay together: 3 sits on 1, so it follows 1 into 0 although
@@ -21,8 +21,7 @@ TEST(CleanMeshWeld, ToleranceDoesNotChain) {
   const std::vector<Vec3> pair = {Vec3(0, 0, 0), Vec3(0.9, 0, 0), Vec3(1.6, 0, 0), Vec3(0.9, 0, 0)};
   EXPECT_EQ(detail::weld_representatives(pair, 1.0), (std::vector<int>{0, 0, 2, 0}));
   // Coordinates far beyond tolerance * 2^63 still weld correctly.
-  const std::vector<Vec3> far = {Vec3(0, 0, 0), Vec3(0, 0, 0), Vec3(-1e300, 0, 0),
-                                 Vec3(-1e300, 0, 0)};
+  const std::vector<Vec3> far = {Vec3(0, 0, 0), Vec3(0, 0, 0), Vec3(-1e300, 0, 0), Vec3(-1e300, 0, 0)};
   EXPECT_EQ(detail::weld_representatives(far, 1e-300), (std::vector<int>{0, 0, 2, 2}));
   // A tolerance far below the coordinates' precision (and a huge one) stay quick.
   const std::vector<Vec3> fine = {Vec3(1e10, 0, 0), Vec3(1e10, 1e-12, 0), Vec3(1e10, 1e-6, 0)};
@@ -66,8 +65,8 @@ TEST(CleanMeshWeld, ToleranceMatchesBruteForce) {
     if (i > 0 && random.below(4) == 0) {
       points.push_back(points[random.below(points.size())]);
     } else {
-      points.emplace_back(std::floor(random.uniform() * 40) * 0.05 + random.uniform() * 0.02,
-                          random.uniform() * 0.3, -5.0 + random.uniform() * 0.02);
+      points.emplace_back(std::floor(random.uniform() * 40) * 0.05 + random.uniform() * 0.02, random.uniform() * 0.3,
+                          -5.0 + random.uniform() * 0.02);
     }
   }
   const double tol = 0.015;
