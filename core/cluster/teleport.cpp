@@ -69,9 +69,9 @@ std::vector<int> worst_first(const std::vector<double>& energy) {
   return order;
 }
 
-// Folds cluster b into a (moments, proxy, and the label remap applied later).
-void merge_into(const Metric& metric, Clustering& c, ClusterStats& s, std::vector<int>& remap, int a, int b) {
-  remap[static_cast<size_t>(b)] = a;
+// Folds cluster b's moments into a and refits a. Labels are left alone: the reflood that
+// follows every move rebuilds them from the seeds.
+void merge_into(const Metric& metric, Clustering& c, ClusterStats& s, int a, int b) {
   s.moments[static_cast<size_t>(a)].add(s.moments[static_cast<size_t>(b)]);
   c.proxies[static_cast<size_t>(a)] = metric.fit(s.moments[static_cast<size_t>(a)], c.proxies[static_cast<size_t>(a)]);
 }
@@ -87,12 +87,6 @@ bool split_into(const Metric& metric, Clustering& c, const ClusterStats& s, int 
   return true;
 }
 
-void apply_remap(Clustering& c, const std::vector<int>& remap) {
-  for (int& l : c.labels) {
-    if (l >= 0) l = remap[static_cast<size_t>(l)];
-  }
-}
-
 }  // namespace
 
 int teleport(const Metric& metric, const MeshTopology& topology, Clustering& c, const TeleportOptions& options) {
@@ -101,8 +95,6 @@ int teleport(const Metric& metric, const MeshTopology& topology, Clustering& c, 
   const std::vector<int> worst = worst_first(s.energy);
   std::vector<char> used(static_cast<size_t>(c.num_clusters()), 0);
   for (int i = 0; i < c.num_clusters(); ++i) used[static_cast<size_t>(i)] = c.sticky[static_cast<size_t>(i)] > 0;
-  std::vector<int> remap(static_cast<size_t>(c.num_clusters()));
-  std::iota(remap.begin(), remap.end(), 0);
 
   int moves = 0;
   size_t next_merge = 0, next_worst = 0;
@@ -121,14 +113,11 @@ int teleport(const Metric& metric, const MeshTopology& topology, Clustering& c, 
     const MergeCandidate& m = merges[next_merge];
     if (!(m.cost < 0.5 * s.energy[static_cast<size_t>(w)])) break;
     used[static_cast<size_t>(w)] = used[static_cast<size_t>(m.a)] = used[static_cast<size_t>(m.b)] = 1;
-    merge_into(metric, c, s, remap, m.a, m.b);
-    split_into(metric, c, s, w, m.b, options.sticky_iterations);
+    merge_into(metric, c, s, m.a, m.b);
+    split_into(metric, c, s, w, m.b, options.sticky_iterations);  // slot b now seeds the new cluster
     ++moves;
   }
-  if (moves > 0) {
-    apply_remap(c, remap);
-    reflood(metric, topology, c);
-  }
+  if (moves > 0) reflood(metric, topology, c);
   return moves;
 }
 
@@ -161,33 +150,26 @@ void remove_clusters(const Metric& metric, const MeshTopology& topology, Cluster
     ClusterStats s = cluster_stats(metric, c);
     const std::vector<MergeCandidate> merges = merge_candidates(metric, topology, c, s);
     const int n = c.num_clusters();
-    std::vector<int> remap(static_cast<size_t>(n));
-    std::iota(remap.begin(), remap.end(), 0);
-    std::vector<char> used(static_cast<size_t>(n), 0);
+    std::vector<char> used(static_cast<size_t>(n), 0), gone(static_cast<size_t>(n), 0);
     int merged = 0;
     // Cheapest disjoint pairs first, at most half of what is left per pass.
     for (const MergeCandidate& m : merges) {
       if (merged == count) break;
       if (used[static_cast<size_t>(m.a)] || used[static_cast<size_t>(m.b)]) continue;
       used[static_cast<size_t>(m.a)] = used[static_cast<size_t>(m.b)] = 1;
-      merge_into(metric, c, s, remap, m.a, m.b);
+      merge_into(metric, c, s, m.a, m.b);
+      gone[static_cast<size_t>(m.b)] = 1;
       ++merged;
     }
     if (merged == 0) break;  // every cluster is a component of its own
-    // Compact ids: survivors keep their order.
-    std::vector<int> compact(static_cast<size_t>(n), -1);
+    // Compact ids: survivors keep their order; the reflood relabels every face.
     Clustering kept;
     for (int i = 0; i < n; ++i) {
-      if (remap[static_cast<size_t>(i)] != i) continue;
-      compact[static_cast<size_t>(i)] = kept.num_clusters();
+      if (gone[static_cast<size_t>(i)]) continue;
       kept.proxies.push_back(c.proxies[static_cast<size_t>(i)]);
       kept.seeds.push_back(c.seeds[static_cast<size_t>(i)]);
       kept.sticky.push_back(c.sticky[static_cast<size_t>(i)]);
     }
-    for (int i = 0; i < n; ++i)
-      remap[static_cast<size_t>(i)] = compact[static_cast<size_t>(remap[static_cast<size_t>(i)])];
-    kept.labels = std::move(c.labels);
-    apply_remap(kept, remap);
     c = std::move(kept);
     reflood(metric, topology, c);
     count -= merged;
