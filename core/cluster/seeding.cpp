@@ -180,12 +180,10 @@ void farthest_seeds(const std::vector<double>& weight, const MeshTopology& topol
   }
 }
 
-}  // namespace
-
-std::vector<int> seeds_per_component(const FaceData& faces, const MeshTopology& topology, int n,
-                                     double density_weight) {
+// Seeds per component for per-face seed weights (see seeds_per_component).
+std::vector<int> apportion(const std::vector<double>& weight, const MeshTopology& topology, int n) {
   const int components = topology.num_components;
-  const int total_faces = faces.num_faces();
+  const int total_faces = static_cast<int>(weight.size());
   if (n > total_faces) {
     throw InputError("asked for " + std::to_string(n) + " panels but the mesh has only " + std::to_string(total_faces) +
                      " triangles; ask for fewer panels or refine the mesh");
@@ -194,7 +192,6 @@ std::vector<int> seeds_per_component(const FaceData& faces, const MeshTopology& 
     throw InputError("the mesh has " + std::to_string(components) + " disconnected parts but only " +
                      std::to_string(n) + " panels were asked for; each part needs at least one panel");
   }
-  const std::vector<double> weight = seed_weights(faces, density_weight);
   std::vector<double> area(static_cast<size_t>(components), 0.0);  // weighted by density
   std::vector<int> capacity(static_cast<size_t>(components), 0);
   for (int f = 0; f < total_faces; ++f) {
@@ -244,10 +241,17 @@ std::vector<int> seeds_per_component(const FaceData& faces, const MeshTopology& 
   return count;
 }
 
+}  // namespace
+
+std::vector<int> seeds_per_component(const FaceData& faces, const MeshTopology& topology, int n,
+                                     double density_weight) {
+  return apportion(seed_weights(faces, density_weight), topology, n);
+}
+
 std::vector<int> place_seeds(const FaceData& faces, const MeshTopology& topology, int n, SeedingMethod method,
                              std::uint64_t seed, double density_weight) {
-  const std::vector<int> counts = seeds_per_component(faces, topology, n, density_weight);
   const std::vector<double> weight = seed_weights(faces, density_weight);
+  const std::vector<int> counts = apportion(weight, topology, n);
   const std::vector<std::vector<int>> members = component_faces(topology, faces.num_faces());
   SplitMix64 rng(seed);
   std::vector<char> taken(static_cast<size_t>(faces.num_faces()), 0);
