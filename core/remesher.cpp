@@ -1,6 +1,7 @@
 #include "core/remesher.h"
 
 #include <algorithm>
+#include <optional>
 
 #include "core/cluster/lloyd.h"
 #include "core/cluster/teleport.h"
@@ -101,12 +102,14 @@ void Remesher::set_params(RemeshParams params) {
   // Build and check everything first: bad parameters throw and leave the Remesher, and the
   // designer's last good result, exactly as they were.
   validate(params);
-  FaceData faces = params.density != params_.density ? make_face_data(mesh_, params.density) : faces_;
-  Metric(faces, params.weights, params.panels);  // throws on bad weights
+  // New face data only for a new density field (it is the largest thing a Remesher holds).
+  std::optional<FaceData> faces;
+  if (params.density != params_.density) faces = make_face_data(mesh_, params.density);
+  Metric(faces ? *faces : faces_, params.weights, params.panels);  // throws on bad weights
   const bool restart = clustering_.labels.empty() || params.seed != params_.seed || params.seeding != params_.seeding;
   const int old_panels = params_.panels;
   params_ = std::move(params);
-  faces_ = std::move(faces);
+  if (faces) faces_ = std::move(*faces);
   metric_ = Metric(faces_, params_.weights, params_.panels);
   if (restart) {
     clustering_ = Clustering{};
