@@ -28,17 +28,18 @@ std::string Args::get(const std::string& name, const std::string& fallback) cons
   return it == options.end() ? fallback : it->second;
 }
 
-long long Args::get_int(const std::string& name, long long fallback, long long lo, long long hi) const {
-  if (!has(name)) return fallback;
-  const std::string& text = options.at(name);
+long long parse_int(const std::string& text, const std::string& what, long long lo, long long hi) {
   long long v = 0;
   const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
   if (ec != std::errc() || ptr != text.data() + text.size())
-    throw UsageError("--" + name + ": '" + text + "' is not a whole number");
+    throw UsageError(what + ": '" + text + "' is not a whole number");
   if (v < lo || v > hi)
-    throw UsageError("--" + name + ": " + text + " is out of range [" + std::to_string(lo) + ", " + std::to_string(hi) +
-                     "]");
+    throw UsageError(what + ": " + text + " is out of range [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
   return v;
+}
+
+long long Args::get_int(const std::string& name, long long fallback, long long lo, long long hi) const {
+  return has(name) ? parse_int(options.at(name), "--" + name, lo, hi) : fallback;
 }
 
 std::uint64_t Args::get_u64(const std::string& name, std::uint64_t fallback) const {

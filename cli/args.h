@@ -30,6 +30,9 @@ struct Args {
   std::uint64_t get_u64(const std::string& name, std::uint64_t fallback) const;
 };
 
+// Strict whole-number parsing of `text` within [lo, hi]; `what` names it in the UsageError.
+long long parse_int(const std::string& text, const std::string& what, long long lo, long long hi);
+
 // `with_value`: options that take a value; `switches`: flags without one.
 Args parse_args(const std::vector<std::string>& argv, const std::set<std::string>& with_value,
                 const std::set<std::string>& switches);

@@ -74,6 +74,7 @@ int run_cluster(const std::vector<std::string>& argv) {
   else if (seeding != "farthest")
     throw UsageError("--seeding: expected farthest or random, got '" + seeding + "'");
   if (args.flags.count("no-teleport")) params.teleport_interval = 0;
+  params.make_panels = false;  // the Lloyd phase only
 
   const LoadedInput in = load_input(args.positional[0]);
   if (args.has("density")) params.density = load_density(args.get("density"), in);

@@ -4,7 +4,11 @@
 
 namespace ff::cli {
 
-// Each returns the process exit code (DESIGN.md 4): 0 done, 2 usage or input error.
+inline constexpr const char* kVersion = "0.1.0";
+
+// Each returns the process exit code (DESIGN.md 4): 0 done, 3 written but some panels
+// invalid, 2 usage or input error (thrown as UsageError / InputError, mapped in main).
 int run_cluster(const std::vector<std::string>& args);
+int run_remesh(const std::vector<std::string>& args);
 
 }  // namespace ff::cli

@@ -17,6 +17,21 @@ const char* kUsage =
     "usage: flatfacet <command> [options]\n"
     "\n"
     "commands:\n"
+    "  remesh INPUT --panels N [--out PANELS.obj] [--report REPORT.json] [--seed S]\n"
+    "          [--weights euclidean=1,l2=1,l21=1,density=1,boundary=1] [--density FILE]\n"
+    "          [--iterations K1,K2] [--seeding farthest|random] [--no-teleport]\n"
+    "          [--single-point-nodes] [--no-optimize]\n"
+    "      Remesh the surface into about N exactly planar panels. PANELS.obj gets one polygon\n"
+    "      per panel on shared vertices; REPORT.json the quality (planarity, Hausdorff distance,\n"
+    "      topology, valences, invalid panels) and timings. With neither, one summary line is\n"
+    "      printed. The panel phase may split clusters, so the count can exceed N.\n"
+    "      --iterations K1,K2: at most K1 Lloyd iterations (default 20) and K2 panel rounds\n"
+    "      (default 20, at least 1). --single-point-nodes: where 4+ planes meet, make them meet\n"
+    "      in one point instead of splitting the node into valence-3 nodes. --no-optimize: skip\n"
+    "      the final fit of the planes to the surface. The boundary weight (0..1e6) pulls faces\n"
+    "      towards the panel whose polygon covers them.\n"
+    "      Exit 0: every panel valid; 3: written, some panels invalid (listed in the report).\n"
+    "\n"
     "  cluster INPUT --panels N --labels LABELS.txt [--summary SUMMARY.json] [--seed S]\n"
     "          [--weights euclidean=1,l2=1,l21=1,density=1] [--density FILE]\n"
     "          [--iterations K] [--seeding farthest|random] [--no-teleport]\n"
@@ -40,12 +55,13 @@ int main(int argc, char** argv) {
     return args.empty() ? 2 : 0;
   }
   if (args[0] == "--version") {
-    std::puts("flatfacet 0.1.0");
+    std::printf("flatfacet %s\n", ff::cli::kVersion);
     return 0;
   }
   const std::string command = args[0];
   args.erase(args.begin());
   try {
+    if (command == "remesh") return ff::cli::run_remesh(args);
     if (command == "cluster") return ff::cli::run_cluster(args);
     std::fprintf(stderr, "flatfacet: unknown command '%s' (try flatfacet --help)\n", command.c_str());
     return 2;

@@ -2,9 +2,14 @@
 
 #include <algorithm>
 #include <optional>
+#include <cstdio>
+#include <cstdlib>
 
+#include "core/cluster/flood.h"
 #include "core/cluster/lloyd.h"
 #include "core/cluster/teleport.h"
+#include "core/panels/boundary_term.h"
+#include "core/panels/plane_fit.h"
 #include "core/util/error.h"
 
 namespace ff {
@@ -15,6 +20,10 @@ const char* stage_name(Stage stage) {
       return "seeding";
     case Stage::Lloyd:
       return "lloyd";
+    case Stage::Panels:
+      return "panels";
+    case Stage::Optimize:
+      return "optimize";
     case Stage::Done:
       return "done";
   }
@@ -32,6 +41,8 @@ Remesher::Remesher(TriMesh mesh, RemeshParams params)
       faces_(make_face_data(mesh_, params_.density)),
       metric_(faces_, params_.weights, std::max(1, params_.panels)) {
   validate(params_);
+  local_positions_.reserve(mesh_.positions.size());
+  for (const Vec3& p : mesh_.positions) local_positions_.push_back((p - faces_.origin) / faces_.scale);
   progress_ = Progress{Stage::Seeding, 0, 1, 0.0, 0};
 }
 
@@ -40,14 +51,111 @@ void Remesher::validate(const RemeshParams& p) const {
   if (p.lloyd_iterations < 0 || p.lloyd_iterations > kMaxIterations)
     throw InputError("iterations must be between 0 and " + std::to_string(kMaxIterations));
   if (p.teleport_interval < 0 || p.teleport_moves < 0) throw InputError("teleport interval and moves must be >= 0");
+  if (p.panel_rounds < 0 || p.panel_rounds > kMaxIterations)
+    throw InputError("panel rounds must be between 0 and " + std::to_string(kMaxIterations));
   seeds_per_component(faces_, topology_, p.panels);  // throws on too many / too few panels
 }
 
 void Remesher::start_lloyd() {
   lloyd_done_ = 0;
   converged_ = false;
+  best_.reset();
+  panel_rounds_done_ = 0;
+  stalled_rounds_ = 0;
   progress_ = Progress{Stage::Lloyd, 0, params_.lloyd_iterations, clustering_.energy * faces_.area_to_world(), 0};
-  if (params_.lloyd_iterations == 0) progress_.stage = Stage::Done;
+  if (params_.lloyd_iterations == 0) after_lloyd();
+}
+
+void Remesher::after_lloyd() {
+  if (!params_.make_panels) {
+    progress_.stage = Stage::Done;
+    return;
+  }
+  progress_ = Progress{Stage::Panels, 0, std::max(1, params_.panel_rounds), progress_.energy, 0};
+}
+
+namespace {
+
+// A Lloyd iteration of the panel phase: the clustering metric plus the boundary term.
+void panel_lloyd_iteration(const Metric& metric, const MeshTopology& topology, Clustering& clustering,
+                           const ExtraCost* extra) {
+  choose_seeds(metric, clustering);
+  flood(metric, topology, clustering, extra);
+  refit(metric, clustering);
+  for (int& s : clustering.sticky) {
+    if (s > 0) --s;
+  }
+}
+
+}  // namespace
+
+void Remesher::panel_round() {
+  PanelAttemptOptions options;
+  options.layout.diameter = metric_.diameter();
+  auto attempt = std::make_unique<PanelAttempt>(mesh_, topology_, local_positions_, faces_, clustering_, options);
+  const int invalid = attempt->num_invalid();
+  if (getenv("FF_DEBUG")) { for (size_t c = 0; c < attempt->graph().problems.size(); ++c) if (attempt->graph().problems[c]) fprintf(stderr, "cluster %zu problem %u\n", c, attempt->graph().problems[c]); }
+  ++panel_rounds_done_;
+  progress_.iteration = panel_rounds_done_;
+  progress_.invalid_panels = invalid;
+  const bool last = invalid == 0 || panel_rounds_done_ >= std::max(1, params_.panel_rounds);
+  const bool improved = !best_ || invalid < best_->num_invalid();
+  stalled_rounds_ = improved ? 0 : stalled_rounds_ + 1;
+  if (last) {
+    if (!best_ || invalid <= best_->num_invalid()) best_ = std::move(attempt);
+    finish_panels();
+    return;
+  }
+  // Fix what the layout could not: split near the problems (merging elsewhere to keep n),
+  // then a Lloyd iteration with the boundary term of the panels that did work.
+  // Clusters that are not disks split at once. Invalid panels get a split near their problem
+  // only when the rounds stall: a split refloods its neighbourhood, while the boundary term
+  // alone converges steadily as long as it makes progress.
+  const bool stalled = stalled_rounds_ >= 2;
+  if (stalled) stalled_rounds_ = 0;
+  const std::vector<std::pair<int, int>> requests = split_requests(mesh_, topology_, *attempt, stalled ? 1 : 0);
+  std::vector<char> protect(static_cast<size_t>(clustering_.num_clusters()), 0);
+  for (const auto& [a, b] : adjacent_cluster_pairs(topology_, clustering_.labels)) {
+    for (const auto& request : requests) {
+      if (request.first == a) protect[static_cast<size_t>(b)] = 1;
+      if (request.first == b) protect[static_cast<size_t>(a)] = 1;
+    }
+  }
+  const std::vector<int> seeds_before = clustering_.seeds;
+  split_near(metric_, topology_, clustering_, requests, protect, 3, /*reflood_after=*/false);
+  relocate_clusters(metric_, clustering_, enclosed_clusters(*attempt));
+  if (params_.weights.boundary > 0.0) {
+    BoundaryTerm term(faces_, attempt->layout(), params_.weights.boundary, metric_.diameter());
+    // Clusters moved by the splits have no panel of their own yet.
+    for (int c = 0; c < clustering_.num_clusters(); ++c) {
+      if (static_cast<size_t>(c) >= seeds_before.size() || seeds_before[static_cast<size_t>(c)] != clustering_.seeds[static_cast<size_t>(c)])
+        term.ignore(c);
+    }
+    panel_lloyd_iteration(metric_, topology_, clustering_, &term);
+  } else {
+    panel_lloyd_iteration(metric_, topology_, clustering_, nullptr);
+  }
+  progress_.energy = clustering_.energy * faces_.area_to_world();
+  if (improved) best_ = std::move(attempt);
+}
+
+void Remesher::finish_panels() {
+  clustering_ = best_->clustering();
+  progress_.energy = clustering_.energy * faces_.area_to_world();
+  panels_ = best_->layout().to_panel_mesh(faces_);
+  progress_.invalid_panels = panels_.num_invalid();
+  const bool optimize = params_.optimize_planes && panels_.num_invalid() == 0;
+  progress_.stage = optimize ? Stage::Optimize : Stage::Done;
+  if (optimize) progress_ = Progress{Stage::Optimize, 0, 1, progress_.energy, 0};
+}
+
+void Remesher::optimize_planes() {
+  PanelLayout& layout = best_->layout();
+  layout.try_planes(surface_fit_planes(faces_, best_->clustering().labels, layout.planes()));
+  panels_ = layout.to_panel_mesh(faces_);
+  progress_.iteration = 1;
+  progress_.invalid_panels = panels_.num_invalid();
+  progress_.stage = Stage::Done;
 }
 
 Progress Remesher::step() {
@@ -77,9 +185,15 @@ Progress Remesher::step() {
       lloyd_done_ = it;
       progress_.iteration = it;
       progress_.energy = clustering_.energy * faces_.area_to_world();
-      if (converged_ || it >= params_.lloyd_iterations) progress_.stage = Stage::Done;
+      if (converged_ || it >= params_.lloyd_iterations) after_lloyd();
       break;
     }
+    case Stage::Panels:
+      panel_round();
+      break;
+    case Stage::Optimize:
+      optimize_planes();
+      break;
     case Stage::Done:
       break;
   }

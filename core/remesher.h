@@ -3,9 +3,11 @@
 // work (seeding, or one Lloyd iteration) and returns Progress, so the CLI, the tests and the
 // web worker drive the same object and can stop, report or change parameters between steps.
 //
-// Stages so far: Seeding -> Lloyd (k1 iterations, teleports every few) -> Done. The panel
-// phase (corners, plane intersection, fixes) slots in between Lloyd and Done.
+// Stages: Seeding -> Lloyd (k1 iterations, teleports every few) -> Panels (up to k2 rounds of
+// corners -> intersect planes -> validate -> fix -> Lloyd with the boundary term) ->
+// Optimize (the planes themselves, least squares, once the combinatorics settled) -> Done.
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -15,6 +17,8 @@
 #include "core/cluster/seeding.h"
 #include "core/mesh/topology.h"
 #include "core/mesh/tri_mesh.h"
+#include "core/panels/panel_attempt.h"
+#include "core/panels/panel_mesh.h"
 
 namespace ff {
 
@@ -28,9 +32,15 @@ struct RemeshParams {
   SeedingMethod seeding = SeedingMethod::FarthestPoint;
   int teleport_interval = 4;  // teleport before every 4th iteration; 0 = never
   int teleport_moves = 0;     // moves per teleport; 0 = automatic (1 per 64 clusters, >= 1)
+  bool make_panels = true;    // false: stop after the Lloyd phase (`flatfacet cluster`)
+  int panel_rounds = 20;      // k2: an upper bound; stops at the first valid panel mesh
+  // Where four or more planes meet: false (default) splits the node into valence-3 nodes
+  // joined by short edges; true makes all of them pass through one point (paper 2.2).
+  bool single_point_nodes = false;
+  bool optimize_planes = true;  // beyond the paper: fit the planes to the surface at the end
 };
 
-enum class Stage { Seeding, Lloyd, Done };
+enum class Stage { Seeding, Lloyd, Panels, Optimize, Done };
 const char* stage_name(Stage stage);
 
 struct Progress {
@@ -69,6 +79,10 @@ class Remesher {
   const RemeshParams& params() const { return params_; }
   const Clustering& clustering() const { return clustering_; }
   const Metric& metric() const { return metric_; }
+  // The panels of the last panel round (empty before the panel phase): the valid result when
+  // there is one, else the round with the fewest invalid panels, its problems listed per panel.
+  const PanelMesh& panels() const { return panels_; }
+  int panel_rounds_done() const { return panel_rounds_done_; }
   // Energy of the current clustering by term, in world units (areas of the input mesh).
   EnergyTerms energy() const;
   int lloyd_iterations_done() const { return lloyd_done_; }
@@ -78,6 +92,10 @@ class Remesher {
  private:
   void validate(const RemeshParams& params) const;
   void start_lloyd();
+  void after_lloyd();
+  void panel_round();
+  void optimize_planes();
+  void finish_panels();
 
   TriMesh mesh_;
   MeshTopology topology_;
@@ -86,6 +104,11 @@ class Remesher {
   Metric metric_;
   Clustering clustering_;
   Progress progress_;
+  std::vector<Vec3> local_positions_;  // mesh vertices in the frame of faces_
+  std::unique_ptr<PanelAttempt> best_;  // the attempt with the fewest invalid panels so far
+  PanelMesh panels_;
+  int panel_rounds_done_ = 0;
+  int stalled_rounds_ = 0;  // panel rounds since the fewest invalid panels went down
   int lloyd_done_ = 0;
   int teleports_ = 0;
   bool converged_ = false;

@@ -66,6 +66,10 @@ class QuadHeap {
 }  // namespace
 
 double flood(const Metric& metric, const MeshTopology& topology, Clustering& clustering) {
+  return flood(metric, topology, clustering, nullptr);
+}
+
+double flood(const Metric& metric, const MeshTopology& topology, Clustering& clustering, const ExtraCost* extra) {
   const int faces = metric.faces().num_faces();
   const int n = clustering.num_clusters();
 
@@ -94,6 +98,7 @@ double flood(const Metric& metric, const MeshTopology& topology, Clustering& clu
       FaceState& s = state[static_cast<size_t>(g)];
       if (s.label >= 0 || s.best_cluster == cluster) continue;
       double c = metric.cost(g, terms[static_cast<size_t>(cluster)]);
+      if (extra) c += (*extra)(g, cluster);
       // Costs are finite for validated input; should one not be, the face must still be
       // reached (an unassigned face would break every caller), just last.
       if (!(c <= std::numeric_limits<double>::max())) c = std::numeric_limits<double>::max();
@@ -117,7 +122,7 @@ double flood(const Metric& metric, const MeshTopology& topology, Clustering& clu
   for (int f = 0; f < faces; ++f) {
     const int label = state[static_cast<size_t>(f)].label;
     if (label < 0) continue;
-    energy += metric.cost(f, terms[static_cast<size_t>(label)]);
+    energy += metric.cost(f, terms[static_cast<size_t>(label)]) + (extra ? (*extra)(f, label) : 0.0);
     push_neighbours(f, label);
   }
   while (!queue.empty()) {

@@ -20,4 +20,15 @@ namespace ff {
 // energy before to keep the iteration monotone.
 double flood(const Metric& metric, const MeshTopology& topology, Clustering& clustering);
 
+// A cost added to the metric's for a face in a cluster: the panel phase's boundary term
+// (paper 3.2, fifth metric). Must be finite and >= 0.
+class ExtraCost {
+ public:
+  virtual ~ExtraCost() = default;
+  virtual double operator()(int face, int cluster) const = 0;
+};
+
+// flood() with `extra` added to every cost (nullptr: none).
+double flood(const Metric& metric, const MeshTopology& topology, Clustering& clustering, const ExtraCost* extra);
+
 }  // namespace ff

@@ -121,6 +121,73 @@ int teleport(const Metric& metric, const MeshTopology& topology, Clustering& c, 
   return moves;
 }
 
+int split_near(const Metric& metric, const MeshTopology& topology, Clustering& c,
+               const std::vector<std::pair<int, int>>& requests, const std::vector<char>& protect,
+               int sticky_iterations, bool reflood_after) {
+  ClusterStats s = cluster_stats(metric, c);
+  const std::vector<MergeCandidate> merges = merge_candidates(metric, topology, c, s);
+  std::vector<char> used(protect.begin(), protect.end());
+  used.resize(static_cast<size_t>(c.num_clusters()), 0);
+  std::vector<char> split(static_cast<size_t>(c.num_clusters()), 0);
+  for (const auto& [w, face] : requests) {
+    if (w >= 0 && w < c.num_clusters()) used[static_cast<size_t>(w)] = 1;
+  }
+  size_t next_merge = 0;
+  int splits = 0;
+  for (const auto& [w, face] : requests) {
+    if (w < 0 || w >= c.num_clusters() || face < 0 || face >= static_cast<int>(c.labels.size())) continue;
+    if (c.labels[static_cast<size_t>(face)] != w || c.seeds[static_cast<size_t>(w)] == face) continue;
+    if (split[static_cast<size_t>(w)]) continue;
+    split[static_cast<size_t>(w)] = 1;
+    while (next_merge < merges.size() &&
+           (used[static_cast<size_t>(merges[next_merge].a)] || used[static_cast<size_t>(merges[next_merge].b)])) {
+      ++next_merge;
+    }
+    int id = c.num_clusters();
+    if (next_merge < merges.size()) {
+      const MergeCandidate& m = merges[next_merge];
+      used[static_cast<size_t>(m.a)] = used[static_cast<size_t>(m.b)] = 1;
+      merge_into(metric, c, s, m.a, m.b);
+      id = m.b;
+    } else {
+      c.proxies.emplace_back();
+      c.seeds.push_back(-1);
+      c.sticky.push_back(0);
+    }
+    c.proxies[static_cast<size_t>(id)] = single_face_proxy(metric.faces(), face, c.proxies[static_cast<size_t>(w)].normal);
+    c.seeds[static_cast<size_t>(id)] = face;
+    c.sticky[static_cast<size_t>(id)] = sticky_iterations;
+    c.sticky[static_cast<size_t>(w)] = std::max(c.sticky[static_cast<size_t>(w)], sticky_iterations);
+    ++splits;
+  }
+  if (splits > 0 && reflood_after) reflood(metric, topology, c);
+  return splits;
+}
+
+int relocate_clusters(const Metric& metric, Clustering& c, const std::vector<int>& clusters, int sticky_iterations) {
+  if (clusters.empty()) return 0;
+  const ClusterStats s = cluster_stats(metric, c);
+  std::vector<char> moving(static_cast<size_t>(c.num_clusters()), 0);
+  for (int e : clusters) {
+    if (e >= 0 && e < c.num_clusters()) moving[static_cast<size_t>(e)] = 1;
+  }
+  const std::vector<int> worst = worst_first(s.energy);
+  size_t next = 0;
+  int moves = 0;
+  for (int e : clusters) {
+    if (e < 0 || e >= c.num_clusters()) continue;
+    while (next < worst.size() &&
+           (moving[static_cast<size_t>(worst[next])] || s.worst_face[static_cast<size_t>(worst[next])] < 0)) {
+      ++next;
+    }
+    if (next == worst.size()) break;
+    const int w = worst[next++];
+    split_into(metric, c, s, w, e, sticky_iterations);
+    ++moves;
+  }
+  return moves;
+}
+
 void add_clusters(const Metric& metric, const MeshTopology& topology, Clustering& c, int count, int sticky_iterations) {
   while (count > 0) {
     const ClusterStats s = cluster_stats(metric, c);

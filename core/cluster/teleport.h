@@ -25,6 +25,23 @@ int teleport(const Metric& metric, const MeshTopology& topology, Clustering& clu
 void add_clusters(const Metric& metric, const MeshTopology& topology, Clustering& clustering, int count,
                   int sticky_iterations = 3);
 
+// Seeds a new cluster at each (cluster, face) request (the face must belong to that cluster
+// and not be its seed; others are skipped): near a problem, "split a plane near the problem
+// area and merge two planes elsewhere" (paper 2.3). For each split the cheapest adjacent pair
+// of clusters not in `protect` and not split here is merged, so n stays, unless no such
+// pair is left (then n grows). New clusters are sticky. Refloods when `reflood_after` (else
+// the caller floods next, e.g. with an extra cost). Returns the splits made.
+int split_near(const Metric& metric, const MeshTopology& topology, Clustering& clustering,
+               const std::vector<std::pair<int, int>>& requests, const std::vector<char>& protect,
+               int sticky_iterations = 3, bool reflood_after = true);
+
+// Moves each given cluster to the worst face of the worst cluster (by energy; a different
+// one per move): its old faces go to its neighbours at the next flood. For clusters that
+// cannot be panels where they are (enclosed by one neighbour). Sticky; no reflood (the
+// caller floods next). Returns the moves made.
+int relocate_clusters(const Metric& metric, Clustering& clustering, const std::vector<int>& clusters,
+                      int sticky_iterations = 3);
+
 // Removes `count` clusters by merging the cheapest adjacent pairs, renumbers labels to stay
 // in [0, n - count), then refloods.
 void remove_clusters(const Metric& metric, const MeshTopology& topology, Clustering& clustering, int count);

@@ -42,4 +42,10 @@ RawMesh read_mesh_file(const std::string& path);
 // Writes `v` lines at full precision (%.17g) and one 1-based `f` line per triangle.
 void write_obj(std::ostream& out, const TriMesh& mesh);
 
+// A polygon mesh as OBJ text (the panels file, DESIGN.md 4): optional `# ` comment lines (one
+// per line of `comment`), shared `v` lines at %.17g, one 1-based `f` line per polygon without
+// texture or normal indices. Face indices must lie in [0, vertices.size()).
+std::string write_polygon_obj(const std::vector<Vec3>& vertices, const std::vector<std::vector<int>>& faces,
+                              const std::string& comment = {});
+
 }  // namespace ff

@@ -11,7 +11,8 @@ fail=0
 ok() { pass=$((pass + 1)); }
 bad() { fail=$((fail + 1)); echo "FAIL: $*"; }
 
-# expect_error CODE PATTERN ARGS...: exit code, one stderr line matching PATTERN, no labels file.
+# expect_error CODE PATTERN ARGS...: exit code, one stderr line matching PATTERN, and no
+# output: commands under test write only to $tmp/never.* (labels, summary, panels, report).
 expect_error() {
   local code=$1 pattern=$2
   shift 2
@@ -22,8 +23,8 @@ expect_error() {
   lines=$(wc -l <"$tmp/err.txt")
   if [ "$got" != "$code" ]; then bad "exit $got (want $code): $*"; cat "$tmp/err.txt"; return; fi
   if [ "$lines" != 1 ]; then bad "$lines stderr lines (want 1): $*"; cat "$tmp/err.txt"; return; fi
-  if ! grep -qiE "$pattern" "$tmp/err.txt"; then bad "message '$(cat "$tmp/err.txt")' lacks /$pattern/: $*"; return; fi
-  if [ -e "$tmp/never.txt" ]; then bad "an output was written despite the error: $*"; rm -f "$tmp/never.txt"; return; fi
+  if ! grep -qiE -e "$pattern" "$tmp/err.txt"; then bad "message '$(cat "$tmp/err.txt")' lacks /$pattern/: $*"; return; fi
+  if compgen -G "$tmp/never.*" >/dev/null; then bad "an output was written despite the error: $*"; rm -f "$tmp"/never.*; return; fi
   ok
 }
 
@@ -99,6 +100,161 @@ expect_error 2 "unknown option" cluster "$meshes/epcot.off" --panels 5 --bogus 1
 expect_error 2 "required" cluster "$meshes/epcot.off" --labels "$tmp/never.txt"
 expect_error 2 "weights" cluster "$meshes/epcot.off" --panels 5 --weights l3=1 --labels "$tmp/never.txt"
 expect_error 2 "unknown command" frobnicate
+
+# ----- remesh ----------------------------------------------------------------------------
+# check_remesh CODE OBJ REPORT REQUESTED: the report has every DESIGN.md 4 key, the exit code
+# agrees with it, the OBJ agrees with the report and its panels are planar and consistently
+# oriented (read back from the %.17g text, independently of the core).
+check_remesh() {
+  python3 - "$@" <<'PY'
+import json, math, sys
+code, obj_path, report_path, requested = int(sys.argv[1]), sys.argv[2], sys.argv[3], int(sys.argv[4])
+r = json.load(open(report_path))
+design = ["panels", "vertices", "max_planarity", "hausdorff", "topology_preserved", "euler_in", "euler_out",
+          "boundary_loops_in", "boundary_loops_out", "flipped_edges", "non_star_panels", "spike_vertices",
+          "invalid_panels", "interior_valence", "min_corner_angle_deg", "seed", "timings_s"]
+more = ["input", "input_triangles", "triangles", "cleanup", "requested_panels", "hausdorff_input_to_panels",
+        "hausdorff_panels_to_input", "valence3_share", "oriented_manifold", "misoriented_panels",
+        "non_simple_panels", "iterations", "weights", "invalid", "energy"]
+missing = [k for k in design + more if k not in r]
+assert not missing, missing
+for k in ("prepare", "cluster", "panels", "total"):
+    assert isinstance(r["timings_s"][k], (int, float)) and r["timings_s"][k] >= 0, k
+assert set(r["iterations"]) >= {"lloyd", "panel_rounds"}, r["iterations"]
+assert set(r["weights"]) == {"euclidean", "l2", "l21", "density", "boundary"}, r["weights"]
+assert all(k.isdigit() and isinstance(v, int) for k, v in r["interior_valence"].items()), r["interior_valence"]
+assert r["requested_panels"] == requested, r["requested_panels"]
+# Exit code and report agree; every invalid panel is listed with its problems.
+assert len(r["invalid"]) == r["invalid_panels"], (len(r["invalid"]), r["invalid_panels"])
+for entry in r["invalid"]:
+    assert set(entry) >= {"panel", "cluster", "problems", "vertices"} and entry["problems"], entry
+valid = r["panels"] > 0 and r["invalid_panels"] == 0
+assert code == (0 if valid else 3), ("exit", code, "panels", r["panels"], "invalid", r["invalid_panels"])
+# The panel phase must produce panels (fails until it lands).
+assert r["panels"] > 0, "no panels"
+# The OBJ: exactly `vertices` v-lines and `panels` f-lines, every vertex used, panels planar
+# after the text round trip, no directed edge used twice (consistently oriented).
+vs, fs = [], []
+for line in open(obj_path):
+    t = line.split()
+    if not t or t[0] == "#": continue
+    if t[0] == "v": vs.append(tuple(float(x) for x in t[1:4]))
+    elif t[0] == "f": fs.append([int(x) - 1 for x in t[1:]])
+    else: raise AssertionError("unexpected line " + line)
+assert len(vs) == r["vertices"] and len(fs) == r["panels"], (len(vs), r["vertices"], len(fs), r["panels"])
+assert all(len(set(f)) == len(f) >= 3 and all(0 <= i < len(vs) for i in f) for f in fs), "bad face"
+assert {i for f in fs for i in f} == set(range(len(vs))), "unused vertices"
+directed = [(f[k], f[(k + 1) % len(f)]) for f in fs for k in range(len(f))]
+assert len(set(directed)) == len(directed), "a directed edge is used twice"
+worst = 0.0
+for f in fs:
+    p = [vs[i] for i in f]
+    n = [0.0, 0.0, 0.0]  # Newell normal
+    for a, b in zip(p, p[1:] + p[:1]):
+        n[0] += (a[1] - b[1]) * (a[2] + b[2]); n[1] += (a[2] - b[2]) * (a[0] + b[0]); n[2] += (a[0] - b[0]) * (a[1] + b[1])
+    ln = math.sqrt(sum(x * x for x in n))
+    if ln == 0: continue
+    c = [sum(q[k] for q in p) / len(p) for k in range(3)]
+    diam = max(math.dist(a, b) for a in p for b in p)
+    dev = max(abs(sum(n[k] / ln * (q[k] - c[k]) for k in range(3))) for q in p)
+    worst = max(worst, dev / diam)
+assert worst <= 1e-9, ("planarity from the OBJ", worst)
+assert r["max_planarity"] <= 1e-9, r["max_planarity"]
+PY
+}
+
+mi="$meshes/inspired_mesh.obj"
+"$bin" remesh "$mi" --panels 60 --seed 2 --out "$tmp/p1.obj" --report "$tmp/r1.json" 2>"$tmp/err.txt"
+code=$?
+if [ "$code" != 0 ] && [ "$code" != 3 ]; then
+  bad "remesh inspired_mesh exit $code: $(cat "$tmp/err.txt")"
+else
+  [ -s "$tmp/err.txt" ] && bad "remesh wrote to stderr: $(cat "$tmp/err.txt")" || ok
+  check_remesh "$code" "$tmp/p1.obj" "$tmp/r1.json" 60 && ok || bad "remesh inspired_mesh output/report check (exit $code)"
+  # The OBJ names the tool and the input in comment lines.
+  head -3 "$tmp/p1.obj" | grep -q "^# flatfacet .*remesh" && grep -q "^# input: .*inspired_mesh.obj" "$tmp/p1.obj" && ok ||
+    bad "remesh OBJ comment lines"
+  # DESIGN.md 5 target: a simple open roof at a moderate panel count gives every panel valid.
+  [ "$code" = 0 ] && ok || bad "remesh inspired_mesh 60 panels: exit $code, want 0 (every panel valid)"
+fi
+# Determinism: the same input, options and seed give identical panels and the same report
+# apart from timings.
+"$bin" remesh "$mi" --panels 60 --seed 2 --out "$tmp/p2.obj" --report "$tmp/r2.json" 2>/dev/null
+cmp -s "$tmp/p1.obj" "$tmp/p2.obj" && ok || bad "remesh: same seed gave different OBJ bytes"
+python3 -c "
+import json, sys
+a, b = (json.load(open(p)) for p in sys.argv[1:])
+a.pop('timings_s'); b.pop('timings_s')
+assert a == b" "$tmp/r1.json" "$tmp/r2.json" && ok || bad "remesh: same seed gave different reports"
+
+# More shapes: closed (epcot), genus 3 (3holes), three boundary loops of quads (YasIsland),
+# with the other switches; each checked like the first.
+for spec in "epcot.off 40" "3holes.off 80 --single-point-nodes" "YasIsland.off 50 --no-optimize --seeding random" \
+  "bumpy.off 40 --iterations 10,5 --weights euclidean=1,l2=1,l21=2,boundary=2 --no-teleport"; do
+  set -- $spec
+  name=$1 n=$2
+  shift 2
+  "$bin" remesh "$meshes/$name" --panels "$n" "$@" --out "$tmp/$name.obj" --report "$tmp/$name.report.json" \
+    2>"$tmp/err.txt"
+  code=$?
+  if [ "$code" != 0 ] && [ "$code" != 3 ]; then bad "remesh $spec: exit $code $(cat "$tmp/err.txt")"; continue; fi
+  check_remesh "$code" "$tmp/$name.obj" "$tmp/$name.report.json" "$n" && ok || bad "remesh $spec: check (exit $code)"
+done
+# Topology on valid results: same Euler characteristic and boundary loops as the input.
+python3 - "$tmp"/*.report.json "$tmp/r1.json" <<'PY' && ok || bad "remesh: a valid result changed the topology"
+import json, sys
+for path in sys.argv[1:]:
+    r = json.load(open(path))
+    if r["panels"] > 0 and r["invalid_panels"] == 0:
+        assert r["topology_preserved"] and r["euler_in"] == r["euler_out"], path
+        assert r["boundary_loops_in"] == r["boundary_loops_out"], path
+PY
+
+# Density per vertex (the bunny file from above) works for remesh too.
+"$bin" remesh "$m" --panels 50 --density "$tmp/density.txt" --report "$tmp/rd.json" 2>/dev/null
+code=$?
+[ "$code" = 0 ] || [ "$code" = 3 ] && python3 -c "import json; json.load(open('$tmp/rd.json'))" && ok ||
+  bad "remesh with --density (exit $code)"
+
+# Neither --out nor --report: one summary line on stdout and nothing written.
+mkdir -p "$tmp/quiet"
+(cd "$tmp/quiet" && "$bin" remesh "$meshes/epcot.off" --panels 30 >"$tmp/stdout.txt" 2>"$tmp/err.txt")
+code=$?
+if [ "$code" = 0 ] || [ "$code" = 3 ]; then
+  [ "$(wc -l <"$tmp/stdout.txt")" = 1 ] && grep -q "panels" "$tmp/stdout.txt" && [ ! -s "$tmp/err.txt" ] &&
+    [ -z "$(ls -A "$tmp/quiet")" ] && ok || bad "remesh summary line: $(cat "$tmp/stdout.txt" "$tmp/err.txt")"
+else
+  bad "remesh without outputs: exit $code $(cat "$tmp/err.txt")"
+fi
+
+# Usage errors: exit 2, one line, nothing written.
+e="$meshes/epcot.off"
+o=(--out "$tmp/never.obj" --report "$tmp/never.json")
+expect_error 2 "--panels.*required" remesh "$e" "${o[@]}"
+expect_error 2 "INPUT" remesh --panels 10 "${o[@]}"
+expect_error 2 "iterations.*K1,K2" remesh "$e" --panels 10 --iterations 5 "${o[@]}"
+expect_error 2 "iterations.*'a'.*whole number" remesh "$e" --panels 10 --iterations a,b "${o[@]}"
+expect_error 2 "iterations.*-1.*range" remesh "$e" --panels 10 --iterations -1,2 "${o[@]}"
+expect_error 2 "iterations.*K1,K2" remesh "$e" --panels 10 --iterations 1,2,3 "${o[@]}"
+expect_error 2 "unknown option --frobnicate" remesh "$e" --panels 10 --frobnicate "${o[@]}"
+expect_error 2 "thickness.*not supported yet" remesh "$e" --panels 10 --thickness 0.02 "${o[@]}"
+expect_error 2 "glass.*not supported yet" remesh "$e" --panels 10 --glass "${o[@]}"
+expect_error 2 "min-angle.*not supported yet" remesh "$e" --panels 10 --min-angle=15 "${o[@]}"
+expect_error 2 "parts.*not supported yet" remesh "$e" --panels 10 --parts "$tmp/never.csv" "${o[@]}"
+expect_error 2 "seeding" remesh "$e" --panels 10 --seeding spiral "${o[@]}"
+expect_error 2 "weights" remesh "$e" --panels 10 --weights boundary=x "${o[@]}"
+expect_error 2 "same file" remesh "$e" --panels 10 --out "$tmp/never.x" --report "$tmp/never.x"
+expect_error 2 "panels.*triangles|triangles.*panels" remesh "$e" --panels 99999 "${o[@]}"
+# Input errors: exit 2, one line naming the problem, nothing written.
+expect_error 2 "cannot open" remesh "$tmp/missing.obj" --panels 10 "${o[@]}"
+expect_error 2 "OBJ" remesh "$tmp/garbage.obj" --panels 10 "${o[@]}"
+expect_error 2 "empty" remesh "$tmp/empty.off" --panels 10 "${o[@]}"
+expect_error 2 "non-manifold edge" remesh "$tmp/nonmanifold.obj" --panels 1 "${o[@]}"
+expect_error 2 "density.*3 values" remesh "$m" --panels 10 --density "$tmp/short.txt" "${o[@]}"
+# An output that cannot be written: exit 2 and the other output not left behind.
+expect_error 2 "cannot write" remesh "$e" --panels 10 --report "$tmp/never.json" --out "$tmp/no/such/dir/p.obj"
+# The usage text names the command.
+"$bin" --help | grep -q "remesh INPUT --panels N" && ok || bad "--help lacks remesh"
 
 echo "$pass passed, $fail failed"
 [ "$fail" = 0 ]

@@ -1,0 +1,158 @@
+// `flatfacet remesh`: the whole pipeline (prepare -> Lloyd phase -> panel phase -> quality),
+// writing the panels OBJ and the report JSON (DESIGN.md 4).
+#include <chrono>
+#include <cstdio>
+#include <string>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+#include "cli/args.h"
+#include "cli/commands.h"
+#include "cli/input.h"
+#include "cli/output.h"
+#include "cli/remesh_report.h"
+#include "core/mesh/mesh_io.h"
+#include "core/quality/report.h"
+#include "core/remesher.h"
+
+namespace ff::cli {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+constexpr long long kMaxIterations = 100000;  // the Remesher's own limit for k1
+
+// Options DESIGN.md 4 names that belong to later releases: refused by name, so nobody takes
+// a silently ignored --thickness for a thickness-aware result.
+void refuse_later_options(const std::vector<std::string>& argv) {
+  const std::pair<const char*, const char*> later[] = {
+      {"thickness", "fabrication comes in a later release"},
+      {"parts", "parts lists come with fabrication in a later release"},
+      {"glass", "glass mode comes in a later release"},
+      {"min-angle", "minimum corner angles come with glass mode in a later release"},
+  };
+  for (const std::string& a : argv) {
+    if (a.compare(0, 2, "--") != 0) continue;
+    const std::string name = a.substr(2, a.find('=') == std::string::npos ? std::string::npos : a.find('=') - 2);
+    for (const auto& [option, why] : later) {
+      if (name == option) throw UsageError("--" + name + ": not supported yet (" + why + ")");
+    }
+  }
+}
+
+// "K1,K2": at most K1 Lloyd iterations, at most K2 panel rounds.
+std::pair<int, int> parse_iterations(const std::string& text) {
+  const size_t comma = text.find(',');
+  if (comma == std::string::npos || text.find(',', comma + 1) != std::string::npos)
+    throw UsageError("--iterations: expected K1,K2 (Lloyd iterations, panel rounds), got '" + text + "'");
+  const long long k1 = parse_int(text.substr(0, comma), "--iterations K1", 0, kMaxIterations);
+  // At least one panel round: without one there are no panels to write.
+  const long long k2 = parse_int(text.substr(comma + 1), "--iterations K2", 1, kMaxIterations);
+  return {static_cast<int>(k1), static_cast<int>(k2)};
+}
+
+struct Options {
+  RemeshParams params;
+  std::string input, seeding, out, report;
+  std::string density;  // a file, read once the mesh is loaded (its length is checked against it)
+};
+
+Options parse_options(const std::vector<std::string>& argv) {
+  refuse_later_options(argv);
+  const Args args = parse_args(argv, {"panels", "seed", "weights", "density", "iterations", "out", "report", "seeding"},
+                               {"single-point-nodes", "no-optimize", "no-teleport"});
+  if (args.positional.size() != 1) throw UsageError("expected exactly one INPUT mesh (see flatfacet --help)");
+  if (!args.has("panels")) throw UsageError("--panels N is required");
+  Options o;
+  o.input = args.positional[0];
+  RemeshParams& p = o.params;
+  p.panels = static_cast<int>(args.get_int("panels", 0, 1, 10'000'000));
+  p.seed = args.get_u64("seed", 1);
+  if (args.has("iterations")) std::tie(p.lloyd_iterations, p.panel_rounds) = parse_iterations(args.get("iterations"));
+  if (args.has("weights")) p.weights = parse_weights(args.get("weights"));
+  o.seeding = args.get("seeding", "farthest");
+  if (o.seeding == "random")
+    p.seeding = SeedingMethod::Random;
+  else if (o.seeding != "farthest")
+    throw UsageError("--seeding: expected farthest or random, got '" + o.seeding + "'");
+  if (args.flags.count("no-teleport")) p.teleport_interval = 0;
+  p.single_point_nodes = args.flags.count("single-point-nodes") != 0;
+  p.optimize_planes = args.flags.count("no-optimize") == 0;
+  p.make_panels = true;
+  o.out = args.get("out");
+  o.report = args.get("report");
+  if (args.has("out") && o.out.empty()) throw UsageError("--out: empty file name");
+  if (args.has("report") && o.report.empty()) throw UsageError("--report: empty file name");
+  if (!o.out.empty() && o.out == o.report) throw UsageError("--out and --report name the same file '" + o.out + "'");
+  if (args.has("density")) {
+    o.density = args.get("density");
+    if (o.density.empty()) throw UsageError("--density: empty file name");
+  }
+  return o;
+}
+
+// The panels on the vertices they use, in their original order: the OBJ then has exactly
+// the report's `vertices` v-lines (which counts used vertices only).
+PanelMesh used_vertices_only(const PanelMesh& pm) {
+  std::vector<int> index(pm.vertices.size(), -1);
+  for (const std::vector<int>& panel : pm.panels)
+    for (const int v : panel) index[static_cast<size_t>(v)] = 0;
+  PanelMesh out;
+  for (size_t v = 0; v < index.size(); ++v) {
+    if (index[v] < 0) continue;
+    index[v] = static_cast<int>(out.vertices.size());
+    out.vertices.push_back(pm.vertices[v]);
+  }
+  out.panels = pm.panels;
+  for (std::vector<int>& panel : out.panels)
+    for (int& v : panel) v = index[static_cast<size_t>(v)];
+  return out;
+}
+
+}  // namespace
+
+int run_remesh(const std::vector<std::string>& argv) {
+  const auto t_start = Clock::now();
+  Options o = parse_options(argv);
+
+  RemeshTimings timings;
+  const LoadedInput in = load_input(o.input);
+  if (!o.density.empty()) o.params.density = load_density(o.density, in);
+  const int requested = o.params.panels;
+  // Building the Remesher builds the topology and the face data: part of preparing.
+  Remesher remesher(in.clean.mesh, o.params);
+  timings.prepare = seconds_since(t_start);
+
+  // Step the state machine ourselves to time the Lloyd and the panel stages apart.
+  while (!remesher.done()) {
+    const Stage stage = remesher.progress().stage;
+    const auto t0 = Clock::now();
+    remesher.step();
+    (stage == Stage::Seeding || stage == Stage::Lloyd ? timings.cluster : timings.panels) += seconds_since(t0);
+  }
+
+  const auto t_quality = Clock::now();
+  const QualityReport quality = measure_quality(remesher.mesh(), remesher.topology(), remesher.panels());
+  timings.quality = seconds_since(t_quality);
+  timings.total = seconds_since(t_start);
+
+  const RemeshRun run{in, remesher, quality, requested, o.seeding, timings};
+  std::vector<OutputFile> outputs;
+  if (!o.out.empty()) {
+    // measure_quality has checked every index, so the remapping cannot go out of range.
+    const PanelMesh pm = used_vertices_only(remesher.panels());
+    outputs.push_back({o.out, write_polygon_obj(pm.vertices, pm.panels, panels_obj_comment(run))});
+  }
+  if (!o.report.empty()) outputs.push_back({o.report, remesh_report_json(run)});
+  if (outputs.empty())
+    std::fputs(remesh_summary_line(run).c_str(), stdout);
+  else
+    write_files_atomic(outputs);
+  return all_panels_valid(remesher.panels(), quality) ? 0 : 3;
+}
+
+}  // namespace ff::cli

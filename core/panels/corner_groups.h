@@ -1,0 +1,34 @@
+#pragma once
+// Node groups: where the panel mesh puts its nodes. Usually one corner of the panel graph;
+// but two corners joined by a short chain (shorter than a spike) are one group, because the
+// order of their two nodes along the chain's line is not decided by the clustering: whether
+// clusters A-B or C-D share the short edge is exactly the "switch the neighbour assignments"
+// choice of paper fig. 6. A group of k clusters has k - 2 nodes, one per triangle of a
+// triangulation of its k-gon (node_split.h), and PanelLayout picks the one that flips nothing.
+#include <vector>
+
+#include "core/panels/panel_graph.h"
+
+namespace ff {
+
+struct NodeGroup {
+  std::vector<int> clusters;  // counter-clockwise; kBoundary once for a boundary group
+  std::vector<int> corners;   // the panel-graph corners it stands for (1 or 2)
+  Vec3 reference = Vec3::Zero();  // where its nodes belong: the corner, or the chain's midpoint
+  bool on_boundary = false;
+};
+
+struct NodeGroups {
+  std::vector<NodeGroup> groups;
+  std::vector<int> group_of_corner;  // per graph corner
+};
+
+// Groups corners joined by a chain between two clusters no longer than max_chain_length
+// (greedily from the shortest; each corner in at most one pair; at most 7 clusters and at
+// most one boundary corner per group, and never two clusters on one master plane, whose nodes
+// could coincide). positions: mesh vertices, in the frame of the length.
+NodeGroups group_corners(const TriMesh& mesh, const MeshTopology& topology, const std::vector<int>& labels,
+                         const PanelGraph& graph, const std::vector<Vec3>& positions, const std::vector<int>& master_of,
+                         double max_chain_length);
+
+}  // namespace ff

@@ -1,0 +1,29 @@
+#pragma once
+// Master planes (paper 2.4, fig. 11): neighbouring clusters whose planes differ by less than
+// a degree share one plane, so the panel phase never intersects nearly parallel planes.
+// "Distinct planes" everywhere downstream means distinct master planes.
+#include <utility>
+#include <vector>
+
+#include "core/panels/plane.h"
+
+namespace ff {
+
+struct MasterPlanes {
+  std::vector<int> master_of;  // per cluster
+  std::vector<Plane> planes;   // per master
+  std::vector<Vec3> centers;   // per master: the area-weighted centre of its clusters
+  std::vector<int> count;      // clusters per master
+
+  const Plane& plane_of(int cluster) const { return planes[static_cast<size_t>(master_of[static_cast<size_t>(cluster)])]; }
+};
+
+// Groups `neighbours` (cluster pairs) closer than max_angle_deg, greedily from the closest
+// pair, joining two groups only while their area-weighted normals stay within the angle (so
+// a gently curved strip does not chain into one plane). A group's plane: the area-weighted
+// normal through the area-weighted centre. Deterministic.
+MasterPlanes snap_master_planes(const std::vector<Plane>& planes, const std::vector<Vec3>& centers,
+                                const std::vector<double>& areas, const std::vector<std::pair<int, int>>& neighbours,
+                                double max_angle_deg = 1.0);
+
+}  // namespace ff

@@ -1,0 +1,68 @@
+#include "core/panels/node_split.h"
+
+#include <algorithm>
+
+namespace ff {
+
+namespace {
+
+// All triangulations of the polygon i..j (positions i < j, consecutive).
+std::vector<Pairing> triangulations(int i, int j) {
+  if (j - i < 2) return {Pairing{}};
+  std::vector<Pairing> out;
+  for (int m = i + 1; m < j; ++m) {
+    const std::vector<Pairing> left = triangulations(i, m);
+    const std::vector<Pairing> right = triangulations(m, j);
+    for (const Pairing& l : left) {
+      for (const Pairing& r : right) {
+        Pairing p = l;
+        p.insert(p.end(), r.begin(), r.end());
+        p.push_back({i, m, j});
+        out.push_back(std::move(p));
+      }
+    }
+  }
+  return out;
+}
+
+Pairing fan_from(int k, int apex) {
+  Pairing p;
+  for (int t = 1; t + 1 < k; ++t) {
+    NodeTriangle tri{apex, (apex + t) % k, (apex + t + 1) % k};
+    std::sort(tri.begin(), tri.end());
+    p.push_back(tri);
+  }
+  return p;
+}
+
+}  // namespace
+
+std::vector<Pairing> node_pairings(int k) {
+  if (k <= 7) return triangulations(0, k - 1);
+  std::vector<Pairing> out;
+  for (int apex = 0; apex < k; ++apex) out.push_back(fan_from(k, apex));
+  return out;
+}
+
+Pairing fan_pairing(int k) { return fan_from(k, k - 1); }
+
+std::vector<int> triangles_around(const Pairing& pairing, int k, int i) {
+  // Order by the offset (mod k) of the triangle's other two positions from i: the triangle
+  // through i+1 has the smallest, the one through i-1 the largest.
+  std::vector<std::pair<int, int>> keyed;
+  for (size_t t = 0; t < pairing.size(); ++t) {
+    const NodeTriangle& tri = pairing[t];
+    if (tri[0] != i && tri[1] != i && tri[2] != i) continue;
+    int lo = k;
+    for (int p : tri) {
+      if (p != i) lo = std::min(lo, ((p - i) % k + k) % k);
+    }
+    keyed.emplace_back(lo, static_cast<int>(t));
+  }
+  std::sort(keyed.begin(), keyed.end());
+  std::vector<int> out;
+  for (const auto& [key, t] : keyed) out.push_back(t);
+  return out;
+}
+
+}  // namespace ff

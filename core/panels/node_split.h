@@ -1,0 +1,26 @@
+#pragma once
+// Splitting a node where k >= 4 clusters meet into k - 2 valence-3 nodes joined by short new
+// edges (paper fig. 6): each way to do it is a triangulation of the k-gon of clusters around
+// the node (positions 0..k-1 in counter-clockwise order); a triangle is a node on its three
+// planes, a diagonal a new edge between its two clusters. A boundary node is the fan from
+// the NULL cluster (the last position): one border vertex per pair of neighbouring clusters.
+#include <array>
+#include <vector>
+
+namespace ff {
+
+using NodeTriangle = std::array<int, 3>;  // positions around the node, increasing
+using Pairing = std::vector<NodeTriangle>;
+
+// Every triangulation of the k-gon for k <= 7 (Catalan(k-2): 2, 5, 14, 42), the k fans
+// beyond. In a fixed order, so choices are deterministic. k == 3: the one triangle.
+std::vector<Pairing> node_pairings(int k);
+
+// The fan from position k-1 (a boundary node's NULL cluster).
+Pairing fan_pairing(int k);
+
+// The triangles of `pairing` containing position i, in the order a panel's boundary meets
+// them: from the one with position i+1 to the one with position i-1 (mod k).
+std::vector<int> triangles_around(const Pairing& pairing, int k, int i);
+
+}  // namespace ff

@@ -1,0 +1,187 @@
+#include "core/panels/panel_attempt.h"
+
+#include <algorithm>
+#include <deque>
+
+#include "core/panels/plane_fit.h"
+
+namespace ff {
+
+namespace {
+
+std::vector<Plane> proxy_planes(const Clustering& clustering) {
+  std::vector<Plane> planes;
+  for (const Proxy& p : clustering.proxies) planes.push_back(Plane::through(p.center, p.normal));
+  return planes;
+}
+
+}  // namespace
+
+PanelAttempt::PanelAttempt(const TriMesh& mesh, const MeshTopology& topology, const std::vector<Vec3>& positions,
+                           const FaceData& faces, const Clustering& clustering, const PanelAttemptOptions& options)
+    : clustering_(clustering), graph_(build_panel_graph(mesh, topology, clustering_.labels, clustering_.num_clusters())) {
+  const size_t n = static_cast<size_t>(clustering_.num_clusters());
+  // Average cluster diameter, from the cluster boundaries.
+  std::vector<double> reach(n, 0.0);
+  for (size_t f = 0; f < clustering_.labels.size(); ++f) {
+    const size_t c = static_cast<size_t>(clustering_.labels[f]);
+    for (int v : mesh.triangles[f]) {
+      reach[c] = std::max(reach[c], (positions[static_cast<size_t>(v)] - clustering_.proxies[c].center).norm());
+    }
+  }
+  double sum = 0.0;
+  for (double r : reach) sum += 2.0 * r;
+  spike_distance_ = options.spike_factor * sum / static_cast<double>(std::max<size_t>(n, 1));
+  std::vector<std::vector<Vec3>> corners(n);
+  std::vector<Vec3> orientation(n), centers(n);
+  for (const Corner& corner : graph_.corners) {
+    for (int c : corner.clusters) {
+      if (c != kBoundary) corners[static_cast<size_t>(c)].push_back(positions[static_cast<size_t>(corner.vertex)]);
+    }
+  }
+  for (size_t c = 0; c < n; ++c) orientation[c] = clustering_.proxies[c].normal;
+  const std::vector<Plane> planes =
+      options.corner_weight > 0.0 ? corner_fit_planes(faces, clustering_.labels, corners, orientation, options.corner_weight)
+                                  : proxy_planes(clustering_);
+  std::vector<double> areas(n, 0.0);
+  for (size_t c = 0; c < n; ++c) centers[c] = planes[c].project(clustering_.proxies[c].center);
+  for (size_t f = 0; f < clustering_.labels.size(); ++f) {
+    areas[static_cast<size_t>(clustering_.labels[f])] += face_area(mesh, static_cast<int>(f));
+  }
+  MasterPlanes masters =
+      snap_master_planes(planes, centers, areas, plane_neighbours(topology, clustering_.labels, graph_),
+                         options.master_angle_deg);
+  LayoutOptions layout_options = options.layout;
+  layout_options.spike_distance = spike_distance_;
+  layout_ = std::make_unique<PanelLayout>(mesh, topology, clustering_.labels, positions, graph_, std::move(masters),
+                                          layout_options);
+  if (options.relax) {
+    std::vector<ClusterMoments> moments(layout_->planes().planes.size());
+    for (size_t f = 0; f < clustering_.labels.size(); ++f) {
+      const int m = layout_->planes().master_of[static_cast<size_t>(clustering_.labels[f])];
+      moments[static_cast<size_t>(m)].add_face(faces, static_cast<int>(f));
+    }
+    std::vector<NodeConstraint> nodes = layout_->node_constraints();
+    layout_->set_planes(relax_planes(nodes, moments, layout_->planes().planes, options.relax_options));
+    // The paper's tilt (2.3), in the same least squares: pull the spikes harder and relax
+    // again, for as long as that lowers the number of invalid panels.
+    for (int t = 0; t < options.tilt_rounds && layout_->num_invalid() > 0; ++t) {
+      const std::vector<char> spikes = layout_->spike_nodes();
+      if (std::find(spikes.begin(), spikes.end(), 1) == spikes.end()) break;
+      for (size_t k = 0; k < nodes.size(); ++k) nodes[k].weight *= spikes[k] ? 10.0 : 1.0;
+      const std::vector<Plane> before = layout_->planes().planes;
+      const int invalid = layout_->num_invalid();
+      layout_->set_planes(relax_planes(nodes, moments, before, options.relax_options));
+      if (layout_->num_invalid() >= invalid) {
+        layout_->set_planes(before);
+        break;
+      }
+    }
+  }
+  layout_->switch_pairings();
+  for (int t = 0; t < options.tilt_rounds && layout_->num_invalid() > 0; ++t) {
+    if (!layout_->tilt_spike_planes()) break;
+    layout_->switch_pairings();
+  }
+}
+
+int PanelAttempt::num_invalid() const {
+  return layout_->num_invalid();
+}
+
+std::vector<std::pair<int, int>> plane_neighbours(const MeshTopology& topology, const std::vector<int>& labels,
+                                                  const PanelGraph& graph) {
+  std::vector<std::pair<int, int>> pairs = adjacent_cluster_pairs(topology, labels);
+  for (const Corner& corner : graph.corners) {
+    for (size_t i = 0; i < corner.clusters.size(); ++i) {
+      for (size_t j = i + 1; j < corner.clusters.size(); ++j) {
+        const int a = corner.clusters[i], b = corner.clusters[j];
+        if (a == kBoundary || b == kBoundary || a == b) continue;
+        pairs.emplace_back(std::min(a, b), std::max(a, b));
+      }
+    }
+  }
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  return pairs;
+}
+
+namespace {
+
+// Breadth-first over the cluster's faces from its seed; the last face reached.
+int farthest_face(const MeshTopology& topology, const Clustering& c, int cluster) {
+  const int seed = c.seeds[static_cast<size_t>(cluster)];
+  std::deque<int> queue{seed};
+  std::vector<char> seen(c.labels.size(), 0);
+  seen[static_cast<size_t>(seed)] = 1;
+  int last = seed;
+  while (!queue.empty()) {
+    last = queue.front();
+    queue.pop_front();
+    for (int g : topology.face_neighbors[static_cast<size_t>(last)]) {
+      if (g < 0 || seen[static_cast<size_t>(g)] || c.labels[static_cast<size_t>(g)] != cluster) continue;
+      seen[static_cast<size_t>(g)] = 1;
+      queue.push_back(g);
+    }
+  }
+  return last;
+}
+
+}  // namespace
+
+std::vector<int> enclosed_clusters(const PanelAttempt& attempt) {
+  std::vector<int> out;
+  const std::vector<unsigned>& problems = attempt.graph().problems;
+  for (size_t c = 0; c < problems.size(); ++c) {
+    if (problems[c] == kEnclosed) out.push_back(static_cast<int>(c));
+  }
+  return out;
+}
+
+std::vector<std::pair<int, int>> split_requests(const TriMesh& mesh, const MeshTopology& topology,
+                                                const PanelAttempt& attempt, int max_geometric) {
+  const Clustering& c = attempt.clustering();
+  const PanelGraph& graph = attempt.graph();
+  std::vector<std::pair<int, int>> out;
+  for (int cluster = 0; cluster < c.num_clusters(); ++cluster) {
+    const unsigned p = graph.problems[static_cast<size_t>(cluster)];
+    // An enclosed cluster is fixed by splitting the one around it (which has a hole).
+    if (p != 0 && p != kEnclosed) out.emplace_back(cluster, farthest_face(topology, c, cluster));
+  }
+  const PanelLayout* layout = &attempt.layout();
+  // Largest invalid panels first: splitting them costs the least detail elsewhere.
+  std::vector<int> invalid;
+  for (int cluster = 0; cluster < layout->num_clusters(); ++cluster) {
+    if (!layout->issues()[static_cast<size_t>(cluster)].valid()) invalid.push_back(cluster);
+  }
+  std::vector<int> size(static_cast<size_t>(c.num_clusters()), 0);
+  for (int l : c.labels) size[static_cast<size_t>(l)] += 1;
+  std::stable_sort(invalid.begin(), invalid.end(),
+                   [&](int a, int b) { return size[static_cast<size_t>(a)] > size[static_cast<size_t>(b)]; });
+  std::vector<char> corner_used(mesh.positions.size(), 0);
+  int geometric = 0;
+  for (int cluster : invalid) {
+    if (geometric >= max_geometric) break;
+    for (int v : layout->problem_corners(cluster)) {
+      if (corner_used[static_cast<size_t>(v)]) continue;
+      // A face of this cluster at the corner, not its seed.
+      int face = -1;
+      for (int k = topology.vertex_face_offsets[static_cast<size_t>(v)];
+           k < topology.vertex_face_offsets[static_cast<size_t>(v) + 1]; ++k) {
+        const int f = topology.vertex_faces[static_cast<size_t>(k)];
+        if (c.labels[static_cast<size_t>(f)] == cluster && f != c.seeds[static_cast<size_t>(cluster)]) {
+          face = f;
+          break;
+        }
+      }
+      if (face < 0) continue;
+      corner_used[static_cast<size_t>(v)] = 1;
+      out.emplace_back(cluster, face);
+      ++geometric;
+      break;
+    }
+  }
+  return out;
+}
+
+}  // namespace ff

@@ -1,0 +1,65 @@
+#pragma once
+// One panel attempt (one round of the panel phase, paper 4): the panel graph of a
+// clustering, its master planes, the layout, and the local fixes that need no reclustering
+// (pairing switches, spike tilts). Owns copies of what the layout refers to, so an attempt
+// can be kept as the best so far while the clustering moves on. Not copyable or movable.
+#include <memory>
+#include <vector>
+
+#include "core/cluster/clustering.h"
+#include "core/panels/panel_layout.h"
+
+namespace ff {
+
+struct PanelAttemptOptions {
+  LayoutOptions layout;  // its spike_distance is set from the clusters, see spike_factor
+  // A vertex farther from its corner than this times the average cluster diameter is a spike
+  // (paper 2.3). The diameter is measured (twice the largest distance from a cluster's
+  // centre to its boundary), not D = sqrt(area / n): a regular hexagon is 1.24 D across.
+  double spike_factor = 0.2;
+  double master_angle_deg = 1.0;
+  int tilt_rounds = 3;
+  // Weight of the corners in the planes' fit (plane_fit.h corner_fit_planes); 0: the proxies.
+  double corner_weight = 1.0;
+  bool relax = true;  // plane_relax.h
+  RelaxOptions relax_options;
+};
+
+class PanelAttempt {
+ public:
+  // positions: mesh vertices in the local frame; must outlive the attempt, like mesh and topology.
+  PanelAttempt(const TriMesh& mesh, const MeshTopology& topology, const std::vector<Vec3>& positions,
+               const FaceData& faces, const Clustering& clustering, const PanelAttemptOptions& options);
+  PanelAttempt(const PanelAttempt&) = delete;
+  PanelAttempt& operator=(const PanelAttempt&) = delete;
+
+  const Clustering& clustering() const { return clustering_; }
+  const PanelGraph& graph() const { return graph_; }
+  double spike_distance() const { return spike_distance_; }
+  // Clusters that are not disks get no panel (PanelIssues::not_disk); the rest are laid out.
+  PanelLayout& layout() { return *layout_; }
+  const PanelLayout& layout() const { return *layout_; }
+  // The layout's invalid panels, the clusters that are not disks included.
+  int num_invalid() const;
+
+ private:
+  Clustering clustering_;
+  PanelGraph graph_;
+  double spike_distance_ = 0.0;
+  std::unique_ptr<PanelLayout> layout_;
+};
+
+// Cluster pairs whose planes meet in the panel mesh: across an edge or at a common corner.
+std::vector<std::pair<int, int>> plane_neighbours(const MeshTopology& topology, const std::vector<int>& labels,
+                                                  const PanelGraph& graph);
+
+// Clusters enclosed by a single neighbour: to be moved elsewhere (relocate_clusters).
+std::vector<int> enclosed_clusters(const PanelAttempt& attempt);
+
+// Where to split after a failed attempt: (cluster, face) requests for split_near(). A cluster
+// that is not a disk (and not merely enclosed) splits at its face farthest from its seed; an invalid panel at a face
+// next to its problem corner, one split per corner, at most `max_geometric` of those.
+std::vector<std::pair<int, int>> split_requests(const TriMesh& mesh, const MeshTopology& topology,
+                                                const PanelAttempt& attempt, int max_geometric);
+
+}  // namespace ff

@@ -1,0 +1,162 @@
+#include "core/panels/panel_graph.h"
+
+#include <algorithm>
+
+namespace ff {
+
+namespace {
+
+int local_index(const Triangle& t, int v) { return t[0] == v ? 0 : (t[1] == v ? 1 : 2); }
+
+}  // namespace
+
+std::vector<int> vertex_fan(const TriMesh& mesh, const MeshTopology& topology, int v, bool& on_boundary) {
+  const int begin = topology.vertex_face_offsets[static_cast<size_t>(v)];
+  const int end = topology.vertex_face_offsets[static_cast<size_t>(v) + 1];
+  std::vector<int> fan;
+  on_boundary = false;
+  if (begin == end) return fan;
+  // Start where the clockwise neighbour (across the edge v -> next) is missing, if anywhere.
+  int start = topology.vertex_faces[static_cast<size_t>(begin)];
+  for (int k = begin; k < end; ++k) {
+    const int f = topology.vertex_faces[static_cast<size_t>(k)];
+    const int i = local_index(mesh.triangles[static_cast<size_t>(f)], v);
+    if (topology.face_neighbors[static_cast<size_t>(f)][static_cast<size_t>(i)] < 0) {
+      start = f;
+      on_boundary = true;
+      break;
+    }
+  }
+  int f = start;
+  const int limit = end - begin;
+  do {
+    fan.push_back(f);
+    const int i = local_index(mesh.triangles[static_cast<size_t>(f)], v);
+    // Counter-clockwise next: across the edge from the previous vertex back to v.
+    f = topology.face_neighbors[static_cast<size_t>(f)][static_cast<size_t>((i + 2) % 3)];
+  } while (f >= 0 && f != start && static_cast<int>(fan.size()) < limit);
+  return fan;
+}
+
+PanelGraph build_panel_graph(const TriMesh& mesh, const MeshTopology& topology, const std::vector<int>& labels,
+                             int num_clusters) {
+  const size_t n = static_cast<size_t>(num_clusters);
+  PanelGraph g;
+  g.corner_of_vertex.assign(static_cast<size_t>(mesh.num_vertices()), -1);
+  g.problems.assign(n, 0u);
+  g.loops.assign(n, {});
+
+  // Corners, pinches, and the vertex count of every cluster (for its Euler characteristic).
+  std::vector<long long> euler(n, 0);
+  std::vector<int> cycle;
+  for (int v = 0; v < mesh.num_vertices(); ++v) {
+    bool on_boundary = false;
+    const std::vector<int> fan = vertex_fan(mesh, topology, v, on_boundary);
+    if (fan.empty()) continue;
+    cycle.clear();
+    for (int f : fan) {
+      const int c = labels[static_cast<size_t>(f)];
+      if (cycle.empty() || cycle.back() != c) cycle.push_back(c);
+    }
+    if (!on_boundary && cycle.size() > 1 && cycle.front() == cycle.back()) cycle.pop_back();
+    if (on_boundary) cycle.push_back(kBoundary);
+    std::vector<int> sorted = cycle;
+    std::sort(sorted.begin(), sorted.end());
+    for (size_t k = 0; k < sorted.size(); ++k) {
+      if (sorted[k] == kBoundary) continue;
+      if (k > 0 && sorted[k] == sorted[k - 1]) {
+        g.problems[static_cast<size_t>(sorted[k])] |= kPinch;
+      } else {
+        euler[static_cast<size_t>(sorted[k])] += 1;
+      }
+    }
+    if (cycle.size() >= 3) {
+      g.corner_of_vertex[static_cast<size_t>(v)] = static_cast<int>(g.corners.size());
+      g.corners.push_back(Corner{v, on_boundary, cycle});
+    }
+  }
+
+  // Boundary half-edges of every cluster, and the next one along its loop: rotate about the
+  // head vertex through the cluster's own faces until an edge leaves the cluster.
+  const int faces = mesh.num_faces();
+  std::vector<int> next(static_cast<size_t>(3 * faces), -1);
+  std::vector<int> boundary_half_edges;
+  for (int f = 0; f < faces; ++f) {
+    const int c = labels[static_cast<size_t>(f)];
+    euler[static_cast<size_t>(c)] += 1;  // V + F here, E below
+    for (int i = 0; i < 3; ++i) {
+      const int h = 3 * f + i;
+      if (PanelGraph::other_side(topology, labels, h) != c) boundary_half_edges.push_back(h);
+    }
+  }
+  // E = (3 F + B) / 2 per cluster: subtract it as (3 per face + 1 per boundary half-edge) / 2.
+  std::vector<long long> twice_edges(n, 0);
+  for (int f = 0; f < faces; ++f) twice_edges[static_cast<size_t>(labels[static_cast<size_t>(f)])] += 3;
+  for (int h : boundary_half_edges) twice_edges[static_cast<size_t>(labels[static_cast<size_t>(h / 3)])] += 1;
+  for (int h : boundary_half_edges) {
+    const int c = labels[static_cast<size_t>(h / 3)];
+    int f = h / 3;
+    const int v = mesh.triangles[static_cast<size_t>(f)][static_cast<size_t>((h % 3 + 1) % 3)];
+    for (;;) {
+      const int j = local_index(mesh.triangles[static_cast<size_t>(f)], v);
+      const int across = topology.face_neighbors[static_cast<size_t>(f)][static_cast<size_t>(j)];
+      if (across < 0 || labels[static_cast<size_t>(across)] != c) {
+        next[static_cast<size_t>(h)] = 3 * f + j;
+        break;
+      }
+      f = across;
+    }
+  }
+
+  // Loops per cluster.
+  std::vector<char> seen(next.size(), 0);
+  std::vector<int> loop_count(n, 0);
+  for (int h0 : boundary_half_edges) {
+    if (seen[static_cast<size_t>(h0)]) continue;
+    const int c = labels[static_cast<size_t>(h0 / 3)];
+    std::vector<int> loop;
+    for (int h = h0; !seen[static_cast<size_t>(h)]; h = next[static_cast<size_t>(h)]) {
+      seen[static_cast<size_t>(h)] = 1;
+      loop.push_back(h);
+    }
+    if (++loop_count[static_cast<size_t>(c)] == 1) g.loops[static_cast<size_t>(c)] = std::move(loop);
+  }
+
+  for (size_t c = 0; c < n; ++c) {
+    if (loop_count[c] > 1) g.problems[c] |= kHole;
+    if (2 * euler[c] - twice_edges[c] != 2) g.problems[c] |= kHandle;
+    std::vector<int>& loop = g.loops[c];
+    if (g.problems[c] != 0 || loop.empty()) {
+      if (g.problems[c] != 0) loop.clear();
+      continue;
+    }
+    // Rotate the loop to start right after a corner, then count chains per neighbour.
+    const auto head = [&](int h) {
+      return mesh.triangles[static_cast<size_t>(h / 3)][static_cast<size_t>((h % 3 + 1) % 3)];
+    };
+    const auto it = std::find_if(loop.begin(), loop.end(),
+                                 [&](int h) { return g.corner_of_vertex[static_cast<size_t>(head(h))] >= 0; });
+    if (it == loop.end()) {
+      if (PanelGraph::other_side(topology, labels, loop.front()) != kBoundary) {
+        g.problems[c] |= kEnclosed;
+        loop.clear();
+      }
+      continue;  // a whole open component as one panel: all border
+    }
+    std::rotate(loop.begin(), it + 1, loop.end());
+    std::vector<int> chain_neighbours;
+    for (size_t k = 0; k < loop.size(); ++k) {
+      const bool ends_chain = g.corner_of_vertex[static_cast<size_t>(head(loop[k]))] >= 0;
+      if (ends_chain) {
+        const int other = PanelGraph::other_side(topology, labels, loop[k]);
+        if (other != kBoundary) chain_neighbours.push_back(other);
+      }
+    }
+    std::sort(chain_neighbours.begin(), chain_neighbours.end());
+    if (std::adjacent_find(chain_neighbours.begin(), chain_neighbours.end()) != chain_neighbours.end())
+      g.problems[c] |= kTwoChains;
+  }
+  return g;
+}
+
+}  // namespace ff

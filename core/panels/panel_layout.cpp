@@ -1,0 +1,417 @@
+#include "core/panels/panel_layout.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/panels/border_vertices.h"
+#include "core/panels/panel_check.h"
+#include "core/panels/vertex_rule.h"
+
+namespace ff {
+
+namespace {
+
+int position_of(const std::vector<int>& cycle, int cluster) {
+  for (size_t i = 0; i < cycle.size(); ++i) {
+    if (cycle[i] == cluster) return static_cast<int>(i);
+  }
+  return -1;
+}
+
+}  // namespace
+
+PanelLayout::PanelLayout(const TriMesh& mesh, const MeshTopology& topology, const std::vector<int>& labels,
+                         const std::vector<Vec3>& positions, const PanelGraph& graph, MasterPlanes planes,
+                         const LayoutOptions& options)
+    : mesh_(mesh),
+      topology_(topology),
+      labels_(labels),
+      positions_(positions),
+      graph_(graph),
+      planes_(std::move(planes)),
+      options_(options),
+      groups_(group_corners(mesh, topology, labels, graph, positions, planes_.master_of, options.spike_distance)) {
+  const size_t groups = groups_.groups.size();
+  const size_t clusters = graph_.problems.size();
+  pairing_.resize(groups);
+  node_offset_.assign(groups + 1, 0);
+  for (size_t g = 0; g < groups; ++g) {
+    node_offset_[g + 1] = node_offset_[g] + static_cast<int>(groups_.groups[g].clusters.size()) - 2;
+  }
+  const size_t nodes = static_cast<size_t>(node_offset_[groups]);
+  node_point_.assign(nodes, Vec3::Zero());
+  node_planes_.assign(nodes, 0);
+  node_exact_.assign(nodes, 1);
+  node_group_.assign(nodes, -1);
+  groups_of_cluster_.assign(clusters, {});
+  for (size_t g = 0; g < groups; ++g) {
+    const NodeGroup& group = groups_.groups[g];
+    for (int c : group.clusters) {
+      if (c != kBoundary) groups_of_cluster_[static_cast<size_t>(c)].push_back(static_cast<int>(g));
+    }
+    const int k = static_cast<int>(group.clusters.size());
+    if (k == 3) {
+      pairing_[g] = Pairing{{0, 1, 2}};
+    } else {
+      // The pairing whose nodes stay closest to where they belong (fig. 6); validation and
+      // switch_pairings() correct it where it flips an edge.
+      double best = std::numeric_limits<double>::infinity();
+      Pairing chosen;
+      for (const Pairing& p : node_pairings(k)) {
+        pairing_[g] = p;
+        place_group_nodes(static_cast<int>(g));
+        const double cost = pairing_cost(static_cast<int>(g));
+        if (cost < best) best = cost, chosen = p;
+      }
+      pairing_[g] = chosen;
+    }
+    place_group_nodes(static_cast<int>(g));
+  }
+  polygons_.resize(clusters);
+  issues_.resize(clusters);
+  for (size_t c = 0; c < clusters; ++c) build_panel(static_cast<int>(c));
+}
+
+int PanelLayout::num_invalid() const {
+  int count = 0;
+  for (const PanelIssues& i : issues_) count += i.valid() ? 0 : 1;
+  return count;
+}
+
+std::vector<int> PanelLayout::masters_of_node(size_t node) const {
+  const int g = node_group_[node];
+  const NodeGroup& group = groups_.groups[static_cast<size_t>(g)];
+  const NodeTriangle& tri = pairing_[static_cast<size_t>(g)][node - static_cast<size_t>(node_offset_[static_cast<size_t>(g)])];
+  std::vector<int> masters;
+  for (int p : tri) {
+    const int c = group.clusters[static_cast<size_t>(p)];
+    if (c == kBoundary) continue;
+    const int m = planes_.master_of[static_cast<size_t>(c)];
+    if (std::find(masters.begin(), masters.end(), m) == masters.end()) masters.push_back(m);
+  }
+  std::sort(masters.begin(), masters.end());
+  return masters;
+}
+
+// Each node: the vertex rule on the distinct master planes of its triangle's clusters (the
+// NULL cluster contributes none), nearest the group's reference point.
+void PanelLayout::place_group_nodes(int g) {
+  const NodeGroup& group = groups_.groups[static_cast<size_t>(g)];
+  for (int node = node_offset_[static_cast<size_t>(g)]; node < node_offset_[static_cast<size_t>(g) + 1]; ++node) {
+    node_group_[static_cast<size_t>(node)] = g;
+    std::vector<Plane> planes;
+    for (int m : masters_of_node(static_cast<size_t>(node))) planes.push_back(planes_.planes[static_cast<size_t>(m)]);
+    const VertexRuleResult r = closest_point_on_planes(planes, group.reference);
+    node_point_[static_cast<size_t>(node)] = r.point;
+    node_planes_[static_cast<size_t>(node)] = static_cast<int>(planes.size());
+    node_exact_[static_cast<size_t>(node)] = r.exact ? 1 : 0;
+  }
+}
+
+// Distance of the group's nodes from their reference; planes without a common point, and two
+// nodes on the same planes (the same point: a zero-length edge), cost as much as a far spike.
+double PanelLayout::pairing_cost(int g) const {
+  const NodeGroup& group = groups_.groups[static_cast<size_t>(g)];
+  const double penalty = 1e3 * options_.diameter;
+  double cost = 0.0;
+  std::vector<std::vector<int>> seen;
+  for (int node = node_offset_[static_cast<size_t>(g)]; node < node_offset_[static_cast<size_t>(g) + 1]; ++node) {
+    cost += (node_point_[static_cast<size_t>(node)] - group.reference).norm();
+    if (!node_exact_[static_cast<size_t>(node)]) cost += penalty;
+    std::vector<int> masters = masters_of_node(static_cast<size_t>(node));
+    if (std::find(seen.begin(), seen.end(), masters) != seen.end()) cost += penalty;
+    seen.push_back(std::move(masters));
+  }
+  return cost;
+}
+
+std::vector<int> PanelLayout::clusters_of_group(int g) const {
+  std::vector<int> out;
+  for (int c : groups_.groups[static_cast<size_t>(g)].clusters) {
+    if (c != kBoundary && std::find(out.begin(), out.end(), c) == out.end()) out.push_back(c);
+  }
+  return out;
+}
+
+void PanelLayout::build_panel(int c) {
+  PanelPolygon& poly = polygons_[static_cast<size_t>(c)];
+  poly = PanelPolygon{};
+  PanelIssues& issues = issues_[static_cast<size_t>(c)];
+  issues = PanelIssues{};
+  const std::vector<int>& loop = graph_.loops[static_cast<size_t>(c)];
+  if (graph_.problems[static_cast<size_t>(c)] != 0 || loop.empty()) {
+    issues.not_disk = true;
+    return;
+  }
+  const Plane& plane = planes_.plane_of(c);
+  const auto head = [&](int h) {
+    return mesh_.triangles[static_cast<size_t>(h / 3)][static_cast<size_t>((h % 3 + 1) % 3)];
+  };
+  // The node groups along the loop, with the border vertices met before each.
+  struct Event {
+    int group;
+    int vertex;
+    std::vector<int> border;
+  };
+  std::vector<Event> events;
+  std::vector<int> run;
+  for (int h : loop) {
+    const int v = head(h);
+    const int corner = graph_.corner_of_vertex[static_cast<size_t>(v)];
+    if (corner >= 0) {
+      events.push_back({groups_.group_of_corner[static_cast<size_t>(corner)], v, std::move(run)});
+      run.clear();
+    } else if (PanelGraph::other_side(topology_, labels_, h) == kBoundary) {
+      run.push_back(v);
+    }
+  }
+  // The two corners of a group meet the loop one after the other (the short chain between
+  // them): the group's nodes come once.
+  std::vector<Event> kept;
+  for (size_t i = 0; i < events.size(); ++i) {
+    if (i > 0 && events[i].group == kept.back().group && events[i].border.empty()) continue;
+    kept.push_back(std::move(events[i]));
+  }
+  if (kept.size() > 1 && kept.front().group == kept.back().group && kept.front().border.empty()) {
+    kept.front().border = std::move(kept.back().border);
+    kept.pop_back();
+  }
+
+  // Nodes, remembering where each border run goes.
+  std::vector<std::pair<size_t, std::vector<int>>> runs;  // (insert before polygon vertex i, run)
+  for (Event& e : kept) {
+    if (!e.border.empty()) runs.emplace_back(poly.points.size(), std::move(e.border));
+    const NodeGroup& group = groups_.groups[static_cast<size_t>(e.group)];
+    const int i = position_of(group.clusters, c);
+    const int size = static_cast<int>(group.clusters.size());
+    for (int t : triangles_around(pairing_[static_cast<size_t>(e.group)], size, i)) {
+      const int node = node_offset_[static_cast<size_t>(e.group)] + t;
+      poly.points.push_back(node_point_[static_cast<size_t>(node)]);
+      poly.node.push_back(node);
+      poly.corner.push_back(e.vertex);
+      poly.reference.push_back(group.reference);
+    }
+  }
+  if (!run.empty()) runs.emplace_back(poly.points.size(), std::move(run));  // a loop with no corner
+  // Border vertices, last run first so earlier insert positions stay valid.
+  const size_t fixed = poly.points.size();
+  const double tolerance = options_.border_tolerance * options_.diameter;
+  for (auto it = runs.rbegin(); it != runs.rend(); ++it) {
+    const size_t at = it->first;
+    std::vector<Vec3> projected;
+    for (int v : it->second) projected.push_back(plane.project(positions_[static_cast<size_t>(v)]));
+    const std::vector<int> keep =
+        fixed == 0 ? thin_closed_border(projected, tolerance)
+                   : thin_border(poly.points[(at + fixed - 1) % fixed], projected, poly.points[at % fixed], tolerance,
+                                 fixed + runs.size() < 3 ? 1 : 0);
+    std::vector<Vec3> points, references;
+    std::vector<int> corners;
+    for (int j : keep) {
+      points.push_back(projected[static_cast<size_t>(j)]);
+      corners.push_back(it->second[static_cast<size_t>(j)]);
+      references.push_back(positions_[static_cast<size_t>(corners.back())]);
+    }
+    const long where = static_cast<long>(at);
+    poly.points.insert(poly.points.begin() + where, points.begin(), points.end());
+    poly.node.insert(poly.node.begin() + where, points.size(), -1);
+    poly.corner.insert(poly.corner.begin() + where, corners.begin(), corners.end());
+    poly.reference.insert(poly.reference.begin() + where, references.begin(), references.end());
+  }
+  int inexact = 0;
+  for (int node : poly.node) inexact += node >= 0 && !node_exact_[static_cast<size_t>(node)] ? 1 : 0;
+  issues = check_panel(poly.points, poly.reference, plane, options_.spike_distance, options_.tolerance);
+  issues.spike_vertices = std::max(issues.spike_vertices, inexact);
+}
+
+void PanelLayout::rebuild(const std::vector<int>& clusters) {
+  for (int c : clusters) build_panel(c);
+}
+
+void PanelLayout::rebuild_all() {
+  for (size_t g = 0; g < groups_.groups.size(); ++g) place_group_nodes(static_cast<int>(g));
+  for (size_t c = 0; c < polygons_.size(); ++c) build_panel(static_cast<int>(c));
+}
+
+std::vector<int> PanelLayout::problem_corners(int c) const {
+  const PanelPolygon& poly = polygons_[static_cast<size_t>(c)];
+  const PanelIssues& issues = issues_[static_cast<size_t>(c)];
+  std::vector<int> out;
+  for (size_t i = 0; i < poly.points.size(); ++i) {
+    const bool spike = (poly.points[i] - poly.reference[i]).norm() > options_.spike_distance;
+    if (spike || issues.flipped || issues.not_star || issues.not_simple) out.push_back(poly.corner[i]);
+  }
+  return out;
+}
+
+int PanelLayout::switch_pairings() {
+  int changes = 0;
+  for (size_t g = 0; g < groups_.groups.size(); ++g) {
+    const int k = static_cast<int>(groups_.groups[g].clusters.size());
+    if (k < 4) continue;
+    const std::vector<int> around = clusters_of_group(static_cast<int>(g));
+    const auto invalid_around = [&]() {
+      int count = 0;
+      for (int c : around) count += issues_[static_cast<size_t>(c)].valid() ? 0 : 1;
+      return count;
+    };
+    int best = invalid_around();
+    if (best == 0) continue;
+    const Pairing original = pairing_[g];
+    Pairing best_pairing = original;
+    for (const Pairing& p : node_pairings(k)) {
+      if (p == original) continue;
+      pairing_[g] = p;
+      place_group_nodes(static_cast<int>(g));
+      rebuild(around);
+      const int now = invalid_around();
+      if (now < best) best = now, best_pairing = p;
+    }
+    pairing_[g] = best_pairing;
+    place_group_nodes(static_cast<int>(g));
+    rebuild(around);
+    if (best_pairing != original) ++changes;
+  }
+  return changes;
+}
+
+bool PanelLayout::tilt_spike_planes() {
+  MasterPlanes tilted = planes_;
+  bool any = false;
+  const std::vector<char> spikes = spike_nodes();
+  for (size_t node = 0; node < node_point_.size(); ++node) {
+    if (!spikes[node]) continue;
+    const Vec3& at = groups_.groups[static_cast<size_t>(node_group_[node])].reference;
+    for (int m : masters_of_node(node)) {
+      Plane& plane = tilted.planes[static_cast<size_t>(m)];
+      // Average the plane with the nearest plane through its centre and the corner.
+      const Vec3& center = planes_.centers[static_cast<size_t>(m)];
+      const Vec3 reach = at - center;
+      if (reach.norm() < 1e-12) continue;
+      const Vec3 u = reach.normalized();
+      Vec3 through = plane.normal - plane.normal.dot(u) * u;
+      if (through.norm() < 1e-12) continue;
+      plane = Plane::through(center, (plane.normal + through.normalized()).normalized());
+      any = true;
+    }
+  }
+  if (!any) return false;
+  // All tilts together (a spike needs its planes to move), kept only if that helps.
+  const int before = num_invalid();
+  MasterPlanes saved = planes_;
+  planes_ = std::move(tilted);
+  rebuild_all();
+  if (num_invalid() < before) return true;
+  planes_ = std::move(saved);
+  rebuild_all();
+  return false;
+}
+
+int PanelLayout::try_planes(const std::vector<Plane>& candidates) {
+  int kept = 0;
+  for (size_t m = 0; m < planes_.planes.size(); ++m) {
+    const Plane old = planes_.planes[m];
+    const Plane& cand = candidates[m];
+    if (cand.normal == old.normal && cand.offset == old.offset) continue;
+    // The groups and panels this plane reaches.
+    std::vector<int> groups, clusters;
+    for (size_t c = 0; c < planes_.master_of.size(); ++c) {
+      if (planes_.master_of[c] != static_cast<int>(m)) continue;
+      clusters.push_back(static_cast<int>(c));
+      for (int g : groups_of_cluster_[c]) groups.push_back(g);
+    }
+    std::sort(groups.begin(), groups.end());
+    groups.erase(std::unique(groups.begin(), groups.end()), groups.end());
+    for (int g : groups) {
+      for (int c : clusters_of_group(g)) clusters.push_back(c);
+    }
+    std::sort(clusters.begin(), clusters.end());
+    clusters.erase(std::unique(clusters.begin(), clusters.end()), clusters.end());
+    int before = 0;
+    for (int c : clusters) before += issues_[static_cast<size_t>(c)].valid() ? 0 : 1;
+    planes_.planes[m] = cand;
+    for (int g : groups) place_group_nodes(g);
+    rebuild(clusters);
+    int after = 0;
+    for (int c : clusters) after += issues_[static_cast<size_t>(c)].valid() ? 0 : 1;
+    if (after <= before) {
+      ++kept;
+    } else {
+      planes_.planes[m] = old;
+      for (int g : groups) place_group_nodes(g);
+      rebuild(clusters);
+    }
+  }
+  return kept;
+}
+
+std::vector<NodeConstraint> PanelLayout::node_constraints() const {
+  std::vector<NodeConstraint> out(node_point_.size());
+  for (size_t node = 0; node < node_point_.size(); ++node) {
+    NodeConstraint& nc = out[node];
+    nc.corner = groups_.groups[static_cast<size_t>(node_group_[node])].reference;
+    for (int m : masters_of_node(node)) {
+      if (nc.count < 3) nc.planes[static_cast<size_t>(nc.count++)] = m;
+    }
+  }
+  return out;
+}
+
+std::vector<char> PanelLayout::spike_nodes() const {
+  std::vector<char> out(node_point_.size(), 0);
+  for (size_t node = 0; node < node_point_.size(); ++node) {
+    const Vec3& at = groups_.groups[static_cast<size_t>(node_group_[node])].reference;
+    out[node] = !node_exact_[node] || (node_point_[node] - at).norm() > options_.spike_distance;
+  }
+  return out;
+}
+
+void PanelLayout::set_planes(std::vector<Plane> planes) {
+  planes_.planes = std::move(planes);
+  rebuild_all();
+}
+
+PanelMesh PanelLayout::to_panel_mesh(const FaceData& frame) const {
+  PanelMesh out;
+  out.spike_distance = frame.scale * options_.spike_distance;
+  std::vector<int> node_vertex(node_point_.size(), -1);
+  const size_t n = polygons_.size();
+  std::vector<int> panel_of_cluster(n, -1);
+  const auto add_vertex = [&](const PanelPolygon& poly, size_t i, int planes) {
+    out.vertices.push_back(frame.to_world(poly.points[i]));
+    out.vertex_corner.push_back(poly.corner[i]);
+    out.vertex_reference.push_back(frame.to_world(poly.reference[i]));
+    out.vertex_planes.push_back(planes);
+    return static_cast<int>(out.vertices.size()) - 1;
+  };
+  for (size_t c = 0; c < n; ++c) {
+    const PanelPolygon& poly = polygons_[c];
+    if (poly.points.size() < 3) {
+      out.unbuilt_clusters.push_back(static_cast<int>(c));
+      continue;
+    }
+    std::vector<int> face;
+    for (size_t i = 0; i < poly.points.size(); ++i) {
+      const int node = poly.node[i];
+      if (node < 0) {
+        face.push_back(add_vertex(poly, i, 1));
+        continue;
+      }
+      int& id = node_vertex[static_cast<size_t>(node)];
+      if (id < 0) id = add_vertex(poly, i, node_planes_[static_cast<size_t>(node)]);
+      face.push_back(id);
+    }
+    panel_of_cluster[c] = out.num_panels();
+    out.panels.push_back(std::move(face));
+    const Plane& plane = planes_.plane_of(static_cast<int>(c));
+    out.plane_normals.push_back(plane.normal);
+    out.plane_offsets.push_back(plane.normal.dot(frame.origin) + frame.scale * plane.offset);
+    out.panel_cluster.push_back(static_cast<int>(c));
+    out.issues.push_back(issues_[c]);
+  }
+  out.face_panel.resize(labels_.size());
+  for (size_t f = 0; f < labels_.size(); ++f) out.face_panel[f] = panel_of_cluster[static_cast<size_t>(labels_[f])];
+  return out;
+}
+
+}  // namespace ff

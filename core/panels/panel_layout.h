@@ -1,0 +1,102 @@
+#pragma once
+// PanelLayout: one attempt at the panels of a clustering (paper 2.1-2.5). For every node
+// group (corner_groups.h) it picks a pairing (node_split.h), places each node by the vertex
+// rule on the master planes, walks each cluster's boundary loop into a polygon (border
+// stretches get extra vertices so boundary panels keep their area, paper 2.5), and checks
+// each panel in its own plane: simple, oriented like its cluster, star-shaped, no spike
+// (paper 2.2-2.3). The fixes that need no reclustering live here too: switching pairings
+// (fig. 6) and tilting the planes of spikes (2.3). Everything is in the local frame of
+// FaceData.
+#include <vector>
+
+#include "core/cluster/face_data.h"
+#include "core/mesh/topology.h"
+#include "core/panels/corner_groups.h"
+#include "core/panels/master_planes.h"
+#include "core/panels/node_split.h"
+#include "core/panels/panel_graph.h"
+#include "core/panels/panel_mesh.h"
+#include "core/panels/plane_relax.h"
+
+namespace ff {
+
+struct LayoutOptions {
+  double diameter = 1.0;           // D = sqrt(area / n), the metric's length unit (local frame)
+  double spike_distance = 0.2;     // a vertex farther than this from where it belongs is a spike
+  double border_tolerance = 0.02;  // extra border vertices until the border is this * D close
+  double tolerance = 1e-9;         // lengths below this count as zero in the panel checks
+};
+
+// A panel's polygon: its vertices (local frame) in counter-clockwise order.
+struct PanelPolygon {
+  std::vector<Vec3> points;
+  std::vector<int> node;        // per vertex: node id, or -1 for an extra border vertex
+  std::vector<int> corner;      // per vertex: a mesh vertex it stands for
+  std::vector<Vec3> reference;  // per vertex: where it belongs (its spike test)
+};
+
+class PanelLayout {
+ public:
+  // positions: mesh vertex positions in the local frame. The references must outlive the layout.
+  PanelLayout(const TriMesh& mesh, const MeshTopology& topology, const std::vector<int>& labels,
+              const std::vector<Vec3>& positions, const PanelGraph& graph, MasterPlanes planes,
+              const LayoutOptions& options);
+
+  int num_clusters() const { return static_cast<int>(polygons_.size()); }
+  const std::vector<PanelIssues>& issues() const { return issues_; }
+  int num_invalid() const;
+  const MasterPlanes& planes() const { return planes_; }
+  const PanelPolygon& polygon(int cluster) const { return polygons_[static_cast<size_t>(cluster)]; }
+  // The mesh vertices where the panel of `cluster` has a problem (spikes, or every corner of
+  // a panel that is flipped or not star-shaped): where a split should seed.
+  std::vector<int> problem_corners(int cluster) const;
+
+  // Tries the other pairings of node groups next to invalid panels; keeps a change when it
+  // lowers the number of invalid panels around the group. Returns the number of changes.
+  int switch_pairings();
+  // Tilts the planes around spike nodes towards their corner (paper 2.3); keeps the tilts
+  // when they lower the number of invalid panels. Returns true when it kept any.
+  bool tilt_spike_planes();
+  // Replaces the plane of each master with `candidates[m]`, one at a time, keeping each
+  // change that does not add invalid panels around it (beyond the paper: planes fitted to
+  // the surface). Returns how many it kept.
+  int try_planes(const std::vector<Plane>& candidates);
+
+  // Every node's reference point and master planes (for plane_relax.h), new planes for all
+  // masters, and which nodes are spikes (too far, or planes without a common point).
+  std::vector<NodeConstraint> node_constraints() const;
+  void set_planes(std::vector<Plane> planes);
+  std::vector<char> spike_nodes() const;
+
+  PanelMesh to_panel_mesh(const FaceData& frame) const;
+
+ private:
+  void place_group_nodes(int group);
+  double pairing_cost(int group) const;
+  void build_panel(int cluster);
+  void rebuild(const std::vector<int>& clusters);
+  void rebuild_all();
+  std::vector<int> clusters_of_group(int group) const;
+  std::vector<int> masters_of_node(size_t node) const;
+
+  const TriMesh& mesh_;
+  const MeshTopology& topology_;
+  const std::vector<int>& labels_;
+  const std::vector<Vec3>& positions_;
+  const PanelGraph& graph_;
+  MasterPlanes planes_;
+  LayoutOptions options_;
+  NodeGroups groups_;
+
+  std::vector<Pairing> pairing_;  // per group
+  std::vector<int> node_offset_;  // per group, into the node arrays
+  std::vector<Vec3> node_point_;  // per node
+  std::vector<int> node_planes_;  // distinct planes defining it
+  std::vector<char> node_exact_;  // false: its planes have no common point (a spike)
+  std::vector<int> node_group_;
+  std::vector<std::vector<int>> groups_of_cluster_;
+  std::vector<PanelPolygon> polygons_;
+  std::vector<PanelIssues> issues_;
+};
+
+}  // namespace ff

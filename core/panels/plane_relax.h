@@ -1,0 +1,44 @@
+#pragma once
+// Plane relaxation: move the planes so that the nodes they define land near their corners,
+// while each plane still fits its surface. On near-developable parts of a surface (a gently
+// curved roof, a cylinder), the normals of three neighbouring clusters are nearly coplanar
+// and their common point lies far from the corner however well each plane fits (the paper's
+// spikes, 2.3). The paper tilts the planes of a spike towards its corner, one at a time; this
+// is the same idea solved for all planes together, by a penalty method:
+//
+//   minimise  sum_nodes |x_k - p_k|^2 w_k  +  sum_planes E_fit(plane)
+//           + W sum_nodes sum_{planes i of k} (n_i . x_k - d_i)^2
+//
+// alternating exact minimisation over the nodes x_k (a 3x3 solve each) and over the planes
+// (a 3x3 eigenproblem each), with W growing geometrically, so the nodes end up on their
+// planes. The layout then places every node exactly by the vertex rule on the relaxed planes:
+// planarity stays exact; relaxation only decides which planes.
+#include <array>
+#include <vector>
+
+#include "core/cluster/metric.h"
+#include "core/panels/plane.h"
+
+namespace ff {
+
+struct NodeConstraint {
+  Vec3 corner = Vec3::Zero();  // p_k: where the node should be
+  std::array<int, 3> planes{{-1, -1, -1}};
+  int count = 0;  // planes used (1..3)
+  double weight = 1.0;  // how hard the node is pulled to its corner (raised for spikes)
+};
+
+struct RelaxOptions {
+  int iterations = 300;
+  double start_weight = 1.0;  // W at the first iteration (relative to the node terms)
+  double growth = 1.1;        // W grows by this factor per iteration
+  // Nodes of a plane weigh this times its area in total (against the area-integrated squared
+  // distance of its faces, which the same units measure).
+  double node_weight = 1.0;
+};
+
+// planes: current planes (their normals' sides are kept); moments: the faces of each plane.
+std::vector<Plane> relax_planes(const std::vector<NodeConstraint>& nodes, const std::vector<ClusterMoments>& moments,
+                                const std::vector<Plane>& planes, const RelaxOptions& options = {});
+
+}  // namespace ff

@@ -1,0 +1,165 @@
+#include "core/quality/hausdorff.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "core/quality/closest_point.h"
+#include "core/util/error.h"
+#include "core/util/random.h"
+
+namespace ff {
+
+namespace {
+
+const Vec3& panel_vertex(const PanelMesh& panels, int panel, int v) {
+  if (v < 0 || v >= static_cast<int>(panels.vertices.size())) {
+    throw InputError("panel " + std::to_string(panel) + " refers to vertex " + std::to_string(v) + " of " +
+                     std::to_string(panels.vertices.size()));
+  }
+  return panels.vertices[static_cast<size_t>(v)];
+}
+
+struct OneSided {
+  double distance = 0.0;
+  Vec3 worst = Vec3::Zero();
+};
+
+// Max over samples of the distance to the tree. A sample only matters if it is farther
+// than the maximum so far, so each query may stop at any triangle within that maximum;
+// consecutive samples are near each other, so the previous answer is a good first guess.
+OneSided directed(const std::vector<Vec3>& samples, const TriangleTree& tree) {
+  OneSided out;
+  if (samples.empty()) return out;
+  if (tree.num_triangles() == 0) {
+    out.distance = std::numeric_limits<double>::infinity();
+    out.worst = samples.front();
+    return out;
+  }
+  int hint = -1;
+  for (const Vec3& s : samples) {
+    const ClosestPoint c = tree.closest_point(s, hint, out.distance);
+    hint = c.triangle;
+    if (c.distance > out.distance) {
+      out.distance = c.distance;
+      out.worst = s;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+PlaneFrame panel_frame(const PanelMesh& panels, int panel) {
+  const std::vector<int>& poly = panels.panels[static_cast<size_t>(panel)];
+  std::vector<Vec3> points;
+  points.reserve(poly.size());
+  Vec3 average = Vec3::Zero();
+  for (int v : poly) {
+    points.push_back(panel_vertex(panels, panel, v));
+    average += points.back();
+  }
+  if (!points.empty()) average /= static_cast<double>(points.size());
+  Vec3 normal = Vec3::Zero();
+  if (static_cast<size_t>(panel) < panels.plane_normals.size())
+    normal = panels.plane_normals[static_cast<size_t>(panel)];
+  if (!normal.allFinite() || normal.norm() <= 0.0) normal = newell_normal(points);
+  if (!normal.allFinite() || normal.norm() <= 0.0) normal = Vec3::UnitZ();
+  return make_plane_frame(average.allFinite() ? average : Vec3::Zero(), normal);
+}
+
+std::vector<Vec2> panel_polygon_2d(const PanelMesh& panels, int panel, const PlaneFrame& frame) {
+  std::vector<Vec2> out;
+  for (int v : panels.panels[static_cast<size_t>(panel)]) out.push_back(frame.to_2d(panel_vertex(panels, panel, v)));
+  return out;
+}
+
+TriMesh triangulate_panels(const PanelMesh& panels, std::vector<int>* triangle_panel) {
+  TriMesh mesh;
+  mesh.positions = panels.vertices;
+  if (triangle_panel) triangle_panel->clear();
+  for (int p = 0; p < panels.num_panels(); ++p) {
+    const std::vector<int>& poly = panels.panels[static_cast<size_t>(p)];
+    if (poly.size() < 3) continue;
+    const PlaneFrame frame = panel_frame(panels, p);
+    for (const auto& t : triangulate_polygon(panel_polygon_2d(panels, p, frame))) {
+      mesh.triangles.push_back(
+          {poly[static_cast<size_t>(t[0])], poly[static_cast<size_t>(t[1])], poly[static_cast<size_t>(t[2])]});
+      if (triangle_panel) triangle_panel->push_back(p);
+    }
+  }
+  return mesh;
+}
+
+std::vector<Vec3> sample_surface(const TriMesh& mesh, int target, std::uint64_t seed) {
+  std::vector<Vec3> samples;
+  std::vector<char> used(mesh.positions.size(), 0);
+  for (const Triangle& t : mesh.triangles) {
+    for (int v : t) {
+      if (v < 0 || v >= mesh.num_vertices()) throw InputError("sampling: a triangle refers to a missing vertex");
+      used[static_cast<size_t>(v)] = 1;
+    }
+  }
+  for (size_t v = 0; v < used.size(); ++v) {
+    if (used[v]) samples.push_back(mesh.positions[v]);
+  }
+  const double total = total_area(mesh);
+  const long long fixed = static_cast<long long>(samples.size()) + mesh.num_faces();
+  const long long random = total > 0.0 ? std::max(0LL, static_cast<long long>(target) - fixed) : 0;
+  samples.reserve(static_cast<size_t>(fixed + random));
+
+  // Jittered strata: sample j sits at area position (j + r_j) / random * total, so the
+  // positions increase and one pass over the triangles places them.
+  SplitMix64 rng(seed);
+  long long j = 0;
+  double next_position = random > 0 ? rng.uniform() / static_cast<double>(random) * total : 0.0;
+  double cumulative = 0.0;
+  for (int f = 0; f < mesh.num_faces(); ++f) {
+    const Triangle& t = mesh.triangles[static_cast<size_t>(f)];
+    const Vec3& a = mesh.positions[static_cast<size_t>(t[0])];
+    const Vec3& b = mesh.positions[static_cast<size_t>(t[1])];
+    const Vec3& c = mesh.positions[static_cast<size_t>(t[2])];
+    samples.push_back((a + b + c) / 3.0);
+    cumulative += face_area(mesh, f);
+    const bool last = f + 1 == mesh.num_faces();
+    while (j < random && (next_position < cumulative || last)) {
+      // Uniform in the triangle: sqrt warps the first coordinate so density is even.
+      const double s = std::sqrt(rng.uniform()), r = rng.uniform();
+      samples.push_back((1.0 - s) * a + s * (1.0 - r) * b + s * r * c);
+      ++j;
+      next_position = (static_cast<double>(j) + rng.uniform()) / static_cast<double>(random) * total;
+    }
+  }
+  return samples;
+}
+
+HausdorffResult hausdorff_distance(const TriMesh& a, const TriMesh& b, int samples_per_side) {
+  if (samples_per_side < 0) throw InputError("hausdorff: the number of samples must not be negative");
+  // Fixed seeds: the same meshes always give the same number.
+  const OneSided ab = directed(sample_surface(a, samples_per_side, 0x48617573646F7266ULL), TriangleTree(b));
+  const OneSided ba = directed(sample_surface(b, samples_per_side, 0x6F72666653696465ULL), TriangleTree(a));
+  HausdorffResult r;
+  r.input_to_panels = ab.distance;
+  r.panels_to_input = ba.distance;
+  r.input_worst_point = ab.worst;
+  r.panels_worst_point = ba.worst;
+  r.two_sided = std::max(ab.distance, ba.distance);
+  r.worst_point = ab.distance >= ba.distance ? ab.worst : ba.worst;
+  return r;
+}
+
+HausdorffResult hausdorff_distance(const TriMesh& input, const PanelMesh& panels, int samples_per_side) {
+  if (input.num_faces() == 0) throw InputError("hausdorff: the input mesh has no triangles");
+  const double diagonal = bbox_diagonal(input);
+  if (!(diagonal > 0.0) || !std::isfinite(diagonal)) {
+    throw InputError("hausdorff: the input mesh has no extent (all vertices coincide) or is not finite");
+  }
+  HausdorffResult r = hausdorff_distance(input, triangulate_panels(panels), samples_per_side);
+  r.input_to_panels /= diagonal;
+  r.panels_to_input /= diagonal;
+  r.two_sided /= diagonal;
+  return r;
+}
+
+}  // namespace ff

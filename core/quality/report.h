@@ -1,0 +1,71 @@
+#pragma once
+// The quality report (DESIGN.md 4 and 5), measured independently of the producer: every
+// panel is re-checked in its own plane here, so a bug in the panel phase shows up as a
+// number instead of hiding behind its own PanelIssues.
+#include <map>
+#include <vector>
+
+#include "core/mesh/topology.h"
+#include "core/mesh/tri_mesh.h"
+#include "core/panels/panel_mesh.h"
+
+namespace ff {
+
+struct QualityOptions {
+  int samples_per_side = 200000;  // Hausdorff samples on each surface
+  double spike_factor = 0.2;      // a spike is farther than spike_factor * D from its corner
+  // Polygon checks (simple, kernel) use tolerance * bbox_diagonal(input) as their length.
+  double tolerance = 1e-9;
+};
+
+struct QualityReport {
+  int panels = 0;
+  int vertices = 0;  // panel vertices used by at least one panel
+  // Max over panels of (max distance of its vertices to their least-squares plane) / (its
+  // diameter, the largest vertex-vertex distance).
+  double max_planarity = 0.0;
+  // Two-sided sampled Hausdorff distance / input bbox diagonal, and its two halves;
+  // infinity when no panel has 3 vertices.
+  double hausdorff = 0.0;
+  double hausdorff_input_to_panels = 0.0;
+  double hausdorff_panels_to_input = 0.0;
+  Vec3 hausdorff_worst_point = Vec3::Zero();  // world coordinates, for visualisation
+  // oriented_manifold and the same Euler characteristic (V - E + F over used vertices)
+  // and number of boundary loops as the input.
+  bool topology_preserved = false;
+  int euler_in = 0;
+  int euler_out = 0;
+  int boundary_loops_in = 0;
+  int boundary_loops_out = 0;
+  // Every panel has >= 3 distinct vertices, every undirected edge is used by at most two
+  // panels and then in opposite directions, every vertex's panel fan is one disk or
+  // half-disk.
+  bool oriented_manifold = false;
+  // Panels whose Newell normal points against the area-weighted normal of their input
+  // faces (face_panel). -1 when face_panel is empty (not checked); panels without faces
+  // are not checked.
+  int misoriented_panels = -1;
+  int flipped_edges = 0;      // sum over panels, against a kernel point (else the vertex average)
+  int non_star_panels = 0;    // empty kernel (zero-area kernels count as empty)
+  int non_simple_panels = 0;  // includes panels with fewer than 3 vertices
+  int spike_vertices = 0;     // panel vertices farther than spike_factor * D from their corner
+  // Panels invalid by their own PanelIssues or by any check here (non-simple, non-star,
+  // flipped edges, a spike vertex, misoriented), and their indices in increasing order.
+  int invalid_panels = 0;
+  std::vector<int> invalid_panel_ids;
+  // Panels around each interior panel vertex (not on a boundary edge) -> number of them.
+  std::map<int, int> interior_valence;
+  double valence3_share = 1.0;  // share of interior vertices with valence 3; 1 when none
+  // Smallest interior corner angle over all panels, in each panel's plane; 0 without panels.
+  double min_corner_angle_deg = 0.0;
+};
+
+// input_topology = build_topology(input). D = sqrt(total_area(input) / panels). Throws
+// InputError for inconsistent PanelMesh sizes or indices (per-panel arrays must be empty or
+// one per panel, vertex_corner empty or one per vertex, face_panel empty or one per input
+// face), for non-finite panel vertices, and for an input without triangles or extent.
+// plane_offsets are not read: only the normals orient each panel's plane frame.
+QualityReport measure_quality(const TriMesh& input, const MeshTopology& input_topology, const PanelMesh& panels,
+                              const QualityOptions& options = {});
+
+}  // namespace ff
