@@ -87,6 +87,9 @@ Result run_ours(const std::string& method, ff::TriMesh mesh, int panels, int ite
   params.panels = panels;
   params.seed = seed;
   params.lloyd_iterations = iterations;
+  // The clustering alone, like CGAL's run(): without this the Remesher goes on into the panel
+  // phase, whose rounds would be timed as iterations and may change the cluster count.
+  params.make_panels = false;
   if (method == "ours-l21") {
     // The same work as CGAL VSA's default: L2,1 only, random seeds, no teleports.
     params.weights.euclidean = 0.0;

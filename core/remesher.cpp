@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <optional>
-#include <cstdio>
-#include <cstdlib>
 
 #include "core/cluster/flood.h"
 #include "core/cluster/lloyd.h"
@@ -60,6 +58,8 @@ void Remesher::start_lloyd() {
   lloyd_done_ = 0;
   converged_ = false;
   best_.reset();
+  settled_.clear();
+  settled_planes_.clear();
   panel_rounds_done_ = 0;
   stalled_rounds_ = 0;
   progress_ = Progress{Stage::Lloyd, 0, params_.lloyd_iterations, clustering_.energy * faces_.area_to_world(), 0};
@@ -92,9 +92,10 @@ void panel_lloyd_iteration(const Metric& metric, const MeshTopology& topology, C
 void Remesher::panel_round() {
   PanelAttemptOptions options;
   options.layout.diameter = metric_.diameter();
+  options.fixed = settled_;
+  options.fixed_planes = settled_planes_;
   auto attempt = std::make_unique<PanelAttempt>(mesh_, topology_, local_positions_, faces_, clustering_, options);
   const int invalid = attempt->num_invalid();
-  if (getenv("FF_DEBUG")) { for (size_t c = 0; c < attempt->graph().problems.size(); ++c) if (attempt->graph().problems[c]) fprintf(stderr, "cluster %zu problem %u\n", c, attempt->graph().problems[c]); }
   ++panel_rounds_done_;
   progress_.iteration = panel_rounds_done_;
   progress_.invalid_panels = invalid;
@@ -106,15 +107,24 @@ void Remesher::panel_round() {
     finish_panels();
     return;
   }
-  // Fix what the layout could not: split near the problems (merging elsewhere to keep n),
-  // then a Lloyd iteration with the boundary term of the panels that did work.
-  // Clusters that are not disks split at once. Invalid panels get a split near their problem
-  // only when the rounds stall: a split refloods its neighbourhood, while the boundary term
-  // alone converges steadily as long as it makes progress.
+  fix_panels(*attempt);
+  if (improved) best_ = std::move(attempt);
+}
+
+void Remesher::fix_panels(const PanelAttempt& attempt) {
+  // Settled clusters (valid among valid) keep their faces and planes from now on, so each
+  // round works where panels are still invalid and does not undo progress elsewhere.
+  settled_ = attempt.settled_clusters(topology_);
+  settled_planes_ = attempt.cluster_planes();
+  // Clusters that are not disks split at once; enclosed ones move elsewhere. Invalid panels
+  // get a split near their problem (merging elsewhere to keep n) only when the rounds stall:
+  // a split refloods its neighbourhood, while the boundary term alone converges steadily
+  // as long as it makes progress.
   const bool stalled = stalled_rounds_ >= 2;
   if (stalled) stalled_rounds_ = 0;
-  const std::vector<std::pair<int, int>> requests = split_requests(mesh_, topology_, *attempt, stalled ? 1 : 0);
-  std::vector<char> protect(static_cast<size_t>(clustering_.num_clusters()), 0);
+  const std::vector<std::pair<int, int>> requests = split_requests(mesh_, topology_, attempt, stalled ? 1 : 0);
+  // Merges happen away from the splits; a settled pair may merge (then it is unsettled below).
+  std::vector<char> protect(settled_.size(), 0);
   for (const auto& [a, b] : adjacent_cluster_pairs(topology_, clustering_.labels)) {
     for (const auto& request : requests) {
       if (request.first == a) protect[static_cast<size_t>(b)] = 1;
@@ -122,21 +132,25 @@ void Remesher::panel_round() {
     }
   }
   const std::vector<int> seeds_before = clustering_.seeds;
+  const std::vector<Proxy> proxies_before = clustering_.proxies;
   split_near(metric_, topology_, clustering_, requests, protect, 3, /*reflood_after=*/false);
-  relocate_clusters(metric_, clustering_, enclosed_clusters(*attempt));
-  if (params_.weights.boundary > 0.0) {
-    BoundaryTerm term(faces_, attempt->layout(), params_.weights.boundary, metric_.diameter());
-    // Clusters moved by the splits have no panel of their own yet.
-    for (int c = 0; c < clustering_.num_clusters(); ++c) {
-      if (static_cast<size_t>(c) >= seeds_before.size() || seeds_before[static_cast<size_t>(c)] != clustering_.seeds[static_cast<size_t>(c)])
-        term.ignore(c);
-    }
-    panel_lloyd_iteration(metric_, topology_, clustering_, &term);
-  } else {
-    panel_lloyd_iteration(metric_, topology_, clustering_, nullptr);
+  relocate_clusters(metric_, clustering_, enclosed_clusters(attempt));
+  settled_.resize(static_cast<size_t>(clustering_.num_clusters()), 0);
+  settled_planes_.resize(settled_.size());
+  // Then a Lloyd iteration with the boundary term of this attempt's panels; clusters the
+  // splits moved have no panel of their own yet.
+  BoundaryTerm term(faces_, attempt.layout(), params_.weights.boundary, metric_.diameter());
+  for (size_t c = 0; c < settled_.size(); ++c) {
+    const bool moved = c >= proxies_before.size() || seeds_before[c] != clustering_.seeds[c] ||
+                       proxies_before[c].center != clustering_.proxies[c].center ||
+                       proxies_before[c].normal != clustering_.proxies[c].normal;
+    if (!moved) continue;
+    settled_[c] = 0;
+    term.ignore(static_cast<int>(c));
   }
+  term.freeze(settled_, clustering_.labels);
+  panel_lloyd_iteration(metric_, topology_, clustering_, &term);
   progress_.energy = clustering_.energy * faces_.area_to_world();
-  if (improved) best_ = std::move(attempt);
 }
 
 void Remesher::finish_panels() {

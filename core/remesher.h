@@ -33,7 +33,7 @@ struct RemeshParams {
   int teleport_interval = 4;  // teleport before every 4th iteration; 0 = never
   int teleport_moves = 0;     // moves per teleport; 0 = automatic (1 per 64 clusters, >= 1)
   bool make_panels = true;    // false: stop after the Lloyd phase (`flatfacet cluster`)
-  int panel_rounds = 20;      // k2: an upper bound; stops at the first valid panel mesh
+  int panel_rounds = 30;      // k2: an upper bound; stops at the first valid panel mesh
   // Where four or more planes meet: false (default) splits the node into valence-3 nodes
   // joined by short edges; true makes all of them pass through one point (paper 2.2).
   bool single_point_nodes = false;
@@ -94,6 +94,7 @@ class Remesher {
   void start_lloyd();
   void after_lloyd();
   void panel_round();
+  void fix_panels(const PanelAttempt& attempt);
   void optimize_planes();
   void finish_panels();
 
@@ -109,6 +110,9 @@ class Remesher {
   PanelMesh panels_;
   int panel_rounds_done_ = 0;
   int stalled_rounds_ = 0;  // panel rounds since the fewest invalid panels went down
+  // Per cluster: valid among valid panels in the last round, so it keeps its faces and plane.
+  std::vector<char> settled_;
+  std::vector<Plane> settled_planes_;  // per cluster: its plane in the last round
   int lloyd_done_ = 0;
   int teleports_ = 0;
   bool converged_ = false;

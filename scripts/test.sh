@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Builds and runs every test: a smoke run of the benchmark driver, the native GoogleTest
+# Builds and runs every test: smoke runs of the benchmark drivers, the native GoogleTest
 # suite and CLI checks (Release), and the same tests under AddressSanitizer +
 # UndefinedBehaviorSanitizer. Installs what is missing first (scripts/setup.sh).
 # The last lines are ctest's summary, so CI reads the test count.
@@ -13,8 +13,9 @@ echo "== native build (Release)"
 cmake -S . -B build/release -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build/release -j"$jobs"
 
-echo "== benchmark smoke run"
+echo "== benchmark smoke runs"
 build/release/bench/bench_cluster --smoke
+build/release/bench/bench_remesh --smoke
 
 echo "== native tests"
 ctest --test-dir build/release --output-on-failure -j"$jobs"

@@ -21,7 +21,19 @@ void BoundaryTerm::ignore(int cluster) {
   if (cluster >= 0 && static_cast<size_t>(cluster) < polygons_.size()) polygons_[static_cast<size_t>(cluster)].clear();
 }
 
+void BoundaryTerm::freeze(const std::vector<char>& settled, const std::vector<int>& labels) {
+  settled_ = settled;
+  labels_ = labels;
+}
+
 double BoundaryTerm::operator()(int face, int cluster) const {
+  if (!settled_.empty()) {
+    const int current = labels_[static_cast<size_t>(face)];
+    if (current != cluster && ((current >= 0 && static_cast<size_t>(current) < settled_.size() &&
+                                settled_[static_cast<size_t>(current)]) ||
+                               (static_cast<size_t>(cluster) < settled_.size() && settled_[static_cast<size_t>(cluster)])))
+      return kForbidden;
+  }
   if (scale_ == 0.0 || cluster < 0 || static_cast<size_t>(cluster) >= polygons_.size()) return 0.0;
   const std::vector<Vec2>& polygon = polygons_[static_cast<size_t>(cluster)];
   if (polygon.empty()) return 0.0;

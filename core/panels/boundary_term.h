@@ -24,12 +24,18 @@ class BoundaryTerm : public ExtraCost {
   double operator()(int face, int cluster) const override;
   // The cluster adds nothing (its panel no longer matches it).
   void ignore(int cluster);
+  // Settled clusters keep exactly their faces (labels: the current ones): any other
+  // assignment to or from them costs kForbidden, so the flood leaves them as they are.
+  void freeze(const std::vector<char>& settled, const std::vector<int>& labels);
+  static constexpr double kForbidden = 1e30;
 
  private:
   const FaceData& faces_;
   std::vector<PlaneFrame> frames_;
   std::vector<std::vector<Vec2>> polygons_;
   double scale_;  // weight / (kLengthUnit D)
+  std::vector<char> settled_;
+  std::vector<int> labels_;
 };
 
 }  // namespace ff

@@ -1,5 +1,6 @@
 #include "core/panels/corner_groups.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 
 namespace ff {
@@ -37,11 +38,38 @@ std::vector<int> read(const std::vector<int>& cycle, int start, int count) {
   return out;
 }
 
+// The border's wall at boundary vertex v (see NodeGroup::wall), if it is well defined.
+bool border_wall(const TriMesh& mesh, const MeshTopology& topology, const std::vector<Vec3>& positions, int v,
+                 Plane& wall) {
+  bool on_boundary = false;
+  const std::vector<int> fan = vertex_fan(mesh, topology, v, on_boundary);
+  if (!on_boundary || fan.empty()) return false;
+  const auto local = [&](int f) {
+    const Triangle& t = mesh.triangles[static_cast<size_t>(f)];
+    return t[0] == v ? 0 : (t[1] == v ? 1 : 2);
+  };
+  const Triangle& first = mesh.triangles[static_cast<size_t>(fan.front())];
+  const Triangle& last = mesh.triangles[static_cast<size_t>(fan.back())];
+  const int next = first[static_cast<size_t>((local(fan.front()) + 1) % 3)];
+  const int prev = last[static_cast<size_t>((local(fan.back()) + 2) % 3)];
+  Vec3 normal = Vec3::Zero();
+  for (int f : fan) {
+    const Triangle& t = mesh.triangles[static_cast<size_t>(f)];
+    const Vec3& a = positions[static_cast<size_t>(t[0])];
+    normal += (positions[static_cast<size_t>(t[1])] - a).cross(positions[static_cast<size_t>(t[2])] - a);
+  }
+  const Vec3 along = positions[static_cast<size_t>(next)] - positions[static_cast<size_t>(prev)];
+  const Vec3 n = along.cross(normal);
+  if (!(n.norm() > 1e-12 * along.norm() * normal.norm()) || !n.allFinite()) return false;
+  wall = Plane::through(positions[static_cast<size_t>(v)], n.normalized());
+  return true;
+}
+
 }  // namespace
 
 NodeGroups group_corners(const TriMesh& mesh, const MeshTopology& topology, const std::vector<int>& labels,
                          const PanelGraph& graph, const std::vector<Vec3>& positions, const std::vector<int>& master_of,
-                         double max_chain_length) {
+                         double max_chain_length, const std::vector<std::pair<int, int>>& forced) {
   const auto tail = [&](int h) { return mesh.triangles[static_cast<size_t>(h / 3)][static_cast<size_t>(h % 3)]; };
   const auto head = [&](int h) {
     return mesh.triangles[static_cast<size_t>(h / 3)][static_cast<size_t>((h % 3 + 1) % 3)];
@@ -58,8 +86,10 @@ NodeGroups group_corners(const TriMesh& mesh, const MeshTopology& topology, cons
       const int corner = graph.corner_of_vertex[static_cast<size_t>(head(h))];
       if (corner < 0) continue;
       const int other = PanelGraph::other_side(topology, labels, h);
-      if (other != kBoundary && static_cast<int>(c) < other && length <= max_chain_length && corner != start)
-        chains.push_back({length, start, corner, static_cast<int>(c), other});
+      const bool force = std::find(forced.begin(), forced.end(), std::make_pair(std::min(start, corner),
+                                                                                 std::max(start, corner))) != forced.end();
+      if (other != kBoundary && static_cast<int>(c) < other && (length <= max_chain_length || force) && corner != start)
+        chains.push_back({force ? -1.0 : length, start, corner, static_cast<int>(c), other});
       start = corner;
       length = 0.0;
     }
@@ -96,13 +126,17 @@ NodeGroups group_corners(const TriMesh& mesh, const MeshTopology& topology, cons
     g.on_boundary = p.on_boundary || q.on_boundary;
     out.group_of_corner[static_cast<size_t>(ch.from)] = out.group_of_corner[static_cast<size_t>(ch.to)] =
         static_cast<int>(out.groups.size());
+    const Corner& edge = p.on_boundary ? p : q;
+    if (g.on_boundary) g.has_wall = border_wall(mesh, topology, positions, edge.vertex, g.wall);
     out.groups.push_back(std::move(g));
   }
   for (size_t k = 0; k < graph.corners.size(); ++k) {
     if (out.group_of_corner[k] >= 0) continue;
     const Corner& c = graph.corners[k];
     out.group_of_corner[k] = static_cast<int>(out.groups.size());
-    out.groups.push_back(NodeGroup{c.clusters, {static_cast<int>(k)}, positions[static_cast<size_t>(c.vertex)], c.on_boundary});
+    NodeGroup g{c.clusters, {static_cast<int>(k)}, positions[static_cast<size_t>(c.vertex)], c.on_boundary, false, {}};
+    if (c.on_boundary) g.has_wall = border_wall(mesh, topology, positions, c.vertex, g.wall);
+    out.groups.push_back(std::move(g));
   }
   return out;
 }

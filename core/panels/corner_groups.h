@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/panels/panel_graph.h"
+#include "core/panels/plane.h"
 
 namespace ff {
 
@@ -16,6 +17,12 @@ struct NodeGroup {
   std::vector<int> corners;   // the panel-graph corners it stands for (1 or 2)
   Vec3 reference = Vec3::Zero();  // where its nodes belong: the corner, or the chain's midpoint
   bool on_boundary = false;
+  // On the boundary: the border's wall at its boundary corner (the plane through the corner
+  // spanned by the border's direction and the surface normal). A boundary node lies on it,
+  // "closest to the boundary" as the paper puts it (2.5), rather than merely closest to the
+  // boundary vertex, which lets it slide inwards past the node at the chain's other end.
+  bool has_wall = false;
+  Plane wall;
 };
 
 struct NodeGroups {
@@ -27,8 +34,10 @@ struct NodeGroups {
 // (greedily from the shortest; each corner in at most one pair; at most 7 clusters and at
 // most one boundary corner per group, and never two clusters on one master plane, whose nodes
 // could coincide). positions: mesh vertices, in the frame of the length.
+// `forced`: corner pairs to group whatever their chain's length (when their nodes came out in
+// the wrong order, see PanelLayout::reversed_chains), tried first.
 NodeGroups group_corners(const TriMesh& mesh, const MeshTopology& topology, const std::vector<int>& labels,
                          const PanelGraph& graph, const std::vector<Vec3>& positions, const std::vector<int>& master_of,
-                         double max_chain_length);
+                         double max_chain_length, const std::vector<std::pair<int, int>>& forced = {});
 
 }  // namespace ff

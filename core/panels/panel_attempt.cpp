@@ -40,9 +40,13 @@ PanelAttempt::PanelAttempt(const TriMesh& mesh, const MeshTopology& topology, co
     }
   }
   for (size_t c = 0; c < n; ++c) orientation[c] = clustering_.proxies[c].normal;
-  const std::vector<Plane> planes =
+  std::vector<Plane> planes =
       options.corner_weight > 0.0 ? corner_fit_planes(faces, clustering_.labels, corners, orientation, options.corner_weight)
                                   : proxy_planes(clustering_);
+  const bool any_fixed = std::find(options.fixed.begin(), options.fixed.end(), 1) != options.fixed.end();
+  for (size_t c = 0; c < n && c < options.fixed.size(); ++c) {
+    if (options.fixed[c]) planes[c] = options.fixed_planes[c];
+  }
   std::vector<double> areas(n, 0.0);
   for (size_t c = 0; c < n; ++c) centers[c] = planes[c].project(clustering_.proxies[c].center);
   for (size_t f = 0; f < clustering_.labels.size(); ++f) {
@@ -61,8 +65,16 @@ PanelAttempt::PanelAttempt(const TriMesh& mesh, const MeshTopology& topology, co
       const int m = layout_->planes().master_of[static_cast<size_t>(clustering_.labels[f])];
       moments[static_cast<size_t>(m)].add_face(faces, static_cast<int>(f));
     }
+    std::vector<char> fixed_masters;
+    if (any_fixed) {
+      fixed_masters.assign(moments.size(), 0);
+      for (size_t c = 0; c < n && c < options.fixed.size(); ++c) {
+        if (options.fixed[c]) fixed_masters[static_cast<size_t>(layout_->planes().master_of[c])] = 1;
+      }
+    }
     std::vector<NodeConstraint> nodes = layout_->node_constraints();
-    layout_->set_planes(relax_planes(nodes, moments, layout_->planes().planes, options.relax_options));
+    layout_->set_planes(
+        relax_planes(nodes, moments, layout_->planes().planes, options.relax_options, fixed_masters));
     // The paper's tilt (2.3), in the same least squares: pull the spikes harder and relax
     // again, for as long as that lowers the number of invalid panels.
     for (int t = 0; t < options.tilt_rounds && layout_->num_invalid() > 0; ++t) {
@@ -71,7 +83,7 @@ PanelAttempt::PanelAttempt(const TriMesh& mesh, const MeshTopology& topology, co
       for (size_t k = 0; k < nodes.size(); ++k) nodes[k].weight *= spikes[k] ? 10.0 : 1.0;
       const std::vector<Plane> before = layout_->planes().planes;
       const int invalid = layout_->num_invalid();
-      layout_->set_planes(relax_planes(nodes, moments, before, options.relax_options));
+      layout_->set_planes(relax_planes(nodes, moments, before, options.relax_options, fixed_masters));
       if (layout_->num_invalid() >= invalid) {
         layout_->set_planes(before);
         break;
@@ -79,10 +91,44 @@ PanelAttempt::PanelAttempt(const TriMesh& mesh, const MeshTopology& topology, co
     }
   }
   layout_->switch_pairings();
+  // Flipped edges between two nodes: group their corners and let the pairing choose again
+  // (paper fig. 6, "switching the neighbour assignments"), with the planes as they are now.
+  std::vector<std::pair<int, int>> forced;
+  for (int t = 0; t < 2 && layout_->num_invalid() > 0; ++t) {
+    const std::vector<std::pair<int, int>> reversed = layout_->reversed_chains();
+    const size_t before = forced.size();
+    for (const auto& pair : reversed) {
+      if (std::find(forced.begin(), forced.end(), pair) == forced.end()) forced.push_back(pair);
+    }
+    if (forced.size() == before) break;
+    auto regrouped = std::make_unique<PanelLayout>(mesh, topology, clustering_.labels, positions, graph_,
+                                                   layout_->planes(), layout_options, forced);
+    regrouped->switch_pairings();
+    if (regrouped->num_invalid() >= layout_->num_invalid()) break;
+    layout_ = std::move(regrouped);
+  }
   for (int t = 0; t < options.tilt_rounds && layout_->num_invalid() > 0; ++t) {
     if (!layout_->tilt_spike_planes()) break;
     layout_->switch_pairings();
   }
+}
+
+std::vector<Plane> PanelAttempt::cluster_planes() const {
+  std::vector<Plane> out;
+  for (int c = 0; c < clustering_.num_clusters(); ++c) out.push_back(layout_->planes().plane_of(c));
+  return out;
+}
+
+std::vector<char> PanelAttempt::settled_clusters(const MeshTopology& topology) const {
+  const size_t n = static_cast<size_t>(clustering_.num_clusters());
+  std::vector<char> settled(n, 0);
+  for (size_t c = 0; c < n; ++c) settled[c] = layout_->issues()[c].valid();
+  std::vector<char> out = settled;
+  for (const auto& [a, b] : plane_neighbours(topology, clustering_.labels, graph_)) {
+    if (!settled[static_cast<size_t>(a)]) out[static_cast<size_t>(b)] = 0;
+    if (!settled[static_cast<size_t>(b)]) out[static_cast<size_t>(a)] = 0;
+  }
+  return out;
 }
 
 int PanelAttempt::num_invalid() const {

@@ -23,6 +23,10 @@ struct PanelAttemptOptions {
   double corner_weight = 1.0;
   bool relax = true;  // plane_relax.h
   RelaxOptions relax_options;
+  // Clusters whose planes are kept from the previous round (their panels and their
+  // neighbours' were valid): per cluster, empty for none, and the planes themselves.
+  std::vector<char> fixed;
+  std::vector<Plane> fixed_planes;
 };
 
 class PanelAttempt {
@@ -36,6 +40,10 @@ class PanelAttempt {
   const Clustering& clustering() const { return clustering_; }
   const PanelGraph& graph() const { return graph_; }
   double spike_distance() const { return spike_distance_; }
+  // Per cluster: its plane in this attempt (its master's).
+  std::vector<Plane> cluster_planes() const;
+  // Per cluster: its panel and every panel around it are valid.
+  std::vector<char> settled_clusters(const MeshTopology& topology) const;
   // Clusters that are not disks get no panel (PanelIssues::not_disk); the rest are laid out.
   PanelLayout& layout() { return *layout_; }
   const PanelLayout& layout() const { return *layout_; }

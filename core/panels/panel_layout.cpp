@@ -1,5 +1,6 @@
 #include "core/panels/panel_layout.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -12,6 +13,9 @@ namespace ff {
 
 namespace {
 
+// Sine of the least angle at which a boundary node's line may cross the border's wall.
+constexpr double kMinWallCrossing = 0.2;
+
 int position_of(const std::vector<int>& cycle, int cluster) {
   for (size_t i = 0; i < cycle.size(); ++i) {
     if (cycle[i] == cluster) return static_cast<int>(i);
@@ -23,7 +27,7 @@ int position_of(const std::vector<int>& cycle, int cluster) {
 
 PanelLayout::PanelLayout(const TriMesh& mesh, const MeshTopology& topology, const std::vector<int>& labels,
                          const std::vector<Vec3>& positions, const PanelGraph& graph, MasterPlanes planes,
-                         const LayoutOptions& options)
+                         const LayoutOptions& options, const std::vector<std::pair<int, int>>& forced)
     : mesh_(mesh),
       topology_(topology),
       labels_(labels),
@@ -31,7 +35,8 @@ PanelLayout::PanelLayout(const TriMesh& mesh, const MeshTopology& topology, cons
       graph_(graph),
       planes_(std::move(planes)),
       options_(options),
-      groups_(group_corners(mesh, topology, labels, graph, positions, planes_.master_of, options.spike_distance)) {
+      groups_(group_corners(mesh, topology, labels, graph, positions, planes_.master_of, options.spike_distance,
+                            forced)) {
   const size_t groups = groups_.groups.size();
   const size_t clusters = graph_.problems.size();
   pairing_.resize(groups);
@@ -44,6 +49,7 @@ PanelLayout::PanelLayout(const TriMesh& mesh, const MeshTopology& topology, cons
   node_planes_.assign(nodes, 0);
   node_exact_.assign(nodes, 1);
   node_group_.assign(nodes, -1);
+  node_alias_.assign(nodes, -1);
   groups_of_cluster_.assign(clusters, {});
   for (size_t g = 0; g < groups; ++g) {
     const NodeGroup& group = groups_.groups[g];
@@ -79,6 +85,15 @@ int PanelLayout::num_invalid() const {
   return count;
 }
 
+bool PanelLayout::touches_boundary(int g, int node) const {
+  const NodeGroup& group = groups_.groups[static_cast<size_t>(g)];
+  const NodeTriangle& tri = pairing_[static_cast<size_t>(g)][static_cast<size_t>(node - node_offset_[static_cast<size_t>(g)])];
+  for (int p : tri) {
+    if (group.clusters[static_cast<size_t>(p)] == kBoundary) return true;
+  }
+  return false;
+}
+
 std::vector<int> PanelLayout::masters_of_node(size_t node) const {
   const int g = node_group_[node];
   const NodeGroup& group = groups_.groups[static_cast<size_t>(g)];
@@ -98,11 +113,28 @@ std::vector<int> PanelLayout::masters_of_node(size_t node) const {
 // NULL cluster contributes none), nearest the group's reference point.
 void PanelLayout::place_group_nodes(int g) {
   const NodeGroup& group = groups_.groups[static_cast<size_t>(g)];
-  for (int node = node_offset_[static_cast<size_t>(g)]; node < node_offset_[static_cast<size_t>(g) + 1]; ++node) {
+  const int first = node_offset_[static_cast<size_t>(g)];
+  std::vector<std::vector<int>> masters;
+  for (int node = first; node < node_offset_[static_cast<size_t>(g) + 1]; ++node) {
     node_group_[static_cast<size_t>(node)] = g;
+    masters.push_back(masters_of_node(static_cast<size_t>(node)));
+    const auto same = std::find(masters.begin(), masters.end() - 1, masters.back());
+    node_alias_[static_cast<size_t>(node)] = first + static_cast<int>(same - masters.begin());
     std::vector<Plane> planes;
-    for (int m : masters_of_node(static_cast<size_t>(node))) planes.push_back(planes_.planes[static_cast<size_t>(m)]);
-    const VertexRuleResult r = closest_point_on_planes(planes, group.reference);
+    for (int m : masters.back()) planes.push_back(planes_.planes[static_cast<size_t>(m)]);
+    VertexRuleResult r = closest_point_on_planes(planes, group.reference);
+    if (group.has_wall && planes.size() <= 2 && touches_boundary(g, node)) {
+      // On the border's wall when the wall crosses the planes at a clear angle.
+      std::vector<Plane> walled = planes;
+      walled.push_back(group.wall);
+      const Vec3 line = planes.size() == 2 ? planes[0].normal.cross(planes[1].normal).normalized() : Vec3::Zero();
+      const double crossing = planes.size() == 2 ? std::abs(line.dot(group.wall.normal))
+                                                 : planes[0].normal.cross(group.wall.normal).norm();
+      if (crossing > kMinWallCrossing) {
+        const VertexRuleResult w = closest_point_on_planes(walled, group.reference);
+        if (w.exact) r = w;
+      }
+    }
     node_point_[static_cast<size_t>(node)] = r.point;
     node_planes_[static_cast<size_t>(node)] = static_cast<int>(planes.size());
     node_exact_[static_cast<size_t>(node)] = r.exact ? 1 : 0;
@@ -186,12 +218,16 @@ void PanelLayout::build_panel(int c) {
     const int i = position_of(group.clusters, c);
     const int size = static_cast<int>(group.clusters.size());
     for (int t : triangles_around(pairing_[static_cast<size_t>(e.group)], size, i)) {
-      const int node = node_offset_[static_cast<size_t>(e.group)] + t;
+      const int node = node_alias_[static_cast<size_t>(node_offset_[static_cast<size_t>(e.group)] + t)];
+      if (!poly.node.empty() && poly.node.back() == node) continue;  // one point, one vertex
       poly.points.push_back(node_point_[static_cast<size_t>(node)]);
       poly.node.push_back(node);
       poly.corner.push_back(e.vertex);
       poly.reference.push_back(group.reference);
     }
+  }
+  if (poly.node.size() > 1 && poly.node.front() == poly.node.back() && runs.empty()) {
+    poly.points.pop_back(), poly.node.pop_back(), poly.corner.pop_back(), poly.reference.pop_back();
   }
   if (!run.empty()) runs.emplace_back(poly.points.size(), std::move(run));  // a loop with no corner
   // Border vertices, last run first so earlier insert positions stay valid.
@@ -363,6 +399,27 @@ std::vector<char> PanelLayout::spike_nodes() const {
     const Vec3& at = groups_.groups[static_cast<size_t>(node_group_[node])].reference;
     out[node] = !node_exact_[node] || (node_point_[node] - at).norm() > options_.spike_distance;
   }
+  return out;
+}
+
+std::vector<std::pair<int, int>> PanelLayout::reversed_chains() const {
+  std::vector<std::pair<int, int>> out;
+  for (size_t c = 0; c < polygons_.size(); ++c) {
+    if (issues_[c].valid()) continue;
+    const PanelPolygon& poly = polygons_[c];
+    const size_t k = poly.points.size();
+    for (size_t i = 0; i < k; ++i) {
+      const size_t j = (i + 1) % k;
+      if (poly.node[i] < 0 || poly.node[j] < 0) continue;
+      const NodeGroup& a = groups_.groups[static_cast<size_t>(node_group_[static_cast<size_t>(poly.node[i])])];
+      const NodeGroup& b = groups_.groups[static_cast<size_t>(node_group_[static_cast<size_t>(poly.node[j])])];
+      if (&a == &b || a.corners.size() != 1 || b.corners.size() != 1) continue;
+      if ((poly.points[j] - poly.points[i]).dot(b.reference - a.reference) >= 0.0) continue;
+      out.emplace_back(std::min(a.corners[0], b.corners[0]), std::max(a.corners[0], b.corners[0]));
+    }
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
 }
 

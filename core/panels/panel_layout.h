@@ -38,9 +38,10 @@ struct PanelPolygon {
 class PanelLayout {
  public:
   // positions: mesh vertex positions in the local frame. The references must outlive the layout.
+  // forced: corner pairs to treat as one node group (group_corners).
   PanelLayout(const TriMesh& mesh, const MeshTopology& topology, const std::vector<int>& labels,
               const std::vector<Vec3>& positions, const PanelGraph& graph, MasterPlanes planes,
-              const LayoutOptions& options);
+              const LayoutOptions& options, const std::vector<std::pair<int, int>>& forced = {});
 
   int num_clusters() const { return static_cast<int>(polygons_.size()); }
   const std::vector<PanelIssues>& issues() const { return issues_; }
@@ -67,6 +68,10 @@ class PanelLayout {
   std::vector<NodeConstraint> node_constraints() const;
   void set_planes(std::vector<Plane> planes);
   std::vector<char> spike_nodes() const;
+  // Chains of invalid panels whose two nodes came out in the opposite order to their corners
+  // (a flipped edge, paper fig. 6), as sorted corner pairs: grouping them lets the pairing
+  // switch which two clusters share the edge.
+  std::vector<std::pair<int, int>> reversed_chains() const;
 
   PanelMesh to_panel_mesh(const FaceData& frame) const;
 
@@ -78,6 +83,7 @@ class PanelLayout {
   void rebuild_all();
   std::vector<int> clusters_of_group(int group) const;
   std::vector<int> masters_of_node(size_t node) const;
+  bool touches_boundary(int group, int node) const;
 
   const TriMesh& mesh_;
   const MeshTopology& topology_;
@@ -94,6 +100,9 @@ class PanelLayout {
   std::vector<int> node_planes_;  // distinct planes defining it
   std::vector<char> node_exact_;  // false: its planes have no common point (a spike)
   std::vector<int> node_group_;
+  // Per node: the first node of its group on the same planes (itself if none). Such nodes are
+  // one point (e.g. where coplanar clusters meet), so they are one vertex.
+  std::vector<int> node_alias_;
   std::vector<std::vector<int>> groups_of_cluster_;
   std::vector<PanelPolygon> polygons_;
   std::vector<PanelIssues> issues_;

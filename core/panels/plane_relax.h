@@ -29,16 +29,18 @@ struct NodeConstraint {
 };
 
 struct RelaxOptions {
-  int iterations = 300;
+  int iterations = 80;
   double start_weight = 1.0;  // W at the first iteration (relative to the node terms)
-  double growth = 1.1;        // W grows by this factor per iteration
+  double growth = 1.4;        // W grows by this factor per iteration
   // Nodes of a plane weigh this times its area in total (against the area-integrated squared
   // distance of its faces, which the same units measure).
   double node_weight = 1.0;
 };
 
-// planes: current planes (their normals' sides are kept); moments: the faces of each plane.
+// planes: current planes (their normals' sides are kept); moments: the faces of each plane;
+// fixed: planes that stay as they are (empty: none), e.g. around panels already valid.
 std::vector<Plane> relax_planes(const std::vector<NodeConstraint>& nodes, const std::vector<ClusterMoments>& moments,
-                                const std::vector<Plane>& planes, const RelaxOptions& options = {});
+                                const std::vector<Plane>& planes, const RelaxOptions& options = {},
+                                const std::vector<char>& fixed = {});
 
 }  // namespace ff

@@ -235,7 +235,11 @@ QualityReport measure_quality(const TriMesh& input, const MeshTopology& input_to
         throw InputError("quality: panel vertex " + std::to_string(v) + " has corner " + std::to_string(corner) +
                          " of " + std::to_string(input.num_vertices()));
       }
-      spike[v] = (panels.vertices[v] - input.positions[static_cast<size_t>(corner)]).norm() > options.spike_factor * d;
+      // The producer's own reference and distance when it gives them (the panel phase
+      // measures the average cluster diameter, paper 2.3), else the corner and factor * D.
+      const bool own = panels.vertex_reference.size() == nv && panels.spike_distance > 0.0;
+      const Vec3& where = own ? panels.vertex_reference[v] : input.positions[static_cast<size_t>(corner)];
+      spike[v] = (panels.vertices[v] - where).norm() > (own ? panels.spike_distance : options.spike_factor * d);
       r.spike_vertices += spike[v];
     }
   }

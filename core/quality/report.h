@@ -13,7 +13,10 @@ namespace ff {
 
 struct QualityOptions {
   int samples_per_side = 200000;  // Hausdorff samples on each surface
-  double spike_factor = 0.2;      // a spike is farther than spike_factor * D from its corner
+  // A spike is farther than spike_factor * D from its corner, unless the panel mesh gives its
+  // own vertex_reference and spike_distance (the panel phase does: 0.2 times the measured
+  // average cluster diameter, as the paper has it); then those.
+  double spike_factor = 0.2;
   // Polygon checks (simple, kernel) use tolerance * bbox_diagonal(input) as their length.
   double tolerance = 1e-9;
 };

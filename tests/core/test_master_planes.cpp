@@ -1,0 +1,129 @@
+// Master planes: neighbouring planes within a degree share one plane (the area-weighted
+// normal through the area-weighted centre), a gently turning chain does not collapse into
+// one, and planes that stay alone keep their plane bit for bit.
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <utility>
+#include <vector>
+
+#include "core/panels/master_planes.h"
+
+namespace ff {
+namespace {
+
+constexpr double kDeg = 3.14159265358979323846 / 180.0;
+
+// Normal tilted by `deg` degrees from +z about the x axis.
+Vec3 tilted(double deg) { return Vec3(0.0, std::sin(deg * kDeg), std::cos(deg * kDeg)); }
+
+double angle_deg(const Vec3& a, const Vec3& b) { return std::atan2(a.cross(b).norm(), a.dot(b)) / kDeg; }
+
+TEST(MasterPlanes, PlanesWithinADegreeSnapToTheAreaWeightedMean) {
+  const std::vector<Vec3> centers = {Vec3(0, 0, 0.01), Vec3(2, 0, -0.02)};
+  const std::vector<Plane> planes = {Plane::through(centers[0], tilted(0.2)), Plane::through(centers[1], tilted(0.9))};
+  const std::vector<double> areas = {1.0, 3.0};
+  const MasterPlanes m = snap_master_planes(planes, centers, areas, {{0, 1}});
+  ASSERT_EQ(m.planes.size(), 1u);
+  EXPECT_EQ(m.master_of, (std::vector<int>{0, 0}));
+  EXPECT_EQ(m.count, std::vector<int>{2});
+  const Vec3 normal = (1.0 * planes[0].normal + 3.0 * planes[1].normal).normalized();
+  const Vec3 center = (1.0 * centers[0] + 3.0 * centers[1]) / 4.0;
+  EXPECT_LT((m.planes[0].normal - normal).norm(), 1e-12);
+  EXPECT_NEAR(m.planes[0].normal.norm(), 1.0, 1e-14);
+  EXPECT_NEAR(m.planes[0].distance(center), 0.0, 1e-12);
+  EXPECT_LT((m.centers[0] - center).norm(), 1e-12);
+  EXPECT_EQ(&m.plane_of(1), &m.planes[0]);
+}
+
+TEST(MasterPlanes, OnlyNeighboursSnap) {
+  const std::vector<Plane> planes = {Plane{tilted(0.0), 0.0}, Plane{tilted(0.1), 0.5}};
+  const MasterPlanes m = snap_master_planes(planes, {Vec3::Zero(), Vec3(0, 0, 0.5)}, {1.0, 1.0}, {});
+  EXPECT_EQ(m.planes.size(), 2u);
+  EXPECT_NE(m.master_of[0], m.master_of[1]);
+}
+
+TEST(MasterPlanes, PlanesTwoDegreesApartStaySeparateAndExact) {
+  const std::vector<Vec3> centers = {Vec3(0.1, 0.2, 0.3), Vec3(1.7, -0.4, 0.9)};
+  const std::vector<Plane> planes = {Plane::through(centers[0], tilted(0.0)), Plane::through(centers[1], tilted(2.0))};
+  const MasterPlanes m = snap_master_planes(planes, centers, {2.0, 1.0}, {{0, 1}});
+  ASSERT_EQ(m.planes.size(), 2u);
+  ASSERT_NE(m.master_of[0], m.master_of[1]);
+  for (int c = 0; c < 2; ++c) {
+    const Plane& p = m.plane_of(c);
+    // Bit for bit, not merely close.
+    EXPECT_EQ(p.normal.x(), planes[static_cast<size_t>(c)].normal.x());
+    EXPECT_EQ(p.normal.y(), planes[static_cast<size_t>(c)].normal.y());
+    EXPECT_EQ(p.normal.z(), planes[static_cast<size_t>(c)].normal.z());
+    EXPECT_EQ(p.offset, planes[static_cast<size_t>(c)].offset);
+    EXPECT_EQ(m.count[static_cast<size_t>(m.master_of[static_cast<size_t>(c)])], 1);
+  }
+  // The threshold is the angle given: at 2.5 degrees they do snap.
+  EXPECT_EQ(snap_master_planes(planes, centers, {2.0, 1.0}, {{0, 1}}, 2.5).planes.size(), 1u);
+}
+
+TEST(MasterPlanes, AChainOfSmallTurnsDoesNotCollapse) {
+  // Planes each 0.6 degree from the next (3 degrees end to end), neighbours in a chain.
+  const int n = 6;
+  std::vector<Plane> planes;
+  std::vector<Vec3> centers;
+  std::vector<std::pair<int, int>> neighbours;
+  for (int i = 0; i < n; ++i) {
+    centers.emplace_back(0.0, i, 0.0);
+    planes.push_back(Plane::through(centers.back(), tilted(0.6 * i)));
+    if (i > 0) neighbours.emplace_back(i - 1, i);
+  }
+  const MasterPlanes m = snap_master_planes(planes, centers, std::vector<double>(n, 1.0), neighbours);
+  EXPECT_GE(m.planes.size(), 2u);
+  EXPECT_LT(m.planes.size(), static_cast<size_t>(n));  // but some do snap
+  for (int i = 0; i < n; ++i) {
+    // No cluster is more than the degree from its master plane...
+    EXPECT_LE(angle_deg(planes[static_cast<size_t>(i)].normal, m.plane_of(i).normal), 1.0) << i;
+    for (int j = 0; j < n; ++j) {
+      // ...and a group never spans the whole turn.
+      if (m.master_of[static_cast<size_t>(i)] == m.master_of[static_cast<size_t>(j)]) {
+        EXPECT_LT(angle_deg(planes[static_cast<size_t>(i)].normal, planes[static_cast<size_t>(j)].normal), 2.0);
+      }
+    }
+  }
+  // Masters are contiguous along the chain (a group is connected through neighbours).
+  for (int i = 2; i < n; ++i) {
+    if (m.master_of[static_cast<size_t>(i)] == m.master_of[static_cast<size_t>(i - 2)]) {
+      EXPECT_EQ(m.master_of[static_cast<size_t>(i)], m.master_of[static_cast<size_t>(i - 1)]);
+    }
+  }
+}
+
+TEST(MasterPlanes, SingletonsKeepTheirPlaneAmongSnappedGroups) {
+  // 0 and 1 snap; 2 is 5 degrees off and keeps its plane exactly, whatever its area.
+  const std::vector<Vec3> centers = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(2, 0, 0.3)};
+  const std::vector<Plane> planes = {Plane::through(centers[0], tilted(0.0)), Plane::through(centers[1], tilted(0.3)),
+                                     Plane::through(centers[2], Vec3(0.3, -0.1, 1.0).normalized())};
+  const MasterPlanes m = snap_master_planes(planes, centers, {1.0, 1.0, 1e-9}, {{0, 1}, {1, 2}, {0, 2}});
+  EXPECT_EQ(m.planes.size(), 2u);
+  EXPECT_EQ(m.master_of[0], m.master_of[1]);
+  const Plane& alone = m.plane_of(2);
+  EXPECT_TRUE(alone.normal == planes[2].normal);
+  EXPECT_EQ(alone.offset, planes[2].offset);
+  EXPECT_EQ(m.count[static_cast<size_t>(m.master_of[2])], 1);
+  EXPECT_EQ(m.count[static_cast<size_t>(m.master_of[0])], 2);
+}
+
+TEST(MasterPlanes, Deterministic) {
+  std::vector<Plane> planes;
+  std::vector<Vec3> centers;
+  std::vector<std::pair<int, int>> neighbours;
+  for (int i = 0; i < 10; ++i) {
+    centers.emplace_back(i, 0.5 * i, 0.0);
+    planes.push_back(Plane::through(centers.back(), tilted(0.4 * (i % 4))));
+    if (i > 0) neighbours.emplace_back(i, i - 1);
+  }
+  const MasterPlanes a = snap_master_planes(planes, centers, std::vector<double>(10, 1.0), neighbours);
+  const MasterPlanes b = snap_master_planes(planes, centers, std::vector<double>(10, 1.0), neighbours);
+  EXPECT_EQ(a.master_of, b.master_of);
+  for (size_t k = 0; k < a.planes.size(); ++k) EXPECT_TRUE(a.planes[k].normal == b.planes[k].normal);
+}
+
+}  // namespace
+}  // namespace ff

@@ -1,0 +1,149 @@
+// Panel checks in the panel's own plane: convex and concave star-shaped panels pass; a
+// clockwise panel is flipped, a bow-tie not simple, a comb not star-shaped, a far vertex a
+// spike, and fewer than three vertices too few. On a tilted plane far from the origin too.
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <array>
+#include <vector>
+
+#include "core/panels/panel_check.h"
+
+namespace ff {
+namespace {
+
+// 2D outlines (counter-clockwise unless said otherwise), placed on a plane below.
+using Outline = std::vector<std::array<double, 2>>;
+
+const Outline kSquare = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+const Outline kLShape = {{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}};
+const Outline kBowTie = {{0, 0}, {1, 1}, {1, 0}, {0, 1}};
+// Three teeth on a base: the inner sides of neighbouring teeth face away from each other.
+const Outline kComb = {{0, 0}, {5, 0}, {5, 3}, {4, 3}, {4, 1}, {3, 1}, {3, 3}, {2, 3}, {2, 1}, {1, 1}, {1, 3}, {0, 3}};
+
+struct Placed {
+  Plane plane;
+  std::vector<Vec3> points;
+};
+
+// The outline in a plane: z = 0 by default, or tilted and far from the origin, with (u, v)
+// chosen right-handed about the normal so that counter-clockwise stays counter-clockwise.
+Placed place(const Outline& outline, bool tilted) {
+  const Vec3 normal = tilted ? Vec3(1, -2, 2).normalized() : Vec3::UnitZ();
+  const Vec3 origin = tilted ? Vec3(1e4, -3e3, 250.0) : Vec3::Zero();
+  const Vec3 u = tilted ? normal.cross(Vec3::UnitX()).normalized() : Vec3::UnitX();
+  const Vec3 v = normal.cross(u);
+  Placed p{Plane::through(origin, normal), {}};
+  for (const auto& [x, y] : outline) p.points.push_back(origin + x * u + y * v);
+  return p;
+}
+
+PanelIssues check(const Outline& outline, bool tilted, double spike = 10.0) {
+  const Placed p = place(outline, tilted);
+  return check_panel(p.points, p.points, p.plane, spike, 1e-9);
+}
+
+Outline reversed(Outline o) {
+  std::reverse(o.begin(), o.end());
+  return o;
+}
+
+TEST(PanelCheck, ConvexPanelIsValid) {
+  for (bool tilted : {false, true}) {
+    SCOPED_TRACE(tilted ? "tilted plane" : "z = 0");
+    const PanelIssues issues = check(kSquare, tilted);
+    EXPECT_TRUE(issues.valid());
+    EXPECT_FALSE(issues.flipped);
+    EXPECT_EQ(issues.spike_vertices, 0);
+  }
+}
+
+TEST(PanelCheck, ConcaveStarShapedPanelIsValid) {
+  for (bool tilted : {false, true}) {
+    SCOPED_TRACE(tilted ? "tilted plane" : "z = 0");
+    const PanelIssues issues = check(kLShape, tilted);
+    EXPECT_TRUE(issues.valid());
+    EXPECT_FALSE(issues.not_star);
+    EXPECT_FALSE(issues.not_simple);
+  }
+}
+
+TEST(PanelCheck, CollinearBorderVerticesAreFine) {
+  // Extra border vertices on a straight stretch: 180 degree corners, still a valid panel.
+  for (bool tilted : {false, true}) {
+    SCOPED_TRACE(tilted ? "tilted plane" : "z = 0");
+    EXPECT_TRUE(check({{0, 0}, {0.5, 0}, {1, 0}, {1, 1}, {0, 1}}, tilted).valid());
+    EXPECT_TRUE(check({{0, 0}, {0.3, 0}, {0.6, 0}, {1, 0}, {1, 0.5}, {1, 1}, {0, 1}}, tilted).valid());
+  }
+}
+
+TEST(PanelCheck, ClockwisePanelIsFlipped) {
+  for (bool tilted : {false, true}) {
+    SCOPED_TRACE(tilted ? "tilted plane" : "z = 0");
+    for (const Outline& o : {kSquare, kLShape}) {
+      const PanelIssues issues = check(reversed(o), tilted);
+      EXPECT_TRUE(issues.flipped);
+      EXPECT_FALSE(issues.not_simple);
+      EXPECT_FALSE(issues.valid());
+    }
+  }
+}
+
+TEST(PanelCheck, BowTieIsNotSimple) {
+  for (bool tilted : {false, true}) {
+    SCOPED_TRACE(tilted ? "tilted plane" : "z = 0");
+    const PanelIssues issues = check(kBowTie, tilted);
+    EXPECT_TRUE(issues.not_simple);
+    EXPECT_FALSE(issues.valid());
+  }
+}
+
+TEST(PanelCheck, CombIsNotStarShaped) {
+  for (bool tilted : {false, true}) {
+    SCOPED_TRACE(tilted ? "tilted plane" : "z = 0");
+    const PanelIssues issues = check(kComb, tilted);
+    EXPECT_TRUE(issues.not_star);
+    EXPECT_FALSE(issues.not_simple);
+    EXPECT_FALSE(issues.valid());
+  }
+}
+
+TEST(PanelCheck, FarVertexIsASpike) {
+  for (bool tilted : {false, true}) {
+    SCOPED_TRACE(tilted ? "tilted plane" : "z = 0");
+    const Placed p = place(kSquare, tilted);
+    std::vector<Vec3> references = p.points;
+    references[2] += Vec3(0.3, 0.4, 0.0);  // 0.5 from its vertex
+    EXPECT_EQ(check_panel(p.points, references, p.plane, 0.49, 1e-9).spike_vertices, 1);
+    EXPECT_FALSE(check_panel(p.points, references, p.plane, 0.49, 1e-9).valid());
+    EXPECT_EQ(check_panel(p.points, references, p.plane, 0.51, 1e-9).spike_vertices, 0);
+    references[0] -= Vec3(0.0, 0.0, 2.0);  // off the plane counts too: 3D distance
+    EXPECT_EQ(check_panel(p.points, references, p.plane, 0.51, 1e-9).spike_vertices, 1);
+    EXPECT_EQ(check_panel(p.points, references, p.plane, 0.49, 1e-9).spike_vertices, 2);
+  }
+}
+
+TEST(PanelCheck, FewerThanThreeVertices) {
+  for (bool tilted : {false, true}) {
+    SCOPED_TRACE(tilted ? "tilted plane" : "z = 0");
+    for (size_t n : {0u, 1u, 2u}) {
+      const Placed p = place(Outline(kSquare.begin(), kSquare.begin() + static_cast<long>(n)), tilted);
+      const PanelIssues issues = check_panel(p.points, p.points, p.plane, 1.0, 1e-9);
+      EXPECT_TRUE(issues.too_few_vertices) << n;
+      EXPECT_FALSE(issues.valid()) << n;
+    }
+  }
+}
+
+TEST(PanelCheck, DegenerateSliverIsNotValid) {
+  for (bool tilted : {false, true}) {
+    SCOPED_TRACE(tilted ? "tilted plane" : "z = 0");
+    // A triangle of (near) zero area: no kernel, so not a valid panel.
+    const PanelIssues issues = check({{0, 0}, {1, 0}, {2, 1e-12}}, tilted);
+    EXPECT_FALSE(issues.valid());
+  }
+}
+
+}  // namespace
+}  // namespace ff

@@ -1,0 +1,149 @@
+// Plane relaxation: three planes around a corner whose normals are nearly coplanar (the
+// cylinder-like case) meet far from it; relaxed, they meet near the corner while still
+// fitting their faces. Planes already meeting at their corner stay where they are.
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "core/cluster/metric.h"
+#include "core/panels/plane_relax.h"
+#include "core/panels/vertex_rule.h"
+
+namespace ff {
+namespace {
+
+constexpr double kDeg = 3.14159265358979323846 / 180.0;
+
+// Exact moments of one triangle: integral of p p^T = (A / 12) (sum p_i p_i^T + 9 c c^T).
+void add_triangle(ClusterMoments& m, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 n = (b - a).cross(c - a);
+  const double area = 0.5 * n.norm();
+  const Vec3 centroid = (a + b + c) / 3.0;
+  m.area += area;
+  m.first += area * centroid;
+  m.centroid_sq += area * centroid.squaredNorm();
+  m.second +=
+      area / 12.0 * (a * a.transpose() + b * b.transpose() + c * c.transpose() + 9.0 * centroid * centroid.transpose());
+  m.normal_sum += 0.5 * n;
+  m.density_area += area;
+}
+
+// A small fan of four triangles (0.4 across) lying exactly in `plane` around its point
+// nearest `around`, counter-clockwise about the normal.
+ClusterMoments faces_on(const Plane& plane, const Vec3& around) {
+  const Vec3 c = plane.project(around);
+  const Vec3 u = plane.normal.cross(std::abs(plane.normal.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY()).normalized();
+  const Vec3 v = plane.normal.cross(u);
+  const Vec3 ring[4] = {c + 0.2 * u, c + 0.2 * v, c - 0.2 * u, c - 0.2 * v};
+  ClusterMoments m;
+  for (int i = 0; i < 4; ++i) add_triangle(m, c, ring[i], ring[(i + 1) % 4]);
+  return m;
+}
+
+double rms_distance(const Plane& plane, const ClusterMoments& m) {
+  // integral (n.p - d)^2 = n^T S n - 2 d n.first + d^2 area
+  const Vec3& n = plane.normal;
+  const double sq = n.dot(m.second * n) - 2.0 * plane.offset * n.dot(m.first) + plane.offset * plane.offset * m.area;
+  return std::sqrt(std::max(0.0, sq) / m.area);  // cancellation can leave -0 for a perfect fit
+}
+
+struct Corner3 {
+  Vec3 corner = Vec3(0.0, 0.0, 1.0);  // on top of a unit barrel along x
+  std::vector<Plane> planes;
+  std::vector<ClusterMoments> moments;
+  std::vector<NodeConstraint> nodes;
+};
+
+// Clusters around the corner of a gently double-curved barrel: A on the left (theta < 0),
+// B and C on the right, behind and ahead. Their normals are nearly coplanar (all nearly
+// orthogonal to x); each plane misses the corner by offsets[i].
+Corner3 barrel(const Vec3& offsets) {
+  Corner3 s;
+  const Vec3 normals[3] = {Vec3(0.004, std::sin(-0.15), std::cos(-0.15)).normalized(),
+                           Vec3(-0.006, std::sin(0.15), std::cos(0.15)).normalized(),
+                           Vec3(0.009, std::sin(0.17), std::cos(0.17)).normalized()};
+  const Vec3 sectors[3] = {Vec3(0.0, -0.3, 1.0), Vec3(-0.3, 0.3, 1.0), Vec3(0.3, 0.3, 1.0)};
+  for (int i = 0; i < 3; ++i) {
+    s.planes.push_back(Plane{normals[i], normals[i].dot(s.corner) - offsets[i]});
+    s.moments.push_back(faces_on(s.planes.back(), sectors[i]));
+  }
+  NodeConstraint node;
+  node.corner = s.corner;
+  node.planes = {{0, 1, 2}};
+  node.count = 3;
+  s.nodes.push_back(node);
+  return s;
+}
+
+TEST(PlaneRelax, NearlyCoplanarNormalsMeetNearTheCornerAfterRelaxing) {
+  const Corner3 s = barrel(Vec3(0.01, -0.01, 0.005));
+  const VertexRuleResult before = closest_point_on_planes(s.planes, s.corner);
+  ASSERT_TRUE(before.exact);
+  const double d0 = (before.point - s.corner).norm();
+  ASSERT_GT(d0, 1.0);  // far beyond the 0.4-wide clusters: a spike
+  for (size_t i = 0; i < 3; ++i) ASSERT_LT(rms_distance(s.planes[i], s.moments[i]), 1e-6);  // a perfect fit
+  const std::vector<Plane> relaxed = relax_planes(s.nodes, s.moments, s.planes);
+  const VertexRuleResult after = closest_point_on_planes(relaxed, s.corner);
+  ASSERT_TRUE(after.exact);
+  const double d1 = (after.point - s.corner).norm();
+  EXPECT_LT(d1, 0.1 * d0) << "before " << d0 << " after " << d1;
+  EXPECT_LT(d1, 0.05);  // near the corner in absolute terms too
+  for (size_t i = 0; i < 3; ++i) {
+    // Still the same planes to within a small tilt, still fitting their faces closely.
+    EXPECT_NEAR(relaxed[i].normal.norm(), 1.0, 1e-12);
+    EXPECT_GT(relaxed[i].normal.dot(s.planes[i].normal), std::cos(3.0 * kDeg)) << i;
+    EXPECT_LT(rms_distance(relaxed[i], s.moments[i]), 0.01) << i;
+  }
+}
+
+TEST(PlaneRelax, PlanesThroughTheCornerStayPut) {
+  const Corner3 s = barrel(Vec3::Zero());
+  ASSERT_LT((closest_point_on_planes(s.planes, s.corner).point - s.corner).norm(), 1e-12);
+  const std::vector<Plane> relaxed = relax_planes(s.nodes, s.moments, s.planes);
+  for (size_t i = 0; i < 3; ++i) {
+    EXPECT_LT((relaxed[i].normal - s.planes[i].normal).norm(), 1e-9) << i;
+    EXPECT_NEAR(relaxed[i].offset, s.planes[i].offset, 1e-9) << i;
+  }
+}
+
+TEST(PlaneRelax, WellConditionedCornerKeepsItsFit) {
+  // Three planes at clear angles that miss the corner slightly: their point is already
+  // near it, and relaxing moves them by no more than about that.
+  Corner3 s;
+  s.corner = Vec3(0.0, 0.0, 0.0);
+  const Vec3 normals[3] = {Vec3(1, 0.2, 0.1).normalized(), Vec3(-0.1, 1, 0.3).normalized(),
+                           Vec3(0.2, -0.3, 1).normalized()};
+  for (int i = 0; i < 3; ++i) {
+    s.planes.push_back(Plane{normals[i], 0.003 * (i + 1)});
+    s.moments.push_back(faces_on(s.planes.back(), 0.3 * normals[(i + 1) % 3] + 0.3 * normals[(i + 2) % 3]));
+  }
+  NodeConstraint node;
+  node.planes = {{0, 1, 2}};
+  node.count = 3;
+  s.nodes.push_back(node);
+  const double d0 = (closest_point_on_planes(s.planes, s.corner).point - s.corner).norm();
+  const std::vector<Plane> relaxed = relax_planes(s.nodes, s.moments, s.planes);
+  const double d1 = (closest_point_on_planes(relaxed, s.corner).point - s.corner).norm();
+  EXPECT_LE(d1, d0);
+  for (size_t i = 0; i < 3; ++i) {
+    EXPECT_LT(std::abs(relaxed[i].offset - s.planes[i].offset), 2.0 * d0) << i;
+    EXPECT_GT(relaxed[i].normal.dot(s.planes[i].normal), std::cos(2.0 * kDeg)) << i;
+  }
+}
+
+TEST(PlaneRelax, FixedPlanesDoNotMove) {
+  const Corner3 s = barrel(Vec3(0.01, -0.01, 0.005));
+  const std::vector<Plane> relaxed = relax_planes(s.nodes, s.moments, s.planes, RelaxOptions{}, {1, 0, 0});
+  EXPECT_TRUE(relaxed[0].normal == s.planes[0].normal);
+  EXPECT_EQ(relaxed[0].offset, s.planes[0].offset);
+  // The other two still bring the node in.
+  const double d0 = (closest_point_on_planes(s.planes, s.corner).point - s.corner).norm();
+  const double d1 = (closest_point_on_planes(relaxed, s.corner).point - s.corner).norm();
+  EXPECT_LT(d1, 0.1 * d0);
+}
+
+}  // namespace
+}  // namespace ff
