@@ -165,6 +165,9 @@ void add_quality(ResultLine& line, const std::string& prefix, const ff::QualityR
   line.add(prefix + "invalid", q.invalid_panels);
   line.add(prefix + "planarity", q.max_planarity);
   line.add(prefix + "hausdorff", q.hausdorff);
+  line.add(prefix + "hausdorff_in_out", q.hausdorff_input_to_panels);  // the two halves, for a look
+  line.add(prefix + "hausdorff_out_in", q.hausdorff_panels_to_input);  // with --only
+
   line.add(prefix + "topology", q.topology_preserved ? 1 : 0);
   line.add(prefix + "manifold", q.oriented_manifold ? 1 : 0);
   line.add(prefix + "euler_in", q.euler_in);
@@ -399,17 +402,8 @@ Measured measure_once(const std::string& exe, const std::string& side, const Rem
                       std::uint64_t seed, bool quality, double ratio) {
   char ratio_text[32];
   std::snprintf(ratio_text, sizeof ratio_text, "%.17g", ratio);
-  std::vector<std::string> args = {exe,
-                                   "--only",
-                                   side,
-                                   "--case",
-                                   c.name,
-                                   "--meshes",
-                                   meshes,
-                                   "--seed",
-                                   std::to_string(seed),
-                                   "--subdivision-ratio",
-                                   ratio_text};
+  std::vector<std::string> args = {exe, "--only", side, "--case", c.name, "--meshes", meshes};
+  args.insert(args.end(), {"--seed", std::to_string(seed), "--subdivision-ratio", ratio_text});
   if (!quality) args.push_back("--no-quality");
   const ChildRun run = run_child(args);
   Measured m;
@@ -543,6 +537,14 @@ int run_table(const Options& o, const char* argv0) {
   const std::string exe = self_path(argv0);
   std::vector<std::string> names = o.cases;
   if (names.empty()) names = o.smoke ? std::vector<std::string>{kSmokeCase} : kFullRun;
+  std::vector<RemeshCase> cases(names.size());
+  for (size_t i = 0; i < names.size(); ++i) {
+    if (!parse_case(names[i], cases[i])) {
+      std::fprintf(stderr, "bench_remesh: unknown case '%s'\n", names[i].c_str());
+      usage();
+      return 2;
+    }
+  }
   const int repeat = o.smoke ? 1 : std::max(1, o.repeat);
   bool with_cgal = false;
 #ifdef FF_HAVE_CGAL
@@ -571,14 +573,9 @@ int run_table(const Options& o, const char* argv0) {
   std::vector<std::string> notes;
   int failures = 0;
   std::vector<double> hausdorff_ratios, triangle_ratios, time_ratios;
-  for (const std::string& name : names) {
+  for (const RemeshCase& c : cases) {
     Row row;
-    if (!parse_case(name, row.c)) {
-      std::fprintf(stderr, "bench_remesh: unknown case '%s'\n", name.c_str());
-      usage();
-      return 2;
-    }
-    const RemeshCase& c = row.c;
+    row.c = c;
     if (!c.file.empty() && access((o.meshes + "/" + c.file).c_str(), R_OK) != 0) {
       notes.push_back(c.label + " skipped: " + o.meshes + "/" + c.file + " not found (pass --meshes DIR)");
       continue;

@@ -143,17 +143,11 @@ int split_near(const Metric& metric, const MeshTopology& topology, Clustering& c
            (used[static_cast<size_t>(merges[next_merge].a)] || used[static_cast<size_t>(merges[next_merge].b)])) {
       ++next_merge;
     }
-    int id = c.num_clusters();
-    if (next_merge < merges.size()) {
-      const MergeCandidate& m = merges[next_merge];
-      used[static_cast<size_t>(m.a)] = used[static_cast<size_t>(m.b)] = 1;
-      merge_into(metric, c, s, m.a, m.b);
-      id = m.b;
-    } else {
-      c.proxies.emplace_back();
-      c.seeds.push_back(-1);
-      c.sticky.push_back(0);
-    }
+    if (next_merge == merges.size()) break;  // nothing left to merge: n stays as asked
+    const MergeCandidate& m = merges[next_merge];
+    used[static_cast<size_t>(m.a)] = used[static_cast<size_t>(m.b)] = 1;
+    merge_into(metric, c, s, m.a, m.b);
+    const int id = m.b;
     c.proxies[static_cast<size_t>(id)] = single_face_proxy(metric.faces(), face, c.proxies[static_cast<size_t>(w)].normal);
     c.seeds[static_cast<size_t>(id)] = face;
     c.sticky[static_cast<size_t>(id)] = sticky_iterations;

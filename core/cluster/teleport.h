@@ -28,8 +28,8 @@ void add_clusters(const Metric& metric, const MeshTopology& topology, Clustering
 // Seeds a new cluster at each (cluster, face) request (the face must belong to that cluster
 // and not be its seed; others are skipped): near a problem, "split a plane near the problem
 // area and merge two planes elsewhere" (paper 2.3). For each split the cheapest adjacent pair
-// of clusters not in `protect` and not split here is merged, so n stays, unless no such
-// pair is left (then n grows). New clusters are sticky. Refloods when `reflood_after` (else
+// of clusters not in `protect` and not split here is merged, so n stays; when no such pair
+// is left, the remaining requests are dropped. New clusters are sticky. Refloods when `reflood_after` (else
 // the caller floods next, e.g. with an extra cost). Returns the splits made.
 int split_near(const Metric& metric, const MeshTopology& topology, Clustering& clustering,
                const std::vector<std::pair<int, int>>& requests, const std::vector<char>& protect,

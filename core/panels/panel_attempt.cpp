@@ -50,7 +50,7 @@ PanelAttempt::PanelAttempt(const TriMesh& mesh, const MeshTopology& topology, co
   std::vector<double> areas(n, 0.0);
   for (size_t c = 0; c < n; ++c) centers[c] = planes[c].project(clustering_.proxies[c].center);
   for (size_t f = 0; f < clustering_.labels.size(); ++f) {
-    areas[static_cast<size_t>(clustering_.labels[f])] += face_area(mesh, static_cast<int>(f));
+    areas[static_cast<size_t>(clustering_.labels[f])] += faces[f].area;  // local frame: no overflow at any scale
   }
   MasterPlanes masters =
       snap_master_planes(planes, centers, areas, plane_neighbours(topology, clustering_.labels, graph_),

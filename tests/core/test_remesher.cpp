@@ -15,6 +15,7 @@ namespace {
 TEST(Remesher, DeterministicForASeedAndDifferentAcrossSeeds) {
   const TriMesh mesh = make_roof(50, 30);
   RemeshParams p;
+  p.make_panels = false;  // the Lloyd phase alone; the panel phase: test_panel_phase.cpp
   p.panels = 40;
   p.seed = 77;
   Remesher a(mesh, p), b(mesh, p);
@@ -29,6 +30,7 @@ TEST(Remesher, DeterministicForASeedAndDifferentAcrossSeeds) {
 
 TEST(Remesher, StepsReportProgressAndStopAtTheLimit) {
   RemeshParams p;
+  p.make_panels = false;  // the Lloyd phase alone; the panel phase: test_panel_phase.cpp
   p.panels = 20;
   p.lloyd_iterations = 5;
   Remesher r(make_roof(30, 20), p);
@@ -49,6 +51,7 @@ TEST(Remesher, StepsReportProgressAndStopAtTheLimit) {
 TEST(Remesher, RejectsImpossibleParameters) {
   const TriMesh mesh = make_plane(3, 3);  // 18 faces
   RemeshParams p;
+  p.make_panels = false;  // the Lloyd phase alone; the panel phase: test_panel_phase.cpp
   p.panels = 19;
   EXPECT_THROW(Remesher(mesh, p), std::runtime_error);
   p.panels = 0;
@@ -68,6 +71,7 @@ TEST(Remesher, RejectsImpossibleParameters) {
 
 TEST(Remesher, WarmStartChangesThePanelCount) {
   RemeshParams p;
+  p.make_panels = false;  // the Lloyd phase alone; the panel phase: test_panel_phase.cpp
   p.panels = 30;
   Remesher r(make_roof(50, 30), p);
   r.run();
@@ -89,6 +93,7 @@ TEST(Remesher, DenseRegionsGetSmallerClusters) {
   std::vector<double> density(static_cast<size_t>(mesh.num_vertices()));
   for (size_t v = 0; v < density.size(); ++v) density[v] = mesh.positions[v].x() < 1.0 ? 4.0 : 1.0;
   RemeshParams p;
+  p.make_panels = false;  // the Lloyd phase alone; the panel phase: test_panel_phase.cpp
   p.panels = 60;
   p.density = density;
   p.lloyd_iterations = 40;
@@ -112,6 +117,7 @@ TEST(Remesher, DenseRegionsGetSmallerClusters) {
 TEST(Remesher, WeightAndDensityChangesRefitUnderTheNewMetric) {
   const TriMesh mesh = make_roof(50, 30);
   RemeshParams p;
+  p.make_panels = false;  // the Lloyd phase alone; the panel phase: test_panel_phase.cpp
   p.panels = 30;
   Remesher r(mesh, p);
   r.run();
@@ -135,6 +141,7 @@ TEST(Remesher, WeightAndDensityChangesRefitUnderTheNewMetric) {
 
 TEST(Remesher, AFailedParameterChangeLeavesEverythingAsItWas) {
   RemeshParams p;
+  p.make_panels = false;  // the Lloyd phase alone; the panel phase: test_panel_phase.cpp
   p.panels = 30;
   Remesher r(make_roof(50, 30), p);
   r.run();
@@ -162,6 +169,7 @@ TEST(Remesher, AFailedParameterChangeLeavesEverythingAsItWas) {
 
 TEST(Remesher, ARestartClearsTheOldClustering) {
   RemeshParams p;
+  p.make_panels = false;  // the Lloyd phase alone; the panel phase: test_panel_phase.cpp
   p.panels = 20;
   Remesher r(make_roof(40, 30), p);
   r.run();
@@ -180,6 +188,7 @@ TEST(Remesher, UnitsDoNotMatter) {
   // (no overflow or underflow in the moments); energies scale with area.
   const TriMesh base = test::load_clean("bunny.off");
   RemeshParams p;
+  p.make_panels = false;  // the Lloyd phase alone; the panel phase: test_panel_phase.cpp
   p.panels = 40;
   Remesher reference(base, p);
   reference.run();
@@ -199,6 +208,7 @@ TEST_P(SharedMeshClustering, ContiguousWithTheRequestedCountAndDeterministic) {
   const TriMesh mesh = test::load_clean(GetParam().file);
   for (int n : {12, 150}) {
     RemeshParams p;
+    p.make_panels = false;  // the Lloyd phase alone; the panel phase: test_panel_phase.cpp
     p.panels = n;
     p.seed = 5;
     Remesher r(mesh, p);
