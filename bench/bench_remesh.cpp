@@ -471,6 +471,9 @@ std::string invalid_cell(const Measured& m) {
   const double unbuilt = m.has("unbuilt") ? m.num("unbuilt") : 0.0;
   std::string s = fmt("%.0f", m.num("invalid") + unbuilt);
   if (unbuilt > 0) s += " (" + fmt("%.0f", unbuilt) + " unbuilt)";
+  // Ours: where the panel phase's own count (its PanelIssues) disagrees with the report's.
+  if (m.has("own_invalid") && m.num("own_invalid") != m.num("invalid") + unbuilt)
+    s += " (own " + fmt("%.0f", m.num("own_invalid")) + ")";
   return s;
 }
 
@@ -648,7 +651,8 @@ int run_table(const Options& o, const char* argv0) {
   }
   std::printf(
       "\nPanels: ours = panels of the final PanelMesh; CGAL = anchor polygons (one per boundary cycle of a proxy "
-      "region). Invalid: measure_quality's invalid panels (plus, for ours, clusters left unbuilt). Max planarity: max "
+      "region). Invalid: measure_quality's invalid panels (plus, for ours, clusters left unbuilt; (own K): the panel "
+      "phase's own count K where it differs). Max planarity: max "
       "over panels of the largest vertex distance to the panel's least-squares plane / its diameter. Hausdorff: "
       "two-sided, sampled, / input bbox diagonal, against the cleaned input; ratio = ours / CGAL. Time: read + clean "
       "+ solve, wall clock inside the child (ours: Remesher to Done; CGAL: Surface_mesh + metric, seeding, %d "
@@ -666,7 +670,8 @@ int run_table(const Options& o, const char* argv0) {
 
   // Where the time goes, and what CGAL's own output looks like.
   std::printf(
-      "| input | ours: vertices | read+clean s | prepare s | Lloyd s (iterations) | panels s (rounds) | quality s | "
+      "| input | ours: vertices (spikes) | read+clean s | prepare s | Lloyd s (iterations) | panels s (rounds) | "
+      "quality s | "
       "CPU s | "
       "CGAL: read+clean s | build s | seeding s | %d iterations s | extract s | quality s | CPU s | "
       "CGAL: proxies / polygons / vertices / triangles | CGAL says manifold | CGAL triangles: Hausdorff, topology |\n",
@@ -677,11 +682,11 @@ int run_table(const Options& o, const char* argv0) {
     const Measured& b = row.cgal;
     std::string ours_cells = "| FAILED: " + a.error + " | | | | | | ";
     if (a.ok) {
-      ours_cells = "| " + fmt("%.0f", a.num("vertices")) + " | " + fmt("%.3f", a.num("input_s")) + " | " +
-                   fmt("%.3f", a.num("prepare_s")) + " | " + fmt("%.3f", a.num("lloyd_s")) + " (" +
-                   fmt("%.0f", a.num("lloyd_its")) + ") | " + fmt("%.3f", a.num("panels_s")) + " (" +
-                   fmt("%.0f", a.num("panel_rounds")) + ") | " + fmt("%.2f", a.num("quality_s")) + " | " +
-                   fmt("%.2f", a.num("cpu_s")) + " ";
+      ours_cells = "| " + fmt("%.0f", a.num("vertices")) + " (" + fmt("%.0f", a.num("spikes")) + ") | " +
+                   fmt("%.3f", a.num("input_s")) + " | " + fmt("%.3f", a.num("prepare_s")) + " | " +
+                   fmt("%.3f", a.num("lloyd_s")) + " (" + fmt("%.0f", a.num("lloyd_its")) + ") | " +
+                   fmt("%.3f", a.num("panels_s")) + " (" + fmt("%.0f", a.num("panel_rounds")) + ") | " +
+                   fmt("%.2f", a.num("quality_s")) + " | " + fmt("%.2f", a.num("cpu_s")) + " ";
     }
     std::string cgal_cells = "| " + (with_cgal ? "failed: " + b.error : std::string("-")) + " | | | | | | | | | ";
     if (b.ok) {

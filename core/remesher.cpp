@@ -120,20 +120,23 @@ void Remesher::fix_panels(const PanelAttempt& attempt) {
   // get a split near their problem (merging elsewhere to keep n) only when the rounds stall:
   // a split refloods its neighbourhood, while the boundary term alone converges steadily
   // as long as it makes progress.
-  const bool stalled = stalled_rounds_ >= 2;
+  // When the invalid panels stop going away, split near one of them.
+  const bool stalled = stalled_rounds_ >= 3;
   if (stalled) stalled_rounds_ = 0;
   const std::vector<std::pair<int, int>> requests = split_requests(mesh_, topology_, attempt, stalled ? 1 : 0);
   // Merges happen away from the splits; a settled pair may merge (then it is unsettled below).
-  std::vector<char> protect(settled_.size(), 0);
-  for (const auto& [a, b] : adjacent_cluster_pairs(topology_, clustering_.labels)) {
-    for (const auto& request : requests) {
-      if (request.first == a) protect[static_cast<size_t>(b)] = 1;
-      if (request.first == b) protect[static_cast<size_t>(a)] = 1;
-    }
-  }
   const std::vector<int> seeds_before = clustering_.seeds;
   const std::vector<Proxy> proxies_before = clustering_.proxies;
-  split_near(metric_, topology_, clustering_, requests, protect, 3, /*reflood_after=*/false);
+  if (!requests.empty()) {
+    std::vector<char> protect(settled_.size(), 0);
+    std::vector<char> requested(settled_.size(), 0);
+    for (const auto& request : requests) requested[static_cast<size_t>(request.first)] = 1;
+    for (const auto& [a, b] : adjacent_cluster_pairs(topology_, clustering_.labels)) {
+      if (requested[static_cast<size_t>(a)]) protect[static_cast<size_t>(b)] = 1;
+      if (requested[static_cast<size_t>(b)]) protect[static_cast<size_t>(a)] = 1;
+    }
+    split_near(metric_, topology_, clustering_, requests, protect, 3, /*reflood_after=*/false);
+  }
   relocate_clusters(metric_, clustering_, enclosed_clusters(attempt));
   settled_.resize(static_cast<size_t>(clustering_.num_clusters()), 0);
   settled_planes_.resize(settled_.size());

@@ -110,6 +110,9 @@ double flood(const Metric& metric, const MeshTopology& topology, Clustering& clu
     }
   };
 
+  if (extra) {
+    for (int f = 0; f < faces; ++f) state[static_cast<size_t>(f)].label = extra->fixed_label(f);
+  }
   for (int i = 0; i < n; ++i) state[static_cast<size_t>(clustering.seeds[static_cast<size_t>(i)])].label = i;
   // Sticky clusters hold their seed's neighbours (unless another seed sits there).
   for (int i = 0; i < n; ++i) {

@@ -26,6 +26,9 @@ class ExtraCost {
  public:
   virtual ~ExtraCost() = default;
   virtual double operator()(int face, int cluster) const = 0;
+  // A face whose cluster is settled (>= 0) keeps it: the flood assigns it up front and never
+  // queues it, so only the unsettled part of the surface costs time.
+  virtual int fixed_label(int /*face*/) const { return -1; }
 };
 
 // flood() with `extra` added to every cost (nullptr: none).

@@ -26,6 +26,13 @@ void BoundaryTerm::freeze(const std::vector<char>& settled, const std::vector<in
   labels_ = labels;
 }
 
+int BoundaryTerm::fixed_label(int face) const {
+  if (settled_.empty()) return -1;
+  const int current = labels_[static_cast<size_t>(face)];
+  return current >= 0 && static_cast<size_t>(current) < settled_.size() && settled_[static_cast<size_t>(current)] ? current
+                                                                                                               : -1;
+}
+
 double BoundaryTerm::operator()(int face, int cluster) const {
   if (!settled_.empty()) {
     const int current = labels_[static_cast<size_t>(face)];

@@ -22,6 +22,7 @@ class BoundaryTerm : public ExtraCost {
   BoundaryTerm(const FaceData& faces, const PanelLayout& layout, double weight, double diameter);
   static constexpr double kLengthUnit = 1.0 / 50.0;  // of D
   double operator()(int face, int cluster) const override;
+  int fixed_label(int face) const override;
   // The cluster adds nothing (its panel no longer matches it).
   void ignore(int cluster);
   // Settled clusters keep exactly their faces (labels: the current ones): any other

@@ -40,17 +40,18 @@ PanelAttempt::PanelAttempt(const TriMesh& mesh, const MeshTopology& topology, co
     }
   }
   for (size_t c = 0; c < n; ++c) orientation[c] = clustering_.proxies[c].normal;
-  std::vector<Plane> planes =
-      options.corner_weight > 0.0 ? corner_fit_planes(faces, clustering_.labels, corners, orientation, options.corner_weight)
+  const std::vector<ClusterMoments> moments = cluster_moments(faces, clustering_.labels, static_cast<int>(n));
+  std::vector<Plane> planes = options.corner_weight > 0.0
+                                  ? corner_fit_planes(moments, corners, orientation, options.corner_weight)
                                   : proxy_planes(clustering_);
   const bool any_fixed = std::find(options.fixed.begin(), options.fixed.end(), 1) != options.fixed.end();
   for (size_t c = 0; c < n && c < options.fixed.size(); ++c) {
     if (options.fixed[c]) planes[c] = options.fixed_planes[c];
   }
-  std::vector<double> areas(n, 0.0);
-  for (size_t c = 0; c < n; ++c) centers[c] = planes[c].project(clustering_.proxies[c].center);
-  for (size_t f = 0; f < clustering_.labels.size(); ++f) {
-    areas[static_cast<size_t>(clustering_.labels[f])] += faces[f].area;  // local frame: no overflow at any scale
+  std::vector<double> areas(n, 0.0);  // local frame: no overflow at any scale
+  for (size_t c = 0; c < n; ++c) {
+    centers[c] = planes[c].project(clustering_.proxies[c].center);
+    areas[c] = moments[c].area;
   }
   MasterPlanes masters =
       snap_master_planes(planes, centers, areas, plane_neighbours(topology, clustering_.labels, graph_),
@@ -60,30 +61,35 @@ PanelAttempt::PanelAttempt(const TriMesh& mesh, const MeshTopology& topology, co
   layout_ = std::make_unique<PanelLayout>(mesh, topology, clustering_.labels, positions, graph_, std::move(masters),
                                           layout_options);
   if (options.relax) {
-    std::vector<ClusterMoments> moments(layout_->planes().planes.size());
-    for (size_t f = 0; f < clustering_.labels.size(); ++f) {
-      const int m = layout_->planes().master_of[static_cast<size_t>(clustering_.labels[f])];
-      moments[static_cast<size_t>(m)].add_face(faces, static_cast<int>(f));
-    }
+    std::vector<ClusterMoments> master_moments(layout_->planes().planes.size());
+    for (size_t c = 0; c < n; ++c) master_moments[static_cast<size_t>(layout_->planes().master_of[c])].add(moments[c]);
     std::vector<char> fixed_masters;
     if (any_fixed) {
-      fixed_masters.assign(moments.size(), 0);
+      fixed_masters.assign(master_moments.size(), 0);
       for (size_t c = 0; c < n && c < options.fixed.size(); ++c) {
         if (options.fixed[c]) fixed_masters[static_cast<size_t>(layout_->planes().master_of[c])] = 1;
       }
     }
     std::vector<NodeConstraint> nodes = layout_->node_constraints();
     layout_->set_planes(
-        relax_planes(nodes, moments, layout_->planes().planes, options.relax_options, fixed_masters));
+        relax_planes(nodes, master_moments, layout_->planes().planes, options.relax_options, fixed_masters));
     // The paper's tilt (2.3), in the same least squares: pull the spikes harder and relax
     // again, for as long as that lowers the number of invalid panels.
     for (int t = 0; t < options.tilt_rounds && layout_->num_invalid() > 0; ++t) {
-      const std::vector<char> spikes = layout_->spike_nodes();
-      if (std::find(spikes.begin(), spikes.end(), 1) == spikes.end()) break;
-      for (size_t k = 0; k < nodes.size(); ++k) nodes[k].weight *= spikes[k] ? 10.0 : 1.0;
+      // Spikes, and every node of a panel that is invalid otherwise (a flipped edge is two
+      // nodes in the wrong order: pulled to their corners they come back in order).
+      std::vector<char> pull = layout_->spike_nodes();
+      for (int c = 0; c < layout_->num_clusters(); ++c) {
+        if (layout_->issues()[static_cast<size_t>(c)].valid()) continue;
+        for (int node : layout_->polygon(c).node) {
+          if (node >= 0) pull[static_cast<size_t>(node)] = 1;
+        }
+      }
+      if (std::find(pull.begin(), pull.end(), 1) == pull.end()) break;
+      for (size_t k = 0; k < nodes.size(); ++k) nodes[k].weight *= pull[k] ? 10.0 : 1.0;
       const std::vector<Plane> before = layout_->planes().planes;
       const int invalid = layout_->num_invalid();
-      layout_->set_planes(relax_planes(nodes, moments, before, options.relax_options, fixed_masters));
+      layout_->set_planes(relax_planes(nodes, master_moments, before, options.relax_options, fixed_masters));
       if (layout_->num_invalid() >= invalid) {
         layout_->set_planes(before);
         break;
@@ -119,16 +125,20 @@ std::vector<Plane> PanelAttempt::cluster_planes() const {
   return out;
 }
 
-std::vector<char> PanelAttempt::settled_clusters(const MeshTopology& topology) const {
+std::vector<char> PanelAttempt::settled_clusters(const MeshTopology& topology, int rings) const {
   const size_t n = static_cast<size_t>(clustering_.num_clusters());
   std::vector<char> settled(n, 0);
   for (size_t c = 0; c < n; ++c) settled[c] = layout_->issues()[c].valid();
-  std::vector<char> out = settled;
-  for (const auto& [a, b] : plane_neighbours(topology, clustering_.labels, graph_)) {
-    if (!settled[static_cast<size_t>(a)]) out[static_cast<size_t>(b)] = 0;
-    if (!settled[static_cast<size_t>(b)]) out[static_cast<size_t>(a)] = 0;
+  const std::vector<std::pair<int, int>> pairs = plane_neighbours(topology, clustering_.labels, graph_);
+  for (int ring = 0; ring < rings; ++ring) {
+    std::vector<char> out = settled;
+    for (const auto& [a, b] : pairs) {
+      if (!settled[static_cast<size_t>(a)]) out[static_cast<size_t>(b)] = 0;
+      if (!settled[static_cast<size_t>(b)]) out[static_cast<size_t>(a)] = 0;
+    }
+    settled = std::move(out);
   }
-  return out;
+  return settled;
 }
 
 int PanelAttempt::num_invalid() const {

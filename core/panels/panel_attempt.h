@@ -42,8 +42,9 @@ class PanelAttempt {
   double spike_distance() const { return spike_distance_; }
   // Per cluster: its plane in this attempt (its master's).
   std::vector<Plane> cluster_planes() const;
-  // Per cluster: its panel and every panel around it are valid.
-  std::vector<char> settled_clusters(const MeshTopology& topology) const;
+  // Per cluster: no invalid panel within `rings` steps (1: its panel and every panel around
+  // it are valid).
+  std::vector<char> settled_clusters(const MeshTopology& topology, int rings = 1) const;
   // Clusters that are not disks get no panel (PanelIssues::not_disk); the rest are laid out.
   PanelLayout& layout() { return *layout_; }
   const PanelLayout& layout() const { return *layout_; }

@@ -8,6 +8,19 @@ namespace {
 
 int local_index(const Triangle& t, int v) { return t[0] == v ? 0 : (t[1] == v ? 1 : 2); }
 
+// True when an edge at v has one face only.
+bool is_boundary_vertex(const TriMesh& mesh, const MeshTopology& topology, int v) {
+  for (int k = topology.vertex_face_offsets[static_cast<size_t>(v)]; k < topology.vertex_face_offsets[static_cast<size_t>(v) + 1];
+       ++k) {
+    const int f = topology.vertex_faces[static_cast<size_t>(k)];
+    const int i = local_index(mesh.triangles[static_cast<size_t>(f)], v);
+    if (topology.face_neighbors[static_cast<size_t>(f)][static_cast<size_t>(i)] < 0 ||
+        topology.face_neighbors[static_cast<size_t>(f)][static_cast<size_t>((i + 2) % 3)] < 0)
+      return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 std::vector<int> vertex_fan(const TriMesh& mesh, const MeshTopology& topology, int v, bool& on_boundary) {
@@ -50,6 +63,18 @@ PanelGraph build_panel_graph(const TriMesh& mesh, const MeshTopology& topology, 
   std::vector<long long> euler(n, 0);
   std::vector<int> cycle;
   for (int v = 0; v < mesh.num_vertices(); ++v) {
+    // Most vertices lie inside one cluster: count them without walking their fan.
+    const int begin = topology.vertex_face_offsets[static_cast<size_t>(v)];
+    const int end = topology.vertex_face_offsets[static_cast<size_t>(v) + 1];
+    if (begin == end) continue;
+    const int first_label = labels[static_cast<size_t>(topology.vertex_faces[static_cast<size_t>(begin)])];
+    bool single = true;
+    for (int k = begin + 1; k < end && single; ++k)
+      single = labels[static_cast<size_t>(topology.vertex_faces[static_cast<size_t>(k)])] == first_label;
+    if (single && !is_boundary_vertex(mesh, topology, v)) {
+      euler[static_cast<size_t>(first_label)] += 1;
+      continue;
+    }
     bool on_boundary = false;
     const std::vector<int> fan = vertex_fan(mesh, topology, v, on_boundary);
     if (fan.empty()) continue;

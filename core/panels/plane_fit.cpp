@@ -54,11 +54,9 @@ Plane fit_plane(const ClusterMoments& m, const std::vector<Vec3>& points, double
 
 }  // namespace
 
-std::vector<Plane> corner_fit_planes(const FaceData& faces, const std::vector<int>& labels,
+std::vector<Plane> corner_fit_planes(const std::vector<ClusterMoments>& moments,
                                      const std::vector<std::vector<Vec3>>& corners, const std::vector<Vec3>& orientation,
                                      double corner_weight) {
-  std::vector<ClusterMoments> moments(corners.size());
-  for (size_t f = 0; f < labels.size(); ++f) moments[static_cast<size_t>(labels[f])].add_face(faces, static_cast<int>(f));
   std::vector<Plane> out(corners.size());
   for (size_t c = 0; c < corners.size(); ++c) {
     const Plane fallback = Plane::through(moments[c].area > 0.0 ? Vec3(moments[c].first / moments[c].area) : Vec3::Zero(),

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/cluster/face_data.h"
+#include "core/cluster/metric.h"
 #include "core/panels/master_planes.h"
 
 namespace ff {
@@ -21,7 +22,7 @@ std::vector<Plane> surface_fit_planes(const FaceData& faces, const std::vector<i
 // and their intersections stray far from the corners on near-developable surfaces (the
 // paper's spikes, 2.3); a plane that also passes near its corners meets its neighbours near
 // them. `orientation` gives each normal's side. Local frame.
-std::vector<Plane> corner_fit_planes(const FaceData& faces, const std::vector<int>& labels,
+std::vector<Plane> corner_fit_planes(const std::vector<ClusterMoments>& moments,
                                      const std::vector<std::vector<Vec3>>& corners, const std::vector<Vec3>& orientation,
                                      double corner_weight);
 

@@ -28,7 +28,7 @@ const std::vector<PanelCase>& panel_cases() {
       {"hyperboloid_s4.off", 800}, {"YasIsland.off", 20},      {"YasIsland.off", 40},
       {"epcot.off", 20},           {"epcot.off", 38},          {"Moomoo.off", 77},
       {"Moomoo.off", 194},         {"bunny.off", 69},          {"bunny.off", 174},
-      {"bumpy.off", 24},           {"bumpy.off", 62},          {"fandisk.off", 144},
+      {"bumpy.off", 30},           {"bumpy.off", 62},          {"fandisk.off", 144},
       {"fandisk.off", 300},        {"3holes.off", 144},        {"3holes.off", 180},
       {"camelhead.off", 227},      {"camelhead.off", 400},     {"cow.off", 150},
       {"face.obj", 517},           {"face.obj", 800},          {"lilium.obj", 65},
