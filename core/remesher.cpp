@@ -161,14 +161,16 @@ void Remesher::finish_panels() {
   progress_.energy = clustering_.energy * faces_.area_to_world();
   panels_ = best_->layout().to_panel_mesh(faces_);
   progress_.invalid_panels = panels_.num_invalid();
-  const bool optimize = params_.optimize_planes && panels_.num_invalid() == 0;
+  const bool optimize = (params_.optimize_planes || params_.single_point_nodes) && panels_.num_invalid() == 0;
   progress_.stage = optimize ? Stage::Optimize : Stage::Done;
   if (optimize) progress_ = Progress{Stage::Optimize, 0, 1, progress_.energy, 0};
 }
 
 void Remesher::optimize_planes() {
   PanelLayout& layout = best_->layout();
-  layout.try_planes(surface_fit_planes(faces_, best_->clustering().labels, layout.planes()));
+  if (params_.optimize_planes) layout.try_planes(surface_fit_planes(faces_, best_->clustering().labels, layout.planes()));
+  // Last: it pins planes to points, which the fit above would undo.
+  if (params_.single_point_nodes) layout.make_single_point_nodes();
   panels_ = layout.to_panel_mesh(faces_);
   progress_.iteration = 1;
   progress_.invalid_panels = panels_.num_invalid();

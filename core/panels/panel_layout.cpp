@@ -1,5 +1,6 @@
 #include "core/panels/panel_layout.h"
 
+#include <Eigen/Dense>
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
@@ -40,6 +41,8 @@ PanelLayout::PanelLayout(const TriMesh& mesh, const MeshTopology& topology, cons
   const size_t groups = groups_.groups.size();
   const size_t clusters = graph_.problems.size();
   pairing_.resize(groups);
+  single_.assign(groups, 0);
+  single_point_.assign(groups, Vec3::Zero());
   node_offset_.assign(groups + 1, 0);
   for (size_t g = 0; g < groups; ++g) {
     node_offset_[g + 1] = node_offset_[g] + static_cast<int>(groups_.groups[g].clusters.size()) - 2;
@@ -138,7 +141,67 @@ void PanelLayout::place_group_nodes(int g) {
     node_point_[static_cast<size_t>(node)] = r.point;
     node_planes_[static_cast<size_t>(node)] = static_cast<int>(planes.size());
     node_exact_[static_cast<size_t>(node)] = r.exact ? 1 : 0;
+    if (single_[static_cast<size_t>(g)]) {
+      node_alias_[static_cast<size_t>(node)] = first;
+      node_point_[static_cast<size_t>(node)] = single_point_[static_cast<size_t>(g)];
+      node_planes_[static_cast<size_t>(node)] = static_cast<int>(clusters_of_group(g).size());
+      node_exact_[static_cast<size_t>(node)] = 1;
+    }
   }
+}
+
+int PanelLayout::make_single_point_nodes() {
+  std::vector<std::vector<Vec3>> through(planes_.planes.size());  // points each plane must contain
+  int made = 0;
+  for (size_t g = 0; g < groups_.groups.size(); ++g) {
+    const NodeGroup& group = groups_.groups[g];
+    if (group.on_boundary) continue;
+    std::vector<int> masters;
+    for (int c : clusters_of_group(static_cast<int>(g))) {
+      const int m = planes_.master_of[static_cast<size_t>(c)];
+      if (std::find(masters.begin(), masters.end(), m) == masters.end()) masters.push_back(m);
+    }
+    if (masters.size() < 4) continue;
+    bool room = true;
+    for (int m : masters) room = room && through[static_cast<size_t>(m)].size() < 2;
+    if (!room) continue;
+    // The least-squares point of the planes, held to the group's reference by a small weight.
+    Eigen::Matrix3d A = 1e-6 * Eigen::Matrix3d::Identity();
+    Vec3 b = 1e-6 * group.reference;
+    for (int m : masters) {
+      const Plane& p = planes_.planes[static_cast<size_t>(m)];
+      A += p.normal * p.normal.transpose();
+      b += p.offset * p.normal;
+    }
+    const Vec3 x = A.ldlt().solve(b);
+    if (!x.allFinite() || (x - group.reference).norm() > options_.spike_distance) continue;
+    const MasterPlanes saved = planes_;
+    const int before = num_invalid();
+    for (int m : masters) {
+      Plane& p = planes_.planes[static_cast<size_t>(m)];
+      const std::vector<Vec3>& fixed = through[static_cast<size_t>(m)];
+      if (fixed.empty()) {
+        p = Plane::through(x, p.normal);
+      } else {
+        // Rotate about the line through the first point so the plane also contains x.
+        const Vec3 u = (x - fixed[0]).normalized();
+        const Vec3 n = (p.normal - p.normal.dot(u) * u).normalized();
+        p = Plane::through(fixed[0], n);
+      }
+    }
+    single_[g] = 1;
+    single_point_[g] = x;
+    rebuild_all();
+    if (num_invalid() > before) {
+      planes_ = saved;
+      single_[g] = 0;
+      rebuild_all();
+      continue;
+    }
+    for (int m : masters) through[static_cast<size_t>(m)].push_back(x);
+    ++made;
+  }
+  return made;
 }
 
 // Distance of the group's nodes from their reference; planes without a common point, and two

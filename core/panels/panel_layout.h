@@ -73,6 +73,15 @@ class PanelLayout {
   // switch which two clusters share the edge.
   std::vector<std::pair<int, int>> reversed_chains() const;
 
+  // Single-point nodes (paper 2.2, the designer's alternative to splitting): where four or
+  // more distinct planes meet at an interior node group, move those planes so they all pass
+  // through one point (their least-squares point) and make the group one vertex. A plane can
+  // be made to pass through two such points (a translation, then a rotation about the first);
+  // a group that would need a third on some plane stays split, as does one whose change
+  // makes a panel around it invalid. Exact: the vertex lies on every plane by construction.
+  // Returns the number of groups made single.
+  int make_single_point_nodes();
+
   PanelMesh to_panel_mesh(const FaceData& frame) const;
 
  private:
@@ -103,6 +112,9 @@ class PanelLayout {
   // Per node: the first node of its group on the same planes (itself if none). Such nodes are
   // one point (e.g. where coplanar clusters meet), so they are one vertex.
   std::vector<int> node_alias_;
+  // Per group: whether it is one vertex where all its planes meet, and that point.
+  std::vector<char> single_;
+  std::vector<Vec3> single_point_;
   std::vector<std::vector<int>> groups_of_cluster_;
   std::vector<PanelPolygon> polygons_;
   std::vector<PanelIssues> issues_;

@@ -19,7 +19,7 @@ struct VertexRuleResult {
 };
 
 // Minimises |x - corner|^2 subject to n_i.x = d_i for 1 to 3 planes (more is a caller bug:
-// four planes meet in one point only when made to, see single-point nodes). Planes must be
+// four planes meet in one point only when made to: PanelLayout::make_single_point_nodes). Planes must be
 // pairwise distinct (master planes at least a degree apart); `planes` may be empty (returns
 // the corner).
 VertexRuleResult closest_point_on_planes(const std::vector<Plane>& planes, const Vec3& corner);

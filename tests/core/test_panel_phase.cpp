@@ -138,6 +138,27 @@ TEST(PanelPhase, NewParametersKeepTheLastPanelsUntilTheNewOnesAreReady) {
   EXPECT_TRUE(test::valid_panels(r, 45, 0.05));
 }
 
+TEST(PanelPhase, SinglePointNodesMeetExactly) {
+  // Where four or more planes meet, the designer may ask for one point instead of valence-3
+  // nodes joined by short edges: still exactly planar, still valid, now with 4+ nodes.
+  const TriMesh mesh = test::load_clean("3holes.off");
+  RemeshParams p;
+  p.panels = 144;
+  Remesher split(mesh, p);
+  split.run();
+  const QualityReport before = measure_quality(split.mesh(), split.topology(), split.panels());
+  p.single_point_nodes = true;
+  Remesher single(mesh, p);
+  single.run();
+  EXPECT_TRUE(test::valid_panels(single, 144, 0.08));
+  const QualityReport after = measure_quality(single.mesh(), single.topology(), single.panels());
+  int high = 0;
+  for (const auto& [valence, count] : after.interior_valence) high += valence >= 4 ? count : 0;
+  EXPECT_GT(high, 0);
+  EXPECT_LT(after.valence3_share, before.valence3_share);
+  EXPECT_LT(after.vertices, before.vertices);  // each single point replaces two or more nodes
+}
+
 TEST(PanelPhase, RejectsNegativePanelRounds) {
   RemeshParams p;
   p.panels = 10;
