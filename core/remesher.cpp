@@ -168,7 +168,8 @@ void Remesher::finish_panels() {
 
 void Remesher::optimize_planes() {
   PanelLayout& layout = best_->layout();
-  if (params_.optimize_planes) layout.try_planes(surface_fit_planes(faces_, best_->clustering().labels, layout.planes()));
+  if (params_.optimize_planes)
+    layout.try_planes(surface_fit_planes(faces_, best_->clustering().labels, layout.planes()));
   // Last: it pins planes to points, which the fit above would undo.
   if (params_.single_point_nodes) layout.make_single_point_nodes();
   panels_ = layout.to_panel_mesh(faces_);

@@ -105,7 +105,7 @@ class Remesher {
   Metric metric_;
   Clustering clustering_;
   Progress progress_;
-  std::vector<Vec3> local_positions_;  // mesh vertices in the frame of faces_
+  std::vector<Vec3> local_positions_;   // mesh vertices in the frame of faces_
   std::unique_ptr<PanelAttempt> best_;  // the attempt with the fewest invalid panels so far
   PanelMesh panels_;
   int panel_rounds_done_ = 0;

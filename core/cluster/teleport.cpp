@@ -148,7 +148,8 @@ int split_near(const Metric& metric, const MeshTopology& topology, Clustering& c
     used[static_cast<size_t>(m.a)] = used[static_cast<size_t>(m.b)] = 1;
     merge_into(metric, c, s, m.a, m.b);
     const int id = m.b;
-    c.proxies[static_cast<size_t>(id)] = single_face_proxy(metric.faces(), face, c.proxies[static_cast<size_t>(w)].normal);
+    c.proxies[static_cast<size_t>(id)] =
+        single_face_proxy(metric.faces(), face, c.proxies[static_cast<size_t>(w)].normal);
     c.seeds[static_cast<size_t>(id)] = face;
     c.sticky[static_cast<size_t>(id)] = sticky_iterations;
     c.sticky[static_cast<size_t>(w)] = std::max(c.sticky[static_cast<size_t>(w)], sticky_iterations);

@@ -13,7 +13,8 @@ BoundaryTerm::BoundaryTerm(const FaceData& faces, const PanelLayout& layout, dou
     if (layout.polygon(c).points.size() < 3) continue;
     const Plane& plane = layout.planes().plane_of(c);
     frames_[static_cast<size_t>(c)] = make_plane_frame(plane.offset * plane.normal, plane.normal);
-    for (const Vec3& p : layout.polygon(c).points) polygons_[static_cast<size_t>(c)].push_back(frames_[static_cast<size_t>(c)].to_2d(p));
+    for (const Vec3& p : layout.polygon(c).points)
+      polygons_[static_cast<size_t>(c)].push_back(frames_[static_cast<size_t>(c)].to_2d(p));
   }
 }
 
@@ -29,16 +30,17 @@ void BoundaryTerm::freeze(const std::vector<char>& settled, const std::vector<in
 int BoundaryTerm::fixed_label(int face) const {
   if (settled_.empty()) return -1;
   const int current = labels_[static_cast<size_t>(face)];
-  return current >= 0 && static_cast<size_t>(current) < settled_.size() && settled_[static_cast<size_t>(current)] ? current
-                                                                                                               : -1;
+  return current >= 0 && static_cast<size_t>(current) < settled_.size() && settled_[static_cast<size_t>(current)]
+             ? current
+             : -1;
 }
 
 double BoundaryTerm::operator()(int face, int cluster) const {
   if (!settled_.empty()) {
     const int current = labels_[static_cast<size_t>(face)];
-    if (current != cluster && ((current >= 0 && static_cast<size_t>(current) < settled_.size() &&
-                                settled_[static_cast<size_t>(current)]) ||
-                               (static_cast<size_t>(cluster) < settled_.size() && settled_[static_cast<size_t>(cluster)])))
+    if (current != cluster &&
+        ((current >= 0 && static_cast<size_t>(current) < settled_.size() && settled_[static_cast<size_t>(current)]) ||
+         (static_cast<size_t>(cluster) < settled_.size() && settled_[static_cast<size_t>(cluster)])))
       return kForbidden;
   }
   if (scale_ == 0.0 || cluster < 0 || static_cast<size_t>(cluster) >= polygons_.size()) return 0.0;

@@ -86,8 +86,8 @@ NodeGroups group_corners(const TriMesh& mesh, const MeshTopology& topology, cons
       const int corner = graph.corner_of_vertex[static_cast<size_t>(head(h))];
       if (corner < 0) continue;
       const int other = PanelGraph::other_side(topology, labels, h);
-      const bool force = std::find(forced.begin(), forced.end(), std::make_pair(std::min(start, corner),
-                                                                                 std::max(start, corner))) != forced.end();
+      const bool force = std::find(forced.begin(), forced.end(),
+                                   std::make_pair(std::min(start, corner), std::max(start, corner))) != forced.end();
       if (other != kBoundary && static_cast<int>(c) < other && (length <= max_chain_length || force) && corner != start)
         chains.push_back({force ? -1.0 : length, start, corner, static_cast<int>(c), other});
       start = corner;

@@ -13,8 +13,8 @@
 namespace ff {
 
 struct NodeGroup {
-  std::vector<int> clusters;  // counter-clockwise; kBoundary once for a boundary group
-  std::vector<int> corners;   // the panel-graph corners it stands for (1 or 2)
+  std::vector<int> clusters;      // counter-clockwise; kBoundary once for a boundary group
+  std::vector<int> corners;       // the panel-graph corners it stands for (1 or 2)
   Vec3 reference = Vec3::Zero();  // where its nodes belong: the corner, or the chain's midpoint
   bool on_boundary = false;
   // On the boundary: the border's wall at its boundary corner (the plane through the corner

@@ -15,7 +15,9 @@ struct MasterPlanes {
   std::vector<Vec3> centers;   // per master: the area-weighted centre of its clusters
   std::vector<int> count;      // clusters per master
 
-  const Plane& plane_of(int cluster) const { return planes[static_cast<size_t>(master_of[static_cast<size_t>(cluster)])]; }
+  const Plane& plane_of(int cluster) const {
+    return planes[static_cast<size_t>(master_of[static_cast<size_t>(cluster)])];
+  }
 };
 
 // Groups `neighbours` (cluster pairs) closer than max_angle_deg, greedily from the closest

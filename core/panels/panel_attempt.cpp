@@ -19,7 +19,8 @@ std::vector<Plane> proxy_planes(const Clustering& clustering) {
 
 PanelAttempt::PanelAttempt(const TriMesh& mesh, const MeshTopology& topology, const std::vector<Vec3>& positions,
                            const FaceData& faces, const Clustering& clustering, const PanelAttemptOptions& options)
-    : clustering_(clustering), graph_(build_panel_graph(mesh, topology, clustering_.labels, clustering_.num_clusters())) {
+    : clustering_(clustering),
+      graph_(build_panel_graph(mesh, topology, clustering_.labels, clustering_.num_clusters())) {
   const size_t n = static_cast<size_t>(clustering_.num_clusters());
   // Average cluster diameter, from the cluster boundaries.
   std::vector<double> reach(n, 0.0);
@@ -53,9 +54,8 @@ PanelAttempt::PanelAttempt(const TriMesh& mesh, const MeshTopology& topology, co
     centers[c] = planes[c].project(clustering_.proxies[c].center);
     areas[c] = moments[c].area;
   }
-  MasterPlanes masters =
-      snap_master_planes(planes, centers, areas, plane_neighbours(topology, clustering_.labels, graph_),
-                         options.master_angle_deg);
+  MasterPlanes masters = snap_master_planes(
+      planes, centers, areas, plane_neighbours(topology, clustering_.labels, graph_), options.master_angle_deg);
   LayoutOptions layout_options = options.layout;
   layout_options.spike_distance = spike_distance_;
   layout_ = std::make_unique<PanelLayout>(mesh, topology, clustering_.labels, positions, graph_, std::move(masters),
@@ -141,9 +141,7 @@ std::vector<char> PanelAttempt::settled_clusters(const MeshTopology& topology, i
   return settled;
 }
 
-int PanelAttempt::num_invalid() const {
-  return layout_->num_invalid();
-}
+int PanelAttempt::num_invalid() const { return layout_->num_invalid(); }
 
 std::vector<std::pair<int, int>> plane_neighbours(const MeshTopology& topology, const std::vector<int>& labels,
                                                   const PanelGraph& graph) {

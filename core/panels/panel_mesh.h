@@ -11,12 +11,12 @@ namespace ff {
 
 // What is wrong with one panel; all false/zero for a valid panel.
 struct PanelIssues {
-  bool not_simple = false;     // its polygon self-intersects in its own plane
-  bool flipped = false;        // some edge runs against the cluster's orientation (paper fig. 6)
-  bool not_star = false;       // empty kernel (paper fig. 7e)
-  int spike_vertices = 0;      // vertices farther than 0.2 D from their mesh corner (paper 2.3)
+  bool not_simple = false;        // its polygon self-intersects in its own plane
+  bool flipped = false;           // some edge runs against the cluster's orientation (paper fig. 6)
+  bool not_star = false;          // empty kernel (paper fig. 7e)
+  int spike_vertices = 0;         // vertices farther than 0.2 D from their mesh corner (paper 2.3)
   bool too_few_vertices = false;  // fewer than 3 vertices
-  bool not_disk = false;       // its cluster has a hole, is enclosed, pinches or touches a neighbour twice
+  bool not_disk = false;          // its cluster has a hole, is enclosed, pinches or touches a neighbour twice
 
   bool valid() const {
     return !not_simple && !flipped && !not_star && spike_vertices == 0 && !too_few_vertices && !not_disk;

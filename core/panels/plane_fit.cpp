@@ -55,13 +55,14 @@ Plane fit_plane(const ClusterMoments& m, const std::vector<Vec3>& points, double
 }  // namespace
 
 std::vector<Plane> corner_fit_planes(const std::vector<ClusterMoments>& moments,
-                                     const std::vector<std::vector<Vec3>>& corners, const std::vector<Vec3>& orientation,
-                                     double corner_weight) {
+                                     const std::vector<std::vector<Vec3>>& corners,
+                                     const std::vector<Vec3>& orientation, double corner_weight) {
   std::vector<Plane> out(corners.size());
   for (size_t c = 0; c < corners.size(); ++c) {
-    const Plane fallback = Plane::through(moments[c].area > 0.0 ? Vec3(moments[c].first / moments[c].area) : Vec3::Zero(),
-                                          orientation[c]);
-    const double w = corners[c].empty() ? 0.0 : corner_weight * moments[c].area / static_cast<double>(corners[c].size());
+    const Plane fallback =
+        Plane::through(moments[c].area > 0.0 ? Vec3(moments[c].first / moments[c].area) : Vec3::Zero(), orientation[c]);
+    const double w =
+        corners[c].empty() ? 0.0 : corner_weight * moments[c].area / static_cast<double>(corners[c].size());
     out[c] = fit_plane(moments[c], corners[c], w, orientation[c], fallback);
   }
   return out;

@@ -23,7 +23,7 @@ std::vector<Plane> surface_fit_planes(const FaceData& faces, const std::vector<i
 // paper's spikes, 2.3); a plane that also passes near its corners meets its neighbours near
 // them. `orientation` gives each normal's side. Local frame.
 std::vector<Plane> corner_fit_planes(const std::vector<ClusterMoments>& moments,
-                                     const std::vector<std::vector<Vec3>>& corners, const std::vector<Vec3>& orientation,
-                                     double corner_weight);
+                                     const std::vector<std::vector<Vec3>>& corners,
+                                     const std::vector<Vec3>& orientation, double corner_weight);
 
 }  // namespace ff

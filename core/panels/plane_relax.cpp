@@ -24,7 +24,8 @@ std::vector<Plane> relax_planes(const std::vector<NodeConstraint>& nodes, const 
   std::vector<size_t> active;
   for (size_t k = 0; k < nodes.size(); ++k) {
     bool free = fixed.empty();
-    for (int j = 0; j < nodes[k].count && !free; ++j) free = !fixed[static_cast<size_t>(nodes[k].planes[static_cast<size_t>(j)])];
+    for (int j = 0; j < nodes[k].count && !free; ++j)
+      free = !fixed[static_cast<size_t>(nodes[k].planes[static_cast<size_t>(j)])];
     if (free) active.push_back(k);
   }
   double w = options.start_weight;

@@ -24,7 +24,7 @@ namespace ff {
 struct NodeConstraint {
   Vec3 corner = Vec3::Zero();  // p_k: where the node should be
   std::array<int, 3> planes{{-1, -1, -1}};
-  int count = 0;  // planes used (1..3)
+  int count = 0;        // planes used (1..3)
   double weight = 1.0;  // how hard the node is pulled to its corner (raised for spikes)
 };
 

@@ -35,7 +35,8 @@ VertexRuleResult closest_point_on_planes(const std::vector<Plane>& planes, const
     const double det = n0.dot(n1.cross(n2));
     if (std::abs(det) > 1e-12) {
       // Cramer's rule in the triple-product form: exact on all three planes.
-      r.point = (planes[0].offset * n1.cross(n2) + planes[1].offset * n2.cross(n0) + planes[2].offset * n0.cross(n1)) / det;
+      r.point =
+          (planes[0].offset * n1.cross(n2) + planes[1].offset * n2.cross(n0) + planes[2].offset * n0.cross(n1)) / det;
       // One Newton step on the residuals removes the rounding the division left behind.
       Eigen::Matrix3d N;
       N.row(0) = n0.transpose();
@@ -49,7 +50,8 @@ VertexRuleResult closest_point_on_planes(const std::vector<Plane>& planes, const
       double best = -1.0;
       for (int i = 0; i < 3; ++i) {
         for (int j = i + 1; j < 3; ++j) {
-          const double s = planes[static_cast<size_t>(i)].normal.cross(planes[static_cast<size_t>(j)].normal).squaredNorm();
+          const double s =
+              planes[static_cast<size_t>(i)].normal.cross(planes[static_cast<size_t>(j)].normal).squaredNorm();
           if (s > best) best = s, best_i = i, best_j = j;
         }
       }

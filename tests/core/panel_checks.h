@@ -19,9 +19,9 @@ inline ::testing::AssertionResult valid_panels(const Remesher& r, int panels, do
   fail << pm.num_panels() << " panels, " << pm.num_invalid() << " invalid by the panel phase, " << q.invalid_panels
        << " by the quality check (flipped edges " << q.flipped_edges << ", non-star " << q.non_star_panels
        << ", non-simple " << q.non_simple_panels << ", spikes " << q.spike_vertices << ", misoriented "
-       << q.misoriented_panels << "), planarity " << q.max_planarity << ", hausdorff " << q.hausdorff
-       << ", topology " << (q.topology_preserved ? "kept" : "broken") << " (euler " << q.euler_in << " -> "
-       << q.euler_out << ", loops " << q.boundary_loops_in << " -> " << q.boundary_loops_out << ")";
+       << q.misoriented_panels << "), planarity " << q.max_planarity << ", hausdorff " << q.hausdorff << ", topology "
+       << (q.topology_preserved ? "kept" : "broken") << " (euler " << q.euler_in << " -> " << q.euler_out << ", loops "
+       << q.boundary_loops_in << " -> " << q.boundary_loops_out << ")";
   if (pm.num_panels() != panels || pm.num_invalid() != 0 || q.invalid_panels != 0) return fail;
   if (!(q.max_planarity <= 1e-9) || !q.topology_preserved || !q.oriented_manifold) return fail;
   if (q.flipped_edges != 0 || q.non_star_panels != 0 || q.non_simple_panels != 0 || q.spike_vertices != 0 ||

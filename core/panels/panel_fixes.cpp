@@ -1,0 +1,188 @@
+// The fixes a PanelLayout can make without reclustering: switching pairings (paper fig. 6),
+// tilting spike planes (2.3), trying new planes under a validity guard, grouping the corners
+// of flipped chains, and single-point nodes (2.2).
+#include <Eigen/Dense>
+#include <Eigen/Geometry>
+#include <algorithm>
+
+#include "core/panels/panel_layout.h"
+
+namespace ff {
+
+int PanelLayout::make_single_point_nodes() {
+  std::vector<std::vector<Vec3>> through(planes_.planes.size());  // points each plane must contain
+  int made = 0;
+  for (size_t g = 0; g < groups_.groups.size(); ++g) {
+    const NodeGroup& group = groups_.groups[g];
+    if (group.on_boundary) continue;
+    std::vector<int> masters;
+    for (int c : clusters_of_group(static_cast<int>(g))) {
+      const int m = planes_.master_of[static_cast<size_t>(c)];
+      if (std::find(masters.begin(), masters.end(), m) == masters.end()) masters.push_back(m);
+    }
+    if (masters.size() < 4) continue;
+    bool room = true;
+    for (int m : masters) room = room && through[static_cast<size_t>(m)].size() < 2;
+    if (!room) continue;
+    // The least-squares point of the planes, held to the group's reference by a small weight.
+    Eigen::Matrix3d A = 1e-6 * Eigen::Matrix3d::Identity();
+    Vec3 b = 1e-6 * group.reference;
+    for (int m : masters) {
+      const Plane& p = planes_.planes[static_cast<size_t>(m)];
+      A += p.normal * p.normal.transpose();
+      b += p.offset * p.normal;
+    }
+    const Vec3 x = A.ldlt().solve(b);
+    if (!x.allFinite() || (x - group.reference).norm() > options_.spike_distance) continue;
+    const MasterPlanes saved = planes_;
+    const int before = num_invalid();
+    for (int m : masters) {
+      Plane& p = planes_.planes[static_cast<size_t>(m)];
+      const std::vector<Vec3>& fixed = through[static_cast<size_t>(m)];
+      if (fixed.empty()) {
+        p = Plane::through(x, p.normal);
+      } else {
+        // Rotate about the line through the first point so the plane also contains x.
+        const Vec3 u = (x - fixed[0]).normalized();
+        const Vec3 n = (p.normal - p.normal.dot(u) * u).normalized();
+        p = Plane::through(fixed[0], n);
+      }
+    }
+    single_[g] = 1;
+    single_point_[g] = x;
+    rebuild_all();
+    if (num_invalid() > before) {
+      planes_ = saved;
+      single_[g] = 0;
+      rebuild_all();
+      continue;
+    }
+    for (int m : masters) through[static_cast<size_t>(m)].push_back(x);
+    ++made;
+  }
+  return made;
+}
+
+int PanelLayout::switch_pairings() {
+  int changes = 0;
+  for (size_t g = 0; g < groups_.groups.size(); ++g) {
+    const int k = static_cast<int>(groups_.groups[g].clusters.size());
+    if (k < 4) continue;
+    const std::vector<int> around = clusters_of_group(static_cast<int>(g));
+    const auto invalid_around = [&]() {
+      int count = 0;
+      for (int c : around) count += issues_[static_cast<size_t>(c)].valid() ? 0 : 1;
+      return count;
+    };
+    int best = invalid_around();
+    if (best == 0) continue;
+    const Pairing original = pairing_[g];
+    Pairing best_pairing = original;
+    for (const Pairing& p : node_pairings(k)) {
+      if (p == original) continue;
+      pairing_[g] = p;
+      place_group_nodes(static_cast<int>(g));
+      rebuild(around);
+      const int now = invalid_around();
+      if (now < best) best = now, best_pairing = p;
+    }
+    pairing_[g] = best_pairing;
+    place_group_nodes(static_cast<int>(g));
+    rebuild(around);
+    if (best_pairing != original) ++changes;
+  }
+  return changes;
+}
+
+bool PanelLayout::tilt_spike_planes() {
+  MasterPlanes tilted = planes_;
+  bool any = false;
+  const std::vector<char> spikes = spike_nodes();
+  for (size_t node = 0; node < node_point_.size(); ++node) {
+    if (!spikes[node]) continue;
+    const Vec3& at = groups_.groups[static_cast<size_t>(node_group_[node])].reference;
+    for (int m : masters_of_node(node)) {
+      Plane& plane = tilted.planes[static_cast<size_t>(m)];
+      // Average the plane with the nearest plane through its centre and the corner.
+      const Vec3& center = planes_.centers[static_cast<size_t>(m)];
+      const Vec3 reach = at - center;
+      if (reach.norm() < 1e-12) continue;
+      const Vec3 u = reach.normalized();
+      Vec3 through = plane.normal - plane.normal.dot(u) * u;
+      if (through.norm() < 1e-12) continue;
+      plane = Plane::through(center, (plane.normal + through.normalized()).normalized());
+      any = true;
+    }
+  }
+  if (!any) return false;
+  // All tilts together (a spike needs its planes to move), kept only if that helps.
+  const int before = num_invalid();
+  MasterPlanes saved = planes_;
+  planes_ = std::move(tilted);
+  rebuild_all();
+  if (num_invalid() < before) return true;
+  planes_ = std::move(saved);
+  rebuild_all();
+  return false;
+}
+
+int PanelLayout::try_planes(const std::vector<Plane>& candidates) {
+  int kept = 0;
+  for (size_t m = 0; m < planes_.planes.size(); ++m) {
+    const Plane old = planes_.planes[m];
+    const Plane& cand = candidates[m];
+    if (cand.normal == old.normal && cand.offset == old.offset) continue;
+    // The groups and panels this plane reaches.
+    std::vector<int> groups, clusters;
+    for (size_t c = 0; c < planes_.master_of.size(); ++c) {
+      if (planes_.master_of[c] != static_cast<int>(m)) continue;
+      clusters.push_back(static_cast<int>(c));
+      for (int g : groups_of_cluster_[c]) groups.push_back(g);
+    }
+    std::sort(groups.begin(), groups.end());
+    groups.erase(std::unique(groups.begin(), groups.end()), groups.end());
+    for (int g : groups) {
+      for (int c : clusters_of_group(g)) clusters.push_back(c);
+    }
+    std::sort(clusters.begin(), clusters.end());
+    clusters.erase(std::unique(clusters.begin(), clusters.end()), clusters.end());
+    int before = 0;
+    for (int c : clusters) before += issues_[static_cast<size_t>(c)].valid() ? 0 : 1;
+    planes_.planes[m] = cand;
+    for (int g : groups) place_group_nodes(g);
+    rebuild(clusters);
+    int after = 0;
+    for (int c : clusters) after += issues_[static_cast<size_t>(c)].valid() ? 0 : 1;
+    if (after <= before) {
+      ++kept;
+    } else {
+      planes_.planes[m] = old;
+      for (int g : groups) place_group_nodes(g);
+      rebuild(clusters);
+    }
+  }
+  return kept;
+}
+
+std::vector<std::pair<int, int>> PanelLayout::reversed_chains() const {
+  std::vector<std::pair<int, int>> out;
+  for (size_t c = 0; c < polygons_.size(); ++c) {
+    if (issues_[c].valid()) continue;
+    const PanelPolygon& poly = polygons_[c];
+    const size_t k = poly.points.size();
+    for (size_t i = 0; i < k; ++i) {
+      const size_t j = (i + 1) % k;
+      if (poly.node[i] < 0 || poly.node[j] < 0) continue;
+      const NodeGroup& a = groups_.groups[static_cast<size_t>(node_group_[static_cast<size_t>(poly.node[i])])];
+      const NodeGroup& b = groups_.groups[static_cast<size_t>(node_group_[static_cast<size_t>(poly.node[j])])];
+      if (&a == &b || a.corners.size() != 1 || b.corners.size() != 1) continue;
+      if ((poly.points[j] - poly.points[i]).dot(b.reference - a.reference) >= 0.0) continue;
+      out.emplace_back(std::min(a.corners[0], b.corners[0]), std::max(a.corners[0], b.corners[0]));
+    }
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+}  // namespace ff
