@@ -168,8 +168,11 @@ void Remesher::finish_panels() {
 
 void Remesher::optimize_planes() {
   PanelLayout& layout = best_->layout();
-  if (params_.optimize_planes)
-    layout.try_planes(surface_fit_planes(faces_, best_->clustering().labels, layout.planes()));
+  if (params_.optimize_planes) {
+    const PanelLayout& settled = layout;
+    layout.try_planes(
+        surface_fit_planes(faces_, best_->clustering().labels, settled.planes(), settled.node_constraints()));
+  }
   // Last: it pins planes to points, which the fit above would undo.
   if (params_.single_point_nodes) layout.make_single_point_nodes();
   panels_ = layout.to_panel_mesh(faces_);

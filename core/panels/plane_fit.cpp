@@ -7,27 +7,15 @@
 namespace ff {
 
 std::vector<Plane> surface_fit_planes(const FaceData& faces, const std::vector<int>& labels,
-                                      const MasterPlanes& masters) {
+                                      const MasterPlanes& masters, const std::vector<NodeConstraint>& nodes) {
   std::vector<ClusterMoments> moments(masters.planes.size());
   for (size_t f = 0; f < labels.size(); ++f) {
-    const int m = masters.master_of[static_cast<size_t>(labels[f])];
-    moments[static_cast<size_t>(m)].add_face(faces, static_cast<int>(f));
+    moments[static_cast<size_t>(masters.master_of[static_cast<size_t>(labels[f])])].add_face(faces,
+                                                                                             static_cast<int>(f));
   }
-  std::vector<Plane> out = masters.planes;
-  for (size_t m = 0; m < moments.size(); ++m) {
-    const ClusterMoments& mo = moments[m];
-    if (!(mo.area > 0.0)) continue;
-    const Vec3 center = mo.first / mo.area;
-    // The exact area covariance about the centroid; its smallest eigenvector is the normal
-    // of least integrated squared distance.
-    const Eigen::Matrix3d covariance = mo.second - mo.first * mo.first.transpose() / mo.area;
-    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance);
-    Vec3 normal = solver.eigenvectors().col(0);
-    if (!normal.allFinite() || normal.norm() < 0.5) continue;
-    if (normal.dot(masters.planes[m].normal) < 0.0) normal = -normal;
-    out[m] = Plane::through(center, normal.normalized());
-  }
-  return out;
+  RelaxOptions fit;
+  fit.node_weight = 0.2;
+  return relax_planes(nodes, moments, masters.planes, fit);
 }
 
 namespace {
