@@ -10,197 +10,34 @@
 //
 // Every (case, method) runs in a fresh child process (fork + exec of this binary) so the
 // peak resident set of each is its own: wait4() returns the child's rusage, ru_maxrss.
-#include <unistd.h>
-
-#include <Eigen/Geometry>
+// This file is the parent's side, the table; the child's is cluster_child.cpp.
 #include <algorithm>
-#include <cerrno>
-#include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
-#include <exception>
-#include <fstream>
-#include <map>
-#include <sstream>
+#include <functional>
 #include <string>
 #include <vector>
 
 #include "bench/bench_case.h"
+#include "bench/bench_options.h"
 #include "bench/child_process.h"
-#include "bench/partition_energy.h"
-#include "core/cluster/clustering.h"
-#include "core/mesh/clean.h"
-#include "core/mesh/mesh_io.h"
-#include "core/remesher.h"
-#include "core/shapes/shapes.h"
-
-#ifdef FF_HAVE_CGAL
-#include "bench/cgal_vsa.h"
-#endif
-
-#ifndef FF_DEFAULT_SHARED_MESHES
-#define FF_DEFAULT_SHARED_MESHES "../shared/meshes"
-#endif
+#include "bench/cluster_child.h"
+#include "bench/report_text.h"
+#include "bench/result_line.h"
 
 namespace {
 
 using namespace ff::bench;
-using Clock = std::chrono::steady_clock;
 
-double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
-
-bool close_enough(double a, double b, double scale, double rel) {
-  return std::abs(a - b) <= rel * std::max(scale, 1e-300);
-}
-
-// ---------------------------------------------------------------------------------------
-// One measurement (in the child)
-
-struct Result {
-  std::string method;
-  int faces = 0;
-  int panels = 0;
-  int iterations = 0;
-  double setup_a = 0.0;  // ours: topology + face data; CGAL: Surface_mesh + L21 metric data
-  double setup_b = 0.0;  // seeding and the first partition (ours) / seeding (CGAL)
-  std::vector<double> iteration_seconds;
-  double energy = 0.0;      // l21_energy of the final partition
-  double lib_energy = 0.0;  // the library's own report of the same (where it has one)
-  std::string failure;      // empty when every check passed
-
-  double setup() const { return setup_a + setup_b; }
-  double iterations_total() const {
-    double s = 0.0;
-    for (double t : iteration_seconds) s += t;
-    return s;
-  }
-};
-
-Result run_ours(const std::string& method, ff::TriMesh mesh, int panels, int iterations, std::uint64_t seed) {
-  Result r;
-  r.method = method;
-  r.faces = mesh.num_faces();
-  r.panels = panels;
-  ff::RemeshParams params;
-  params.panels = panels;
-  params.seed = seed;
-  params.lloyd_iterations = iterations;
-  // The clustering alone, like CGAL's run(): without this the Remesher goes on into the panel
-  // phase, whose rounds would be timed as iterations and may change the cluster count.
-  params.make_panels = false;
-  if (method == "ours-l21") {
-    // The same work as CGAL VSA's default: L2,1 only, random seeds, no teleports.
-    params.weights.euclidean = 0.0;
-    params.weights.l2 = 0.0;
-    params.weights.l21 = 1.0;
-    params.seeding = ff::SeedingMethod::Random;
-    params.teleport_interval = 0;
-  }  // ours-default: the product defaults (all weights 1, farthest-point seeds, teleports)
-  Clock::time_point t = Clock::now();
-  ff::Remesher remesher(std::move(mesh), params);
-  r.setup_a = seconds_since(t);
-  t = Clock::now();
-  remesher.step();  // seeding + initial flood and fit
-  r.setup_b = seconds_since(t);
-  while (!remesher.done()) {
-    t = Clock::now();
-    remesher.step();
-    r.iteration_seconds.push_back(seconds_since(t));
-  }
-  r.iterations = remesher.lloyd_iterations_done();
-
-  const ff::Clustering& c = remesher.clustering();
-  r.energy = l21_energy(remesher.mesh(), c.labels, c.num_clusters());
-  r.lib_energy = remesher.energy().l21;
-  if (c.num_clusters() != panels)
-    r.failure = "expected " + std::to_string(panels) + " clusters, got " + std::to_string(c.num_clusters());
-  else if (r.energy < 0.0)
-    r.failure = "labels are not a partition into non-empty clusters";
-  else if (!ff::clusters_are_contiguous(remesher.topology(), c.labels, c.num_clusters()))
-    r.failure = "a cluster is not edge-connected";
-  else if (!std::isfinite(r.energy))
-    r.failure = "energy is not finite";
-  else if (method == "ours-l21" && !close_enough(r.energy, r.lib_energy, remesher.metric().faces().total_area, 1e-9))
-    r.failure = "our L2,1 energy disagrees with the library's";
-  return r;
-}
-
-#ifdef FF_HAVE_CGAL
-Result run_cgal(const ff::TriMesh& mesh, int panels, int iterations, unsigned seed) {
-  Result r;
-  r.method = "cgal";
-  r.faces = mesh.num_faces();
-  r.panels = panels;
-  ff::bench::CgalVsaRun run = ff::bench::run_cgal_vsa(mesh, panels, iterations, seed);
-  r.setup_a = run.build_seconds;
-  r.setup_b = run.seed_seconds;
-  r.iteration_seconds = run.iteration_seconds;
-  r.iterations = static_cast<int>(run.iteration_seconds.size());
-  r.energy = l21_energy(mesh, run.labels, run.proxies);
-  r.lib_energy = run.cgal_error;
-  const double area = ff::total_area(mesh);
-  if (run.proxies != panels)
-    r.failure = "CGAL made " + std::to_string(run.proxies) + " proxies, asked for " + std::to_string(panels);
-  else if (r.energy < 0.0)
-    r.failure = "CGAL labels are not a partition into non-empty clusters";
-  else if (!std::isfinite(r.energy))
-    r.failure = "energy is not finite";
-  else if (iterations > 0 && !close_enough(r.energy, r.lib_energy, area, 1e-9))
-    r.failure = "our L2,1 energy of CGAL's partition disagrees with CGAL's error";
-  return r;
-}
-#endif
-
-// The child's side: one method on one case, one line on stdout.
-int run_only(const std::string& method, const Case& c, const std::string& meshes, int iterations, std::uint64_t seed) {
-  ff::TriMesh mesh = make_input(c, meshes);
-  Result r;
-  if (method == "input") {
-    r.method = method;
-    r.faces = mesh.num_faces();
-    r.panels = c.panels;
-  } else if (method == "ours-l21" || method == "ours-default") {
-    r = run_ours(method, std::move(mesh), c.panels, iterations, seed);
-  } else if (method == "cgal") {
-#ifdef FF_HAVE_CGAL
-    r = run_cgal(mesh, c.panels, iterations, static_cast<unsigned>(seed));
-#else
-    std::fprintf(stderr, "bench_cluster: built without CGAL\n");
-    return 2;
-#endif
-  } else {
-    std::fprintf(stderr, "bench_cluster: unknown method '%s'\n", method.c_str());
-    return 2;
-  }
-  std::printf(
-      "result faces=%d panels=%d iterations=%d setup_a=%.9g setup_b=%.9g iter_total=%.9g energy=%.17g "
-      "lib_energy=%.17g\n",
-      r.faces, r.panels, r.iterations, r.setup_a, r.setup_b, r.iterations_total(), r.energy, r.lib_energy);
-  std::fflush(stdout);
-  if (!r.failure.empty()) {
-    std::fprintf(stderr, "bench_cluster: %s on %s: %s\n", method.c_str(), c.name.c_str(), r.failure.c_str());
-    return 3;
-  }
-  return 0;
-}
-
-// ---------------------------------------------------------------------------------------
-// The parent's side: a child per measurement.
-
-struct Measured {
+// What a child measured, and how it went.
+struct Measured : ResultValues {
   bool ok = false;
   std::string error;
-  std::map<std::string, std::string> values;
   double process_seconds = 0.0;  // wall clock from fork to exit
   double process_cpu = 0.0;      // the child's user + system CPU time
   double peak_rss_mib = 0.0;     // the child's ru_maxrss
-
-  double num(const std::string& key) const {
-    const auto it = values.find(key);
-    return it == values.end() ? std::nan("") : std::strtod(it->second.c_str(), nullptr);
-  }
 };
 
 Measured measure_once(const std::string& exe, const std::string& method, const Case& c, const std::string& meshes,
@@ -211,17 +48,7 @@ Measured measure_once(const std::string& exe, const std::string& method, const C
   m.process_seconds = run.wall_seconds;
   m.process_cpu = run.cpu_seconds;
   m.peak_rss_mib = run.peak_rss_mib;
-  std::istringstream lines(run.out);
-  std::string line;
-  while (std::getline(lines, line)) {
-    if (line.rfind("result ", 0) != 0) continue;
-    std::istringstream fields(line.substr(7));
-    std::string kv;
-    while (fields >> kv) {
-      const size_t eq = kv.find('=');
-      if (eq != std::string::npos) m.values[kv.substr(0, eq)] = kv.substr(eq + 1);
-    }
-  }
+  read_result(run.out, m);
   m.ok = run.ok && !m.values.empty();
   m.error = !run.ok ? run.error : (m.values.empty() ? "no result" : "");
   return m;
@@ -247,13 +74,6 @@ Measured measure(const std::string& exe, const std::string& method, const Case& 
   return best;
 }
 
-std::string fmt(const char* format, double v) {
-  if (!std::isfinite(v)) return "-";
-  char buf[64];
-  std::snprintf(buf, sizeof buf, format, v);
-  return buf;
-}
-
 std::string method_label(const std::string& method) {
   if (method == "ours-l21") return "ours: L2,1, random, no teleport";
   if (method == "ours-default") return "ours: default (all weights, farthest-point, teleport)";
@@ -261,41 +81,8 @@ std::string method_label(const std::string& method) {
   return method;
 }
 
-std::string machine_line() {
-  std::string cpu = "unknown CPU";
-  std::ifstream info("/proc/cpuinfo");
-  std::string line;
-  while (std::getline(info, line)) {
-    if (line.rfind("model name", 0) == 0) {
-      const size_t colon = line.find(':');
-      if (colon != std::string::npos) cpu = line.substr(colon + 2);
-      break;
-    }
-  }
-  const long cores = sysconf(_SC_NPROCESSORS_ONLN);
-#if defined(__clang__)
-  const std::string compiler = std::string("clang ") + __clang_version__;
-#elif defined(__GNUC__)
-  const std::string compiler = std::string("GCC ") + __VERSION__;
-#else
-  const std::string compiler = "unknown compiler";
-#endif
-  std::string cgal = "without CGAL";
-#ifdef FF_HAVE_CGAL
-  cgal = "CGAL " + ff::bench::cgal_version();
-#endif
-  return cpu + ", " + std::to_string(cores) + " cores; " + compiler + "; " + cgal;
-}
-
-struct Options {
-  bool smoke = false;
-  std::string only;
-  std::string case_name;
-  std::vector<std::string> cases;
-  std::string meshes;
-  int iterations = -1;
-  int repeat = 1;
-  std::uint64_t seed = 1;
+struct Options : BenchOptions {
+  int iterations = -1;  // --iterations N
 };
 
 void usage() {
@@ -347,10 +134,7 @@ int run_table(const Options& o, const char* argv0) {
       usage();
       return 2;
     }
-    if (!c.file.empty() && access((o.meshes + "/" + c.file).c_str(), R_OK) != 0) {
-      notes.push_back(c.label + " skipped: " + o.meshes + "/" + c.file + " not found (pass --meshes DIR)");
-      continue;
-    }
+    if (mesh_file_missing(o.meshes, c.file, c.label, notes)) continue;
     const Measured base = measure(exe, "input", c, o.meshes, iterations, o.seed, o.repeat);
     if (!base.ok) {
       std::fprintf(stderr, "bench_cluster: %s: making the input failed (%s)\n", c.label.c_str(), base.error.c_str());
@@ -440,74 +224,27 @@ int run_table(const Options& o, const char* argv0) {
       std::printf("Target whole-process time no slower than CGAL (ours L2,1 vs CGAL, every input): %s.\n",
                   slower ? "MISSED" : "met");
   }
-  for (const std::string& n : notes) std::printf("\nNote: %s\n", n.c_str());
-  std::fflush(stdout);
-  if (failures > 0) {
-    std::fprintf(stderr, "bench_cluster: %d measurement(s) failed\n", failures);
-    return 1;
-  }
-  return 0;
+  return finish_report("bench_cluster", notes, failures);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
   Options o;
-  if (const char* env = std::getenv("FF_SHARED_MESHES"); env && *env)
-    o.meshes = env;
-  else
-    o.meshes = FF_DEFAULT_SHARED_MESHES;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    const auto value = [&]() -> std::string {
-      if (i + 1 >= argc) {
-        std::fprintf(stderr, "bench_cluster: %s needs a value\n", a.c_str());
-        std::exit(2);
-      }
-      return argv[++i];
-    };
-    if (a == "--smoke")
-      o.smoke = true;
-    else if (a == "--only")
-      o.only = value();
-    else if (a == "--case")
-      o.case_name = value();
-    else if (a == "--cases") {
-      std::istringstream list(value());
-      std::string item;
-      while (std::getline(list, item, ',')) {
-        if (!item.empty()) o.cases.push_back(item);
-      }
-    } else if (a == "--meshes")
-      o.meshes = value();
-    else if (a == "--iterations")
-      o.iterations = std::atoi(value().c_str());
-    else if (a == "--repeat")
-      o.repeat = std::atoi(value().c_str());
-    else if (a == "--seed")
-      o.seed = std::strtoull(value().c_str(), nullptr, 10);
-    else if (a == "--help" || a == "-h") {
-      usage();
-      return 0;
-    } else {
-      std::fprintf(stderr, "bench_cluster: unknown argument '%s'\n", a.c_str());
-      usage();
+  const auto own_flag = [&](const std::string& flag, const std::function<std::string()>& value) {
+    if (flag != "--iterations") return Flag::Unknown;
+    o.iterations = std::atoi(value().c_str());
+    return Flag::Taken;
+  };
+  const auto run_only = [&] {
+    Case c;
+    if (!parse_case(o.case_name, c)) {
+      std::fprintf(stderr,
+                   "bench_cluster: --only needs --case (roof-10k, roof-100k, roof-1m, hyperboloid, roof:F:N)\n");
       return 2;
     }
-  }
-  try {
-    if (!o.only.empty()) {
-      Case c;
-      if (!parse_case(o.case_name, c)) {
-        std::fprintf(stderr,
-                     "bench_cluster: --only needs --case (roof-10k, roof-100k, roof-1m, hyperboloid, roof:F:N)\n");
-        return 2;
-      }
-      return run_only(o.only, c, o.meshes, o.iterations >= 0 ? o.iterations : 20, o.seed);
-    }
-    return run_table(o, argv[0]);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "bench_cluster: %s\n", e.what());
-    return 1;
-  }
+    return run_cluster_only(o.only, c, o.meshes, o.iterations >= 0 ? o.iterations : 20, o.seed);
+  };
+  const auto table = [&](const char* argv0) { return run_table(o, argv0); };
+  return bench_main(argc, argv, o, {"bench_cluster", usage, own_flag, run_only, table});
 }

@@ -4,12 +4,13 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Variational_shape_approximation.h>
 
-#include <chrono>
 #include <cstdlib>
 #include <iterator>
 #include <set>
 #include <stdexcept>
 #include <string>
+
+#include "bench/stopwatch.h"
 
 namespace ff::bench {
 
@@ -21,10 +22,6 @@ using Mesh = CGAL::Surface_mesh<Point>;
 using VertexPointMap = boost::property_map<Mesh, boost::vertex_point_t>::type;
 using L21Metric = CGAL::Surface_mesh_approximation::L21_metric_plane_proxy<Mesh>;
 using Approximation = CGAL::Variational_shape_approximation<Mesh, VertexPointMap, L21Metric>;
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 // Faces of the TriMesh become CGAL faces in the same order (so labels map back one to one).
 void build_surface_mesh(const ff::TriMesh& input, Mesh& mesh) {
@@ -102,18 +99,30 @@ bool same_cycle(const std::vector<int>& a, const std::vector<std::size_t>& b) {
   return false;
 }
 
-}  // namespace
+// What run_cgal_vsa and run_cgal_vsa_mesh share, timed the same way.
+struct VsaPartition {
+  double build_seconds = 0.0;             // TriMesh -> Surface_mesh, L21 metric
+  double seed_seconds = 0.0;              // VSA object and initialize_seeds
+  std::vector<double> iteration_seconds;  // one entry per run(1)
+  double iterate_seconds = 0.0;           // the whole loop of run(1) calls
+  int proxies = 0;                        // after seeding
+  double cgal_error = 0.0;                // run(1)'s answer after the last iteration
+  std::vector<std::size_t> face_proxy;    // CGAL's proxy index per face, TriMesh face order
+};
 
-CgalVsaRun run_cgal_vsa(const ff::TriMesh& input, int panels, int iterations, unsigned seed) {
-  CgalVsaRun out;
-  auto start = std::chrono::steady_clock::now();
+// TriMesh -> Surface_mesh and the L21 metric, the VSA object and random seeding of `panels`
+// proxies (std::srand(seed) first: CGAL picks with std::rand; no relaxation), `iterations` x
+// run(1), and the proxy of every face; then then(mesh, vsa, proxy_of) while they still live.
+template <typename Then>
+void run_vsa(const ff::TriMesh& input, int panels, int iterations, unsigned seed, VsaPartition& out, Then&& then) {
+  auto start = Clock::now();
   Mesh mesh;
   build_surface_mesh(input, mesh);
   const VertexPointMap vpm = get(boost::vertex_point, mesh);
   const L21Metric metric(mesh, vpm);
   out.build_seconds = seconds_since(start);
 
-  start = std::chrono::steady_clock::now();
+  start = Clock::now();
   Approximation vsa(mesh, vpm, metric);
   std::srand(seed);
   out.proxies =
@@ -122,19 +131,36 @@ CgalVsaRun run_cgal_vsa(const ff::TriMesh& input, int panels, int iterations, un
                                                 .number_of_relaxations(0)));
   out.seed_seconds = seconds_since(start);
 
+  const auto iterations_start = Clock::now();
   for (int it = 0; it < iterations; ++it) {
-    start = std::chrono::steady_clock::now();
+    start = Clock::now();
     out.cgal_error = vsa.run(1);
     out.iteration_seconds.push_back(seconds_since(start));
   }
+  out.iterate_seconds = seconds_since(iterations_start);
 
+  // Not timed. extract_mesh() leaves the partition as it is: reading it before is the same.
   auto proxy_of = get(CGAL::dynamic_face_property_t<std::size_t>(), mesh);
   vsa.proxy_map(proxy_of);
-  out.labels.resize(input.triangles.size());
-  for (Mesh::Face_index f : mesh.faces()) {
-    const std::size_t p = get(proxy_of, f);
-    out.labels[static_cast<size_t>(f)] = p < static_cast<std::size_t>(out.proxies) ? static_cast<int>(p) : -1;
-  }
+  out.face_proxy.resize(input.triangles.size());
+  for (Mesh::Face_index f : mesh.faces()) out.face_proxy[static_cast<size_t>(f)] = get(proxy_of, f);
+  then(mesh, vsa, proxy_of);
+}
+
+}  // namespace
+
+CgalVsaRun run_cgal_vsa(const ff::TriMesh& input, int panels, int iterations, unsigned seed) {
+  VsaPartition part;
+  run_vsa(input, panels, iterations, seed, part, [](const Mesh&, Approximation&, const auto&) {});
+  CgalVsaRun out;
+  out.build_seconds = part.build_seconds;
+  out.seed_seconds = part.seed_seconds;
+  out.iteration_seconds = part.iteration_seconds;
+  out.proxies = part.proxies;
+  out.cgal_error = part.cgal_error;
+  out.labels.reserve(part.face_proxy.size());
+  for (const std::size_t p : part.face_proxy)
+    out.labels.push_back(p < static_cast<std::size_t>(out.proxies) ? static_cast<int>(p) : -1);
   return out;
 }
 
@@ -142,59 +168,45 @@ CgalVsaMesh run_cgal_vsa_mesh(const ff::TriMesh& input, int panels, int iteratio
                               double subdivision_ratio) {
   CgalVsaMesh out;
   out.subdivision_ratio = subdivision_ratio;
-  auto start = std::chrono::steady_clock::now();
-  Mesh mesh;
-  build_surface_mesh(input, mesh);
-  const VertexPointMap vpm = get(boost::vertex_point, mesh);
-  const L21Metric metric(mesh, vpm);
-  out.build_seconds = seconds_since(start);
+  VsaPartition part;
+  run_vsa(input, panels, iterations, seed, part, [&](const Mesh& mesh, Approximation& vsa, const auto& proxy_of) {
+    const auto start = Clock::now();
+    out.manifold = vsa.extract_mesh(CGAL::parameters::subdivision_ratio(subdivision_ratio)
+                                        .relative_to_chord(false)
+                                        .with_dihedral_angle(false)
+                                        .optimize_anchor_location(true)
+                                        .pca_plane(false));
+    std::vector<Point> anchor_points;
+    std::vector<std::array<std::size_t, 3>> triangles;
+    std::vector<std::vector<std::size_t>> cgal_polygons;
+    vsa.output(CGAL::parameters::anchors(std::back_inserter(anchor_points)).triangles(std::back_inserter(triangles)));
+    vsa.indexed_boundary_polygons(std::back_inserter(cgal_polygons));
+    out.extract_seconds = seconds_since(start);
 
-  start = std::chrono::steady_clock::now();
-  Approximation vsa(mesh, vpm, metric);
-  std::srand(seed);
-  out.proxies =
-      static_cast<int>(vsa.initialize_seeds(CGAL::parameters::seeding_method(CGAL::Surface_mesh_approximation::RANDOM)
-                                                .max_number_of_proxies(static_cast<std::size_t>(panels))
-                                                .number_of_relaxations(0)));
-  out.seed_seconds = seconds_since(start);
+    // Copying into our types and naming each polygon's proxy: benchmark work, not timed.
+    out.anchors.reserve(anchor_points.size());
+    for (const Point& p : anchor_points) out.anchors.emplace_back(p.x(), p.y(), p.z());
+    out.triangles.reserve(triangles.size());
+    for (const auto& t : triangles)
+      out.triangles.push_back({static_cast<int>(t[0]), static_cast<int>(t[1]), static_cast<int>(t[2])});
 
-  start = std::chrono::steady_clock::now();
-  for (int it = 0; it < iterations; ++it) vsa.run(1);
-  out.iterate_seconds = seconds_since(start);
+    std::vector<Mesh::Vertex_index> anchor_vertices;
+    vsa.anchor_vertices(std::back_inserter(anchor_vertices));
+    std::vector<std::size_t> anchor_of(mesh.number_of_vertices(), static_cast<std::size_t>(-1));
+    for (std::size_t a = 0; a < anchor_vertices.size(); ++a)
+      anchor_of[static_cast<std::size_t>(anchor_vertices[a])] = a;
+    boundary_cycles(mesh, proxy_of, anchor_of, out);
 
-  start = std::chrono::steady_clock::now();
-  out.manifold = vsa.extract_mesh(CGAL::parameters::subdivision_ratio(subdivision_ratio)
-                                      .relative_to_chord(false)
-                                      .with_dihedral_angle(false)
-                                      .optimize_anchor_location(true)
-                                      .pca_plane(false));
-  std::vector<Point> anchor_points;
-  std::vector<std::array<std::size_t, 3>> triangles;
-  std::vector<std::vector<std::size_t>> cgal_polygons;
-  vsa.output(CGAL::parameters::anchors(std::back_inserter(anchor_points)).triangles(std::back_inserter(triangles)));
-  vsa.indexed_boundary_polygons(std::back_inserter(cgal_polygons));
-  out.extract_seconds = seconds_since(start);
-
-  // Copying into our types and naming each polygon's proxy: benchmark work, not timed.
-  out.anchors.reserve(anchor_points.size());
-  for (const Point& p : anchor_points) out.anchors.emplace_back(p.x(), p.y(), p.z());
-  out.triangles.reserve(triangles.size());
-  for (const auto& t : triangles)
-    out.triangles.push_back({static_cast<int>(t[0]), static_cast<int>(t[1]), static_cast<int>(t[2])});
-
-  auto proxy_of = get(CGAL::dynamic_face_property_t<std::size_t>(), mesh);
-  vsa.proxy_map(proxy_of);
-  out.face_proxy.resize(input.triangles.size());
-  for (Mesh::Face_index f : mesh.faces()) out.face_proxy[static_cast<size_t>(f)] = static_cast<int>(get(proxy_of, f));
-  std::vector<Mesh::Vertex_index> anchor_vertices;
-  vsa.anchor_vertices(std::back_inserter(anchor_vertices));
-  std::vector<std::size_t> anchor_of(mesh.number_of_vertices(), static_cast<std::size_t>(-1));
-  for (std::size_t a = 0; a < anchor_vertices.size(); ++a) anchor_of[static_cast<std::size_t>(anchor_vertices[a])] = a;
-  boundary_cycles(mesh, proxy_of, anchor_of, out);
-
-  out.polygons_match_cgal = out.polygons.size() == cgal_polygons.size();
-  for (size_t i = 0; i < out.polygons.size() && out.polygons_match_cgal; ++i)
-    out.polygons_match_cgal = same_cycle(out.polygons[i], cgal_polygons[i]);
+    out.polygons_match_cgal = out.polygons.size() == cgal_polygons.size();
+    for (size_t i = 0; i < out.polygons.size() && out.polygons_match_cgal; ++i)
+      out.polygons_match_cgal = same_cycle(out.polygons[i], cgal_polygons[i]);
+  });
+  out.build_seconds = part.build_seconds;
+  out.seed_seconds = part.seed_seconds;
+  out.iterate_seconds = part.iterate_seconds;
+  out.proxies = part.proxies;
+  out.face_proxy.reserve(part.face_proxy.size());
+  for (const std::size_t p : part.face_proxy) out.face_proxy.push_back(static_cast<int>(p));
   return out;
 }
 

@@ -1,0 +1,37 @@
+#!/bin/bash
+# How often the panel phase ends valid: `flatfacet remesh` on every shared mesh at five
+# panel counts (about 120, 90, 70, 55 and 45 triangles per panel, at least 20 panels), two
+# runs at a time. Prints one line per run and the share that exited 0 (every panel valid).
+# The tests pin two counts per mesh that pass; this shows what happens in between.
+# Usage: bench/sweep_validity.sh [path/to/flatfacet]   (default build/release/cli/flatfacet)
+set -u
+here="$(cd "$(dirname "$0")/.." && pwd)"
+flatfacet="${1:-$here/build/release/cli/flatfacet}"
+meshes="${FF_SHARED_MESHES:-$here/../shared/meshes}"
+out="$(mktemp -d)"
+trap 'rm -rf "$out"' EXIT
+cases=()
+for entry in "inspired_mesh.obj 4288" "YasIsland.off 1952" "epcot.off 1536" "Moomoo.off 7776" "bunny.off 6966" \
+  "bumpy.off 2496" "fandisk.off 14454" "3holes.off 7200" "camelhead.off 22704" "cow.off 5520" "lilium.obj 6590" \
+  "face.obj 51712" "hyperboloid_s4.off 50454"; do
+  set -- $entry
+  for per_panel in 120 90 70 55 45; do
+    n=$(($2 / per_panel))
+    [ "$n" -lt 20 ] && n=20
+    cases+=("$1 $n")
+  done
+done
+run_one() {
+  local file="$1" n="$2"
+  "$flatfacet" remesh "$meshes/$file" --panels "$n" --report "$out/$file.$n.json" > /dev/null 2>&1
+  local rc=$?
+  local invalid
+  invalid=$(python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['invalid_panels'])" "$out/$file.$n.json" 2> /dev/null)
+  echo "$file $n exit=$rc invalid=${invalid:-?}"
+}
+export -f run_one
+export flatfacet meshes out
+printf '%s\n' "${cases[@]}" | xargs -P 2 -L 1 bash -c 'run_one $0 $1' | sort > "$out/results.txt"
+cat "$out/results.txt"
+valid=$(grep -c "exit=0" "$out/results.txt")
+echo "valid: $valid of ${#cases[@]} runs"
