@@ -28,6 +28,9 @@ std::vector<Plane> relax_planes(const std::vector<NodeConstraint>& nodes, const 
       free = !fixed[static_cast<size_t>(nodes[k].planes[static_cast<size_t>(j)])];
     if (free) active.push_back(k);
   }
+  std::vector<double> area(m);
+  std::vector<Vec3> first(m), center(m);
+  std::vector<Eigen::Matrix3d> scatter(m);
   double w = options.start_weight;
   for (int it = 0; it < options.iterations; ++it, w *= options.growth) {
     // Nodes: minimise c_k |x - p|^2 + W sum_i (n_i.x - d_i)^2, c_k the node's own weight.
@@ -43,8 +46,6 @@ std::vector<Plane> relax_planes(const std::vector<NodeConstraint>& nodes, const 
     }
     // Planes: least squares over their faces (exact moments) and their nodes (weight W w_i),
     // the scatter formed about the common centre (two passes) to keep its precision at large W.
-    std::vector<double> area(m);
-    std::vector<Vec3> first(m);
     for (size_t i = 0; i < m; ++i) area[i] = moments[i].area, first[i] = moments[i].first;
     for (size_t k : active) {
       for (int j = 0; j < nodes[k].count; ++j) {
@@ -53,9 +54,8 @@ std::vector<Plane> relax_planes(const std::vector<NodeConstraint>& nodes, const 
         first[i] += w * node_weight[i] * x[k];
       }
     }
-    std::vector<Vec3> center(m);
-    std::vector<Eigen::Matrix3d> scatter(m);
     for (size_t i = 0; i < m; ++i) {
+      if (!fixed.empty() && fixed[i]) continue;  // stays as it is: its scatter is not needed
       center[i] = area[i] > 0.0 ? Vec3(first[i] / area[i]) : Vec3::Zero();
       const ClusterMoments& mo = moments[i];
       const Vec3& c = center[i];
@@ -64,6 +64,7 @@ std::vector<Plane> relax_planes(const std::vector<NodeConstraint>& nodes, const 
     for (size_t k : active) {
       for (int j = 0; j < nodes[k].count; ++j) {
         const size_t i = static_cast<size_t>(nodes[k].planes[static_cast<size_t>(j)]);
+        if (!fixed.empty() && fixed[i]) continue;
         const Vec3 d = x[k] - center[i];
         scatter[i] += w * node_weight[i] * d * d.transpose();
       }
