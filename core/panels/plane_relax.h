@@ -28,6 +28,9 @@ struct NodeConstraint {
   double weight = 1.0;  // how hard the node is pulled to its corner (raised for spikes)
 };
 
+// W runs from 1 to 1.4^79 (about 3e11): the nodes end up on their planes to ~1e-12 of D, far
+// below what the vertex rule then corrects. Slower growth (1.1, 300 iterations) gave no more
+// valid panels across the shared meshes, at four times the cost.
 struct RelaxOptions {
   int iterations = 80;
   double start_weight = 1.0;  // W at the first iteration (relative to the node terms)
