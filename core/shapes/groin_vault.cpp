@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "core/shapes/hard_cases.h"
+#include "core/shapes/shapes.h"
 #include "core/util/error.h"
 
 namespace ff {
@@ -34,16 +35,9 @@ TriMesh make_groin_vault(int triangles, double span, double rise) {
   mesh.triangles.reserve(2 * static_cast<size_t>(n) * static_cast<size_t>(n));
   for (int j = 0; j < n; ++j) {
     for (int i = 0; i < n; ++i) {
-      const int a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
       // Cell centre in the quadrants x*y > 0: the nearer bay diagonal runs like a-c.
       const bool rising = (2 * i + 1 - n) * (2 * j + 1 - n) > 0;
-      if (rising) {
-        mesh.triangles.push_back({a, b, c});
-        mesh.triangles.push_back({a, c, d});
-      } else {
-        mesh.triangles.push_back({a, b, d});
-        mesh.triangles.push_back({b, c, d});
-      }
+      add_split_quad(mesh, id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1), rising);
     }
   }
   return mesh;

@@ -18,17 +18,20 @@ TriMesh make_grid_surface(int nu, int nv, const std::function<Vec3(double, doubl
   mesh.triangles.reserve(2 * static_cast<size_t>(nu) * static_cast<size_t>(nv));
   for (int j = 0; j < nv; ++j) {
     for (int i = 0; i < nu; ++i) {
-      const int a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
-      if ((i + j) % 2 == 0) {
-        mesh.triangles.push_back({a, b, c});
-        mesh.triangles.push_back({a, c, d});
-      } else {
-        mesh.triangles.push_back({a, b, d});
-        mesh.triangles.push_back({b, c, d});
-      }
+      add_split_quad(mesh, id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1), (i + j) % 2 == 0);
     }
   }
   return mesh;
+}
+
+void add_split_quad(TriMesh& mesh, int a, int b, int c, int d, bool along_ac) {
+  if (along_ac) {
+    mesh.triangles.push_back({a, b, c});
+    mesh.triangles.push_back({a, c, d});
+  } else {
+    mesh.triangles.push_back({a, b, d});
+    mesh.triangles.push_back({b, c, d});
+  }
 }
 
 TriMesh make_plane(int nu, int nv, double width, double height) {

@@ -21,6 +21,9 @@ TriMesh make_plane(int nu, int nv, double width = 1.0, double height = 1.0);
 // architectural stand-in for benchmarks at any resolution.
 TriMesh make_roof(int nu, int nv);
 
+// Appends quad a-b-c-d (counter-clockwise) as two triangles split along a-c or along b-d.
+void add_split_quad(TriMesh& mesh, int a, int b, int c, int d, bool along_ac);
+
 // Number of grid cells per side giving about `triangles` triangles on a square grid.
 int grid_resolution_for(int triangles);
 
