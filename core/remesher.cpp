@@ -137,7 +137,7 @@ void Remesher::fix_panels(const PanelAttempt& attempt) {
     }
     split_near(metric_, topology_, clustering_, requests, protect, 3, /*reflood_after=*/false);
   }
-  relocate_clusters(metric_, clustering_, enclosed_clusters(attempt));
+  relocate_clusters(metric_, clustering_, enclosed_clusters(attempt), settled_);
   settled_.resize(static_cast<size_t>(clustering_.num_clusters()), 0);
   settled_planes_.resize(settled_.size());
   // Then a Lloyd iteration with the boundary term of this attempt's panels; clusters the

@@ -159,7 +159,8 @@ int split_near(const Metric& metric, const MeshTopology& topology, Clustering& c
   return splits;
 }
 
-int relocate_clusters(const Metric& metric, Clustering& c, const std::vector<int>& clusters, int sticky_iterations) {
+int relocate_clusters(const Metric& metric, Clustering& c, const std::vector<int>& clusters,
+                      const std::vector<char>& keep, int sticky_iterations) {
   if (clusters.empty()) return 0;
   const ClusterStats s = cluster_stats(metric, c);
   std::vector<char> moving(static_cast<size_t>(c.num_clusters()), 0);
@@ -171,13 +172,15 @@ int relocate_clusters(const Metric& metric, Clustering& c, const std::vector<int
   int moves = 0;
   for (int e : clusters) {
     if (e < 0 || e >= c.num_clusters()) continue;
-    while (next < worst.size() &&
-           (moving[static_cast<size_t>(worst[next])] || s.worst_face[static_cast<size_t>(worst[next])] < 0)) {
+    const auto kept = [&](int w) { return static_cast<size_t>(w) < keep.size() && keep[static_cast<size_t>(w)]; };
+    while (next < worst.size() && (moving[static_cast<size_t>(worst[next])] ||
+                                   s.worst_face[static_cast<size_t>(worst[next])] < 0 || kept(worst[next]))) {
       ++next;
     }
     if (next == worst.size()) break;
     const int w = worst[next++];
     split_into(metric, c, s, w, e, sticky_iterations);
+    c.sticky[static_cast<size_t>(w)] = std::max(c.sticky[static_cast<size_t>(w)], sticky_iterations);
     ++moves;
   }
   return moves;

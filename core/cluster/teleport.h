@@ -39,8 +39,9 @@ int split_near(const Metric& metric, const MeshTopology& topology, Clustering& c
 // one per move): its old faces go to its neighbours at the next flood. For clusters that
 // cannot be panels where they are (enclosed by one neighbour). Sticky; no reflood (the
 // caller floods next). Returns the moves made.
+// Clusters marked in `keep` (e.g. settled ones) are never the worst cluster that receives one.
 int relocate_clusters(const Metric& metric, Clustering& clustering, const std::vector<int>& clusters,
-                      int sticky_iterations = 3);
+                      const std::vector<char>& keep = {}, int sticky_iterations = 3);
 
 // Removes `count` clusters by merging the cheapest adjacent pairs, renumbers labels to stay
 // in [0, n - count), then refloods.

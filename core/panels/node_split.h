@@ -3,7 +3,8 @@
 // edges (paper fig. 6): each way to do it is a triangulation of the k-gon of clusters around
 // the node (positions 0..k-1 in counter-clockwise order); a triangle is a node on its three
 // planes, a diagonal a new edge between its two clusters. A boundary node is the fan from
-// the NULL cluster (the last position): one border vertex per pair of neighbouring clusters.
+// the NULL cluster is one of the choices (fan_pairing), not the only one: PanelLayout tries
+// every triangulation of boundary groups too, and its checks decide.
 #include <array>
 #include <vector>
 

@@ -46,7 +46,7 @@ PanelAttempt::PanelAttempt(const TriMesh& mesh, const MeshTopology& topology, co
                                   ? corner_fit_planes(moments, corners, orientation, options.corner_weight)
                                   : proxy_planes(clustering_);
   const bool any_fixed = std::find(options.fixed.begin(), options.fixed.end(), 1) != options.fixed.end();
-  for (size_t c = 0; c < n && c < options.fixed.size(); ++c) {
+  for (size_t c = 0; c < n && c < options.fixed.size() && c < options.fixed_planes.size(); ++c) {
     if (options.fixed[c]) planes[c] = options.fixed_planes[c];
   }
   std::vector<double> areas(n, 0.0);  // local frame: no overflow at any scale

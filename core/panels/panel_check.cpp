@@ -8,7 +8,7 @@ PanelIssues check_panel(const std::vector<Vec3>& points, const std::vector<Vec3>
                         double spike_distance, double tolerance) {
   PanelIssues issues;
   for (size_t i = 0; i < points.size(); ++i) {
-    if ((points[i] - references[i]).norm() > spike_distance) issues.spike_vertices += 1;
+    if (!((points[i] - references[i]).norm() <= spike_distance)) issues.spike_vertices += 1;  // NaN too
   }
   if (points.size() < 3) {
     issues.too_few_vertices = true;

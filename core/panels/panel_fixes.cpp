@@ -33,7 +33,18 @@ int PanelLayout::make_single_point_nodes() {
       b += p.offset * p.normal;
     }
     const Vec3 x = A.ldlt().solve(b);
-    if (!x.allFinite() || (x - group.reference).norm() > options_.spike_distance) continue;
+    if (!x.allFinite() || !((x - group.reference).norm() <= options_.spike_distance)) continue;
+    // A plane already pinned through a point can turn to contain x only about a real line.
+    bool turnable = true;
+    for (int m : masters) {
+      const std::vector<Vec3>& fixed = through[static_cast<size_t>(m)];
+      if (fixed.empty()) continue;
+      const Vec3 along = x - fixed[0];
+      const Vec3& normal = planes_.planes[static_cast<size_t>(m)].normal;
+      turnable = turnable && along.norm() > 1e-9 * options_.diameter &&
+                 (normal - normal.dot(along.normalized()) * along.normalized()).norm() > 1e-6;
+    }
+    if (!turnable) continue;
     const MasterPlanes saved = planes_;
     const int before = num_invalid();
     for (int m : masters) {

@@ -65,9 +65,10 @@ PanelLayout::PanelLayout(const TriMesh& mesh, const MeshTopology& topology, cons
     } else {
       // The pairing whose nodes stay closest to where they belong (fig. 6); validation and
       // switch_pairings() correct it where it flips an edge.
+      const std::vector<Pairing> options = node_pairings(k);
       double best = std::numeric_limits<double>::infinity();
-      Pairing chosen;
-      for (const Pairing& p : node_pairings(k)) {
+      Pairing chosen = options.front();  // even if every cost is infinite or NaN
+      for (const Pairing& p : options) {
         pairing_[g] = p;
         place_group_nodes(static_cast<int>(g));
         const double cost = pairing_cost(static_cast<int>(g));
@@ -146,7 +147,11 @@ void PanelLayout::place_group_nodes(int g) {
     if (single_[static_cast<size_t>(g)]) {
       node_alias_[static_cast<size_t>(node)] = first;
       node_point_[static_cast<size_t>(node)] = single_point_[static_cast<size_t>(g)];
-      node_planes_[static_cast<size_t>(node)] = static_cast<int>(clusters_of_group(g).size());
+      std::vector<int> distinct;
+      for (int c : clusters_of_group(g)) distinct.push_back(planes_.master_of[static_cast<size_t>(c)]);
+      std::sort(distinct.begin(), distinct.end());
+      node_planes_[static_cast<size_t>(node)] =
+          static_cast<int>(std::unique(distinct.begin(), distinct.end()) - distinct.begin());
       node_exact_[static_cast<size_t>(node)] = 1;
     }
   }
@@ -285,7 +290,7 @@ std::vector<int> PanelLayout::problem_corners(int c) const {
   const PanelIssues& issues = issues_[static_cast<size_t>(c)];
   std::vector<int> out;
   for (size_t i = 0; i < poly.points.size(); ++i) {
-    const bool spike = (poly.points[i] - poly.reference[i]).norm() > options_.spike_distance;
+    const bool spike = !((poly.points[i] - poly.reference[i]).norm() <= options_.spike_distance);
     if (spike || issues.flipped || issues.not_star || issues.not_simple) out.push_back(poly.corner[i]);
   }
   return out;
@@ -307,7 +312,7 @@ std::vector<char> PanelLayout::spike_nodes() const {
   std::vector<char> out(node_point_.size(), 0);
   for (size_t node = 0; node < node_point_.size(); ++node) {
     const Vec3& at = groups_.groups[static_cast<size_t>(node_group_[node])].reference;
-    out[node] = !node_exact_[node] || (node_point_[node] - at).norm() > options_.spike_distance;
+    out[node] = !node_exact_[node] || !((node_point_[node] - at).norm() <= options_.spike_distance);
   }
   return out;
 }

@@ -15,8 +15,8 @@ namespace ff {
 // plane dominates while the nodes, placed by the vertex rule, still stay near the surface.
 // The layout keeps each new plane only where the panels stay valid (PanelLayout::try_planes).
 // On the shared meshes this lowers the Hausdorff distance by 0-28% (bench/README.md).
-std::vector<Plane> surface_fit_planes(const FaceData& faces, const std::vector<int>& labels, const MasterPlanes& masters,
-                                      const std::vector<NodeConstraint>& nodes);
+std::vector<Plane> surface_fit_planes(const FaceData& faces, const std::vector<int>& labels,
+                                      const MasterPlanes& masters, const std::vector<NodeConstraint>& nodes);
 
 // The planes the panel phase starts from, per cluster: least squares of the distance to the
 // cluster's faces (exact per triangle) and to its corners (the mesh vertices where it meets
@@ -26,7 +26,7 @@ std::vector<Plane> surface_fit_planes(const FaceData& faces, const std::vector<i
 // paper's spikes, 2.3); a plane that also passes near its corners meets its neighbours near
 // them. `orientation` gives each normal's side.
 std::vector<Plane> corner_fit_planes(const std::vector<ClusterMoments>& moments,
-                                     const std::vector<std::vector<Vec3>>& corners, const std::vector<Vec3>& orientation,
-                                     double corner_weight);
+                                     const std::vector<std::vector<Vec3>>& corners,
+                                     const std::vector<Vec3>& orientation, double corner_weight);
 
 }  // namespace ff

@@ -8,14 +8,21 @@ namespace ff {
 namespace {
 
 // Lagrange form: x = corner + sum lambda_i n_i with Gram matrix G lambda = d - N corner.
-Vec3 solve_two(const Plane& a, const Plane& b, const Vec3& corner) {
+// The nearest point to `corner` on the line of a and b; false (and the projection onto a)
+// when they are (nearly) parallel and have no usable line.
+bool solve_two(const Plane& a, const Plane& b, const Vec3& corner, Vec3& out) {
   const double c = a.normal.dot(b.normal);
   const double det = 1.0 - c * c;
+  if (!(det > 1e-12)) {
+    out = a.project(corner);
+    return false;
+  }
   const double ra = a.offset - a.normal.dot(corner);
   const double rb = b.offset - b.normal.dot(corner);
   const double la = (ra - c * rb) / det;
   const double lb = (rb - c * ra) / det;
-  return corner + la * a.normal + lb * b.normal;
+  out = corner + la * a.normal + lb * b.normal;
+  return out.allFinite();
 }
 
 }  // namespace
@@ -27,7 +34,7 @@ VertexRuleResult closest_point_on_planes(const std::vector<Plane>& planes, const
   } else if (planes.size() == 1) {
     r.point = planes[0].project(corner);
   } else if (planes.size() == 2) {
-    r.point = solve_two(planes[0], planes[1], corner);
+    r.exact = solve_two(planes[0], planes[1], corner, r.point);
   } else {
     const Vec3& n0 = planes[0].normal;
     const Vec3& n1 = planes[1].normal;
@@ -55,7 +62,7 @@ VertexRuleResult closest_point_on_planes(const std::vector<Plane>& planes, const
           if (s > best) best = s, best_i = i, best_j = j;
         }
       }
-      r.point = solve_two(planes[static_cast<size_t>(best_i)], planes[static_cast<size_t>(best_j)], corner);
+      solve_two(planes[static_cast<size_t>(best_i)], planes[static_cast<size_t>(best_j)], corner, r.point);
       r.exact = false;
     }
   }

@@ -13,8 +13,9 @@ namespace ff {
 struct VertexRuleResult {
   Vec3 point = Vec3::Zero();
   // False when the planes have no common point (three planes whose normals are coplanar
-  // with a determinant below 1e-12): `point` is then the nearest point on the line of the
-  // best-conditioned pair, and the caller must treat the vertex as a spike to fix.
+  // with a determinant below 1e-12, or two parallel planes): `point` is then the nearest
+  // point on the line of the best-conditioned pair (or a projection), and the caller must
+  // treat the vertex as a spike to fix.
   bool exact = true;
 };
 

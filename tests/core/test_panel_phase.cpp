@@ -29,7 +29,7 @@ const std::vector<PanelCase>& panel_cases() {
       {"Moomoo.off", 77},        {"Moomoo.off", 194},        {"bunny.off", 69},           {"bunny.off", 174},
       {"bumpy.off", 30},         {"bumpy.off", 62},          {"fandisk.off", 144},        {"fandisk.off", 300},
       {"3holes.off", 144},       {"3holes.off", 180},        {"camelhead.off", 227},      {"camelhead.off", 400},
-      {"cow.off", 170},          {"face.obj", 517},          {"face.obj", 800},           {"lilium.obj", 65},
+      {"cow.off", 160},          {"face.obj", 517},          {"face.obj", 800},           {"lilium.obj", 65},
       {"lilium.obj", 164},
   };
   return cases;
