@@ -114,7 +114,7 @@ void Remesher::panel_round() {
 void Remesher::fix_panels(const PanelAttempt& attempt) {
   // Settled clusters (valid among valid) keep their faces and planes from now on, so each
   // round works where panels are still invalid and does not undo progress elsewhere.
-  settled_ = attempt.settled_clusters(topology_);
+  settled_ = attempt.settled_clusters();
   settled_planes_ = attempt.cluster_planes();
   // Clusters that are not disks split at once; enclosed ones move elsewhere. Invalid panels
   // get a split near their problem (merging elsewhere to keep n) only when the rounds stall:

@@ -54,8 +54,8 @@ PanelAttempt::PanelAttempt(const TriMesh& mesh, const MeshTopology& topology, co
     centers[c] = planes[c].project(clustering_.proxies[c].center);
     areas[c] = moments[c].area;
   }
-  MasterPlanes masters = snap_master_planes(
-      planes, centers, areas, plane_neighbours(topology, clustering_.labels, graph_), options.master_angle_deg);
+  neighbours_ = plane_neighbours(topology, clustering_.labels, graph_);
+  MasterPlanes masters = snap_master_planes(planes, centers, areas, neighbours_, options.master_angle_deg);
   LayoutOptions layout_options = options.layout;
   layout_options.spike_distance = spike_distance_;
   layout_ = std::make_unique<PanelLayout>(mesh, topology, clustering_.labels, positions, graph_, std::move(masters),
@@ -125,18 +125,14 @@ std::vector<Plane> PanelAttempt::cluster_planes() const {
   return out;
 }
 
-std::vector<char> PanelAttempt::settled_clusters(const MeshTopology& topology, int rings) const {
+std::vector<char> PanelAttempt::settled_clusters() const {
   const size_t n = static_cast<size_t>(clustering_.num_clusters());
-  std::vector<char> settled(n, 0);
-  for (size_t c = 0; c < n; ++c) settled[c] = layout_->issues()[c].valid();
-  const std::vector<std::pair<int, int>> pairs = plane_neighbours(topology, clustering_.labels, graph_);
-  for (int ring = 0; ring < rings; ++ring) {
-    std::vector<char> out = settled;
-    for (const auto& [a, b] : pairs) {
-      if (!settled[static_cast<size_t>(a)]) out[static_cast<size_t>(b)] = 0;
-      if (!settled[static_cast<size_t>(b)]) out[static_cast<size_t>(a)] = 0;
-    }
-    settled = std::move(out);
+  std::vector<char> valid(n, 0);
+  for (size_t c = 0; c < n; ++c) valid[c] = layout_->issues()[c].valid();
+  std::vector<char> settled = valid;
+  for (const auto& [a, b] : neighbours_) {
+    if (!valid[static_cast<size_t>(a)]) settled[static_cast<size_t>(b)] = 0;
+    if (!valid[static_cast<size_t>(b)]) settled[static_cast<size_t>(a)] = 0;
   }
   return settled;
 }

@@ -39,12 +39,10 @@ class PanelAttempt {
 
   const Clustering& clustering() const { return clustering_; }
   const PanelGraph& graph() const { return graph_; }
-  double spike_distance() const { return spike_distance_; }
   // Per cluster: its plane in this attempt (its master's).
   std::vector<Plane> cluster_planes() const;
-  // Per cluster: no invalid panel within `rings` steps (1: its panel and every panel around
-  // it are valid).
-  std::vector<char> settled_clusters(const MeshTopology& topology, int rings = 1) const;
+  // Per cluster: its panel and every panel around it are valid.
+  std::vector<char> settled_clusters() const;
   // Clusters that are not disks get no panel (PanelIssues::not_disk); the rest are laid out.
   PanelLayout& layout() { return *layout_; }
   const PanelLayout& layout() const { return *layout_; }
@@ -54,6 +52,7 @@ class PanelAttempt {
  private:
   Clustering clustering_;
   PanelGraph graph_;
+  std::vector<std::pair<int, int>> neighbours_;  // plane_neighbours(), used twice
   double spike_distance_ = 0.0;
   std::unique_ptr<PanelLayout> layout_;
 };

@@ -19,11 +19,11 @@ PanelIssues check_panel(const std::vector<Vec3>& points, const std::vector<Vec3>
   polygon.reserve(points.size());
   for (const Vec3& p : points) polygon.push_back(frame.to_2d(p));
   issues.not_simple = !is_simple(polygon, tolerance);
-  const std::vector<Vec2> kernel =
-      signed_area(polygon) > 0.0 ? polygon_kernel(polygon, tolerance) : std::vector<Vec2>{};
+  const double area = signed_area(polygon);
+  const std::vector<Vec2> kernel = area > 0.0 ? polygon_kernel(polygon, tolerance) : std::vector<Vec2>{};
   issues.not_star = kernel.empty();
   const Vec2 reference = kernel.empty() ? polygon_centroid(polygon) : polygon_centroid(kernel);
-  issues.flipped = signed_area(polygon) <= 0.0 || count_flipped_edges(polygon, reference) > 0;
+  issues.flipped = area <= 0.0 || count_flipped_edges(polygon, reference) > 0;
   return issues;
 }
 
