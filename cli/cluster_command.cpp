@@ -6,7 +6,7 @@
 #include "cli/args.h"
 #include "cli/commands.h"
 #include "cli/input.h"
-#include "cli/json_writer.h"
+#include "core/util/json_writer.h"
 #include "cli/output.h"
 #include "core/mesh/face_map.h"
 #include "core/remesher.h"

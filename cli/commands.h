@@ -2,9 +2,9 @@
 #include <string>
 #include <vector>
 
-namespace ff::cli {
+#include "core/version.h"
 
-inline constexpr const char* kVersion = "0.1.0";
+namespace ff::cli {
 
 // Each returns the process exit code (DESIGN.md 4): 0 done, 3 written but some panels
 // invalid, 2 usage or input error (thrown as UsageError / InputError, mapped in main).

@@ -17,14 +17,16 @@ const char* kUsage =
     "usage: flatfacet <command> [options]\n"
     "\n"
     "commands:\n"
-    "  remesh INPUT --panels N [--out PANELS.obj] [--report REPORT.json] [--seed S]\n"
+    "  remesh INPUT --panels N [--out PANELS.obj] [--report REPORT.json] [--parts PARTS.csv]\n"
+    "          [--seed S]\n"
     "          [--weights euclidean=1,l2=1,l21=1,density=1,boundary=1] [--density FILE]\n"
     "          [--iterations K1,K2] [--seeding farthest|random] [--no-teleport]\n"
     "          [--single-point-nodes] [--no-optimize]\n"
     "      Remesh the surface into N exactly planar panels. PANELS.obj gets one polygon per\n"
     "      panel on shared vertices; REPORT.json the quality (planarity, Hausdorff distance,\n"
     "      topology, valences, invalid panels) and timings. With neither, one summary line is\n"
-    "      printed. A cluster that cannot be one panel is left out and reported as invalid.\n"
+    "      printed. PARTS.csv: one row per panel (sides, area, perimeter, plane) and a total.\n"
+    "      A cluster that cannot be one panel is left out and reported as invalid.\n"
     "      --iterations K1,K2: at most K1 Lloyd iterations (default 20) and K2 panel rounds\n"
     "      (default 30, at least 1). --single-point-nodes: where 4+ planes meet, make them meet\n"
     "      in one point instead of splitting the node into valence-3 nodes. --no-optimize: skip\n"
@@ -55,7 +57,7 @@ int main(int argc, char** argv) {
     return args.empty() ? 2 : 0;
   }
   if (args[0] == "--version") {
-    std::printf("flatfacet %s\n", ff::cli::kVersion);
+    std::printf("flatfacet %s\n", ff::kVersion);
     return 0;
   }
   const std::string command = args[0];

@@ -12,8 +12,11 @@
 #include "cli/input.h"
 #include "cli/output.h"
 #include "cli/remesh_report.h"
+#include "core/fabricate/parts_list.h"
 #include "core/mesh/mesh_io.h"
+#include "core/panels/panel_export.h"
 #include "core/quality/report.h"
+#include "core/quality/report_json.h"
 #include "core/remesher.h"
 
 namespace ff::cli {
@@ -31,7 +34,6 @@ constexpr long long kMaxIterations = 100000;  // the Remesher's own limit for k1
 void refuse_later_options(const std::vector<std::string>& argv) {
   const std::pair<const char*, const char*> later[] = {
       {"thickness", "fabrication comes in a later release"},
-      {"parts", "parts lists come with fabrication in a later release"},
       {"glass", "glass mode comes in a later release"},
       {"min-angle", "minimum corner angles come with glass mode in a later release"},
   };
@@ -57,14 +59,15 @@ std::pair<int, int> parse_iterations(const std::string& text) {
 
 struct Options {
   RemeshParams params;
-  std::string input, seeding, out, report;
+  std::string input, seeding, out, report, parts;
   std::string density;  // a file, read once the mesh is loaded (its length is checked against it)
 };
 
 Options parse_options(const std::vector<std::string>& argv) {
   refuse_later_options(argv);
-  const Args args = parse_args(argv, {"panels", "seed", "weights", "density", "iterations", "out", "report", "seeding"},
-                               {"single-point-nodes", "no-optimize", "no-teleport"});
+  const Args args =
+      parse_args(argv, {"panels", "seed", "weights", "density", "iterations", "out", "report", "parts", "seeding"},
+                 {"single-point-nodes", "no-optimize", "no-teleport"});
   if (args.positional.size() != 1) throw UsageError("expected exactly one INPUT mesh (see flatfacet --help)");
   if (!args.has("panels")) throw UsageError("--panels N is required");
   Options o;
@@ -87,30 +90,18 @@ Options parse_options(const std::vector<std::string>& argv) {
   o.report = args.get("report");
   if (args.has("out") && o.out.empty()) throw UsageError("--out: empty file name");
   if (args.has("report") && o.report.empty()) throw UsageError("--report: empty file name");
-  if (!o.out.empty() && o.out == o.report) throw UsageError("--out and --report name the same file '" + o.out + "'");
+  o.parts = args.get("parts");
+  if (args.has("parts") && o.parts.empty()) throw UsageError("--parts: empty file name");
+  const std::string* names[] = {&o.out, &o.report, &o.parts};
+  for (int a = 0; a < 3; ++a)
+    for (int b = a + 1; b < 3; ++b)
+      if (!names[a]->empty() && *names[a] == *names[b])
+        throw UsageError("--out, --report and --parts name the same file '" + *names[a] + "'");
   if (args.has("density")) {
     o.density = args.get("density");
     if (o.density.empty()) throw UsageError("--density: empty file name");
   }
   return o;
-}
-
-// The panels on the vertices they use, in their original order: the OBJ then has exactly
-// the report's `vertices` v-lines (which counts used vertices only).
-PanelMesh used_vertices_only(const PanelMesh& pm) {
-  std::vector<int> index(pm.vertices.size(), -1);
-  for (const std::vector<int>& panel : pm.panels)
-    for (const int v : panel) index[static_cast<size_t>(v)] = 0;
-  PanelMesh out;
-  for (size_t v = 0; v < index.size(); ++v) {
-    if (index[v] < 0) continue;
-    index[v] = static_cast<int>(out.vertices.size());
-    out.vertices.push_back(pm.vertices[v]);
-  }
-  out.panels = pm.panels;
-  for (std::vector<int>& panel : out.panels)
-    for (int& v : panel) v = index[static_cast<size_t>(v)];
-  return out;
 }
 
 }  // namespace
@@ -144,10 +135,10 @@ int run_remesh(const std::vector<std::string>& argv) {
   std::vector<OutputFile> outputs;
   if (!o.out.empty()) {
     // measure_quality has checked every index, so the remapping cannot go out of range.
-    const PanelMesh pm = used_vertices_only(remesher.panels());
-    outputs.push_back({o.out, write_polygon_obj(pm.vertices, pm.panels, panels_obj_comment(run))});
+    outputs.push_back({o.out, panels_obj(remesher.panels(), panels_obj_comment(run))});
   }
   if (!o.report.empty()) outputs.push_back({o.report, remesh_report_json(run)});
+  if (!o.parts.empty()) outputs.push_back({o.parts, parts_list_csv(remesher.panels())});
   if (outputs.empty())
     std::fputs(remesh_summary_line(run).c_str(), stdout);
   else

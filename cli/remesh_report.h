@@ -29,13 +29,6 @@ struct RemeshRun {
   RemeshTimings timings;
 };
 
-// Exit 0 material: a non-empty panel mesh in which neither the panel phase's own validation
-// nor the independent quality measurement finds an invalid panel.
-bool all_panels_valid(const PanelMesh& panels, const QualityReport& quality);
-
-// The names of a panel's problems as they appear in the report ("spike", "flipped", ...).
-std::vector<std::string> panel_problems(const PanelIssues& issues);
-
 std::string remesh_report_json(const RemeshRun& run);
 // Comment lines for the panels OBJ: tool, input, panel count; nothing that varies between
 // identical runs (so identical runs give identical bytes).

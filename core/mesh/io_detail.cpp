@@ -2,6 +2,7 @@
 
 #include <Eigen/Geometry>
 #include <array>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
@@ -81,6 +82,18 @@ NumberStatus parse_double(std::string_view token, double& value) {
   const char* end = begin + token.size();
   if (begin != end && *begin == '+') ++begin;
   if (begin == end || *begin == '+') return NumberStatus::Malformed;
+#if defined(_LIBCPP_VERSION)
+  // libc++ 14 (Emscripten 3.1.6) has no floating-point from_chars: strtod on a copy, after
+  // checking the characters so it accepts what from_chars accepts (no hex, no spaces).
+  const std::string copy(begin, end);
+  const bool plain = copy.find_first_not_of("0123456789.eE+-") == std::string::npos;
+  std::string word = copy[0] == '-' ? copy.substr(1) : copy;
+  for (char& c : word) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (!plain && word != "inf" && word != "infinity" && word != "nan") return NumberStatus::Malformed;
+  char* stop = nullptr;
+  value = std::strtod(copy.c_str(), &stop);
+  if (stop != copy.c_str() + copy.size()) return NumberStatus::Malformed;
+#else
   const std::from_chars_result result = std::from_chars(begin, end, value);
   if (result.ptr != end) return NumberStatus::Malformed;
   if (result.ec == std::errc::result_out_of_range) {
@@ -90,6 +103,7 @@ NumberStatus parse_double(std::string_view token, double& value) {
   } else if (result.ec != std::errc()) {
     return NumberStatus::Malformed;
   }
+#endif
   return std::isfinite(value) ? NumberStatus::Ok : NumberStatus::NotFinite;
 }
 

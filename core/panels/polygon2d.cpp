@@ -180,6 +180,14 @@ Vec2 kernel_point(const std::vector<Vec2>& ccw_polygon, double tol) {
   return polygon_centroid(kernel);
 }
 
+std::vector<int> flipped_edges(const std::vector<Vec2>& polygon, const Vec2& reference) {
+  std::vector<int> flipped;
+  for (size_t i = 0; i < polygon.size(); ++i) {
+    if (orient2d(reference, polygon[i], at(polygon, i + 1)) < 0.0) flipped.push_back(static_cast<int>(i));
+  }
+  return flipped;
+}
+
 int count_flipped_edges(const std::vector<Vec2>& polygon, const Vec2& reference) {
   int flipped = 0;
   for (size_t i = 0; i < polygon.size(); ++i) {

@@ -68,7 +68,9 @@ bool is_star_shaped(const std::vector<Vec2>& ccw_polygon, double tol);
 // compute the kernel once and take polygon_centroid() of it).
 Vec2 kernel_point(const std::vector<Vec2>& ccw_polygon, double tol);
 
-// Edges a -> b with triangle (reference, a, b) strictly clockwise (paper fig. 6 / 7f).
+// Edges a -> b with triangle (reference, a, b) strictly clockwise (paper fig. 6 / 7f): their
+// start indices (edge i runs from vertex i to vertex i + 1), and their number.
+std::vector<int> flipped_edges(const std::vector<Vec2>& polygon, const Vec2& reference);
 int count_flipped_edges(const std::vector<Vec2>& polygon, const Vec2& reference);
 
 // Even-odd rule; points exactly on the boundary may go either way.

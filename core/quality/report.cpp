@@ -241,6 +241,7 @@ QualityReport measure_quality(const TriMesh& input, const MeshTopology& input_to
       const Vec3& where = own ? panels.vertex_reference[v] : input.positions[static_cast<size_t>(corner)];
       spike[v] = (panels.vertices[v] - where).norm() > (own ? panels.spike_distance : options.spike_factor * d);
       r.spike_vertices += spike[v];
+      if (spike[v]) r.spike_vertex_ids.push_back(static_cast<int>(v));
     }
   }
 
@@ -272,7 +273,10 @@ QualityReport measure_quality(const TriMesh& input, const MeshTopology& input_to
     for (const Vec2& q : poly2d) reference += q;
     if (!poly2d.empty()) reference /= static_cast<double>(poly2d.size());
     if (!kernel.empty()) reference = polygon_centroid(kernel);
-    const int flipped = count_flipped_edges(poly2d, reference);
+    const std::vector<int> flipped_starts = flipped_edges(poly2d, reference);
+    const int flipped = static_cast<int>(flipped_starts.size());
+    for (const int i : flipped_starts)
+      r.flipped_edge_vertices.push_back({poly[static_cast<size_t>(i)], poly[(static_cast<size_t>(i) + 1) % poly.size()]});
     min_angle = std::min(min_angle, min_interior_angle_deg(poly2d));
 
     bool has_spike = false;

@@ -2,6 +2,7 @@
 // The quality report (DESIGN.md 4 and 5), measured independently of the producer: every
 // panel is re-checked in its own plane here, so a bug in the panel phase shows up as a
 // number instead of hiding behind its own PanelIssues.
+#include <array>
 #include <map>
 #include <vector>
 
@@ -52,6 +53,10 @@ struct QualityReport {
   int non_star_panels = 0;    // empty kernel (zero-area kernels count as empty)
   int non_simple_panels = 0;  // includes panels with fewer than 3 vertices
   int spike_vertices = 0;     // panel vertices farther than spike_factor * D from their corner
+  // Where the problems are, for drawing them (paper fig. 6): the flipped edges as panel-vertex
+  // pairs (in their panel's order) and the spike vertices, in increasing panel / vertex order.
+  std::vector<std::array<int, 2>> flipped_edge_vertices;
+  std::vector<int> spike_vertex_ids;
   // Panels invalid by their own PanelIssues or by any check here (non-simple, non-star,
   // flipped edges, a spike vertex, misoriented), and their indices in increasing order.
   int invalid_panels = 0;

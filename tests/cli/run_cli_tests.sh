@@ -216,6 +216,18 @@ code=$?
 [ "$code" = 0 ] || [ "$code" = 3 ] && python3 -c "import json; json.load(open('$tmp/rd.json'))" && ok ||
   bad "remesh with --density (exit $code)"
 
+# --parts: the basic parts list, one row per panel of the OBJ, and its totals row.
+"$bin" remesh "$meshes/epcot.off" --panels 30 --out "$tmp/pp.obj" --parts "$tmp/pp.csv" 2>/dev/null
+code=$?
+[ "$code" = 0 ] || [ "$code" = 3 ] && python3 - "$tmp/pp.obj" "$tmp/pp.csv" <<'PY' && ok || bad "remesh --parts (exit $code)"
+import csv, sys
+faces = sum(1 for line in open(sys.argv[1]) if line.startswith("f "))
+rows = list(csv.DictReader(open(sys.argv[2])))
+assert rows[-1]["label"] == "total" and len(rows) - 1 == faces, (len(rows), faces)
+total = sum(float(r["area"]) for r in rows[:-1])
+assert abs(total - float(rows[-1]["area"])) <= 1e-9 * total and all(float(r["area"]) > 0 for r in rows[:-1])
+PY
+
 # Neither --out nor --report: one summary line on stdout and nothing written.
 mkdir -p "$tmp/quiet"
 (cd "$tmp/quiet" && "$bin" remesh "$meshes/epcot.off" --panels 30 >"$tmp/stdout.txt" 2>"$tmp/err.txt")
@@ -240,7 +252,7 @@ expect_error 2 "unknown option --frobnicate" remesh "$e" --panels 10 --frobnicat
 expect_error 2 "thickness.*not supported yet" remesh "$e" --panels 10 --thickness 0.02 "${o[@]}"
 expect_error 2 "glass.*not supported yet" remesh "$e" --panels 10 --glass "${o[@]}"
 expect_error 2 "min-angle.*not supported yet" remesh "$e" --panels 10 --min-angle=15 "${o[@]}"
-expect_error 2 "parts.*not supported yet" remesh "$e" --panels 10 --parts "$tmp/never.csv" "${o[@]}"
+expect_error 2 "same file" remesh "$e" --panels 10 --out "$tmp/never.x" --parts "$tmp/never.x"
 expect_error 2 "seeding" remesh "$e" --panels 10 --seeding spiral "${o[@]}"
 expect_error 2 "weights" remesh "$e" --panels 10 --weights boundary=x "${o[@]}"
 expect_error 2 "same file" remesh "$e" --panels 10 --out "$tmp/never.x" --report "$tmp/never.x"

@@ -131,6 +131,8 @@ TEST(Polygon2d, LShapeKernelIsTheCornerSquare) {
   EXPECT_EQ(count_flipped_edges(p, k), 0);
   // Seen from the lower arm, the reflex corner's upward edge runs clockwise.
   EXPECT_EQ(count_flipped_edges(p, Vec2(1.5, 0.5)), 1);
+  EXPECT_EQ(flipped_edges(p, Vec2(1.5, 0.5)).size(), 1u);
+  EXPECT_TRUE(flipped_edges(p, k).empty());
   EXPECT_NEAR(min_interior_angle_deg(p), 90.0, 1e-12);
   expect_valid_triangulation(p);
 }

@@ -5,6 +5,7 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -186,6 +187,7 @@ TEST(Quality, SpikeVertexMakesItsPanelsInvalid) {
   pm.vertices[6] += Vec3(0.3, 0.3, 0.3);  // 0.52 from its corner
   const QualityReport r = measure(cube_mesh(), pm);
   EXPECT_EQ(r.spike_vertices, 1);
+  EXPECT_EQ(r.spike_vertex_ids, (std::vector<int>{6}));
   EXPECT_EQ(r.invalid_panel_ids, (std::vector<int>{1, 3, 4}));  // the panels around vertex 6
   EXPECT_EQ(r.invalid_panels, 3);
   // A looser spike factor accepts it.
@@ -201,6 +203,11 @@ TEST(Quality, ReversedPanelIsFlippedAndMisoriented) {
   const QualityReport r = measure(cube_mesh(), pm);
   EXPECT_EQ(r.misoriented_panels, 1);
   EXPECT_EQ(r.flipped_edges, 4);
+  // Every edge of the reversed panel, as vertex pairs in its (reversed) order.
+  ASSERT_EQ(r.flipped_edge_vertices.size(), 4u);
+  const std::vector<int>& rev = pm.panels[2];
+  for (size_t i = 0; i < 4; ++i)
+    EXPECT_EQ(r.flipped_edge_vertices[i], (std::array<int, 2>{rev[i], rev[(i + 1) % 4]}));
   EXPECT_EQ(r.non_star_panels, 1);
   EXPECT_EQ(r.non_simple_panels, 0);
   EXPECT_FALSE(r.oriented_manifold);

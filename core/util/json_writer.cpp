@@ -1,10 +1,10 @@
-#include "cli/json_writer.h"
+#include "core/util/json_writer.h"
 
 #include <cinttypes>
 #include <cmath>
 #include <cstdio>
 
-namespace ff::cli {
+namespace ff {
 
 std::string json_escape(const std::string& s) {
   std::string out = "\"";
@@ -117,4 +117,4 @@ JsonWriter& JsonWriter::value(const char* key, const std::string& v) {
   return *this;
 }
 
-}  // namespace ff::cli
+}  // namespace ff

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-namespace ff::cli {
+namespace ff {
 
 class JsonWriter {
  public:
@@ -30,4 +30,4 @@ class JsonWriter {
 
 std::string json_escape(const std::string& s);
 
-}  // namespace ff::cli
+}  // namespace ff

@@ -1,0 +1,53 @@
+#include "core/fabricate/parts_list.h"
+
+#include <cstdio>
+
+#include "core/panels/polygon2d.h"
+
+namespace ff {
+
+namespace {
+
+std::string number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
+}
+
+}  // namespace
+
+std::vector<PanelPart> panel_parts(const PanelMesh& pm) {
+  std::vector<PanelPart> parts;
+  for (size_t p = 0; p < pm.panels.size(); ++p) {
+    const std::vector<int>& panel = pm.panels[p];
+    PanelPart part;
+    part.panel = static_cast<int>(p);
+    part.label = "P" + std::to_string(p + 1);
+    part.sides = static_cast<int>(panel.size());
+    std::vector<Vec3> points;
+    for (const int v : panel) points.push_back(pm.vertices[static_cast<size_t>(v)]);
+    for (size_t i = 0; i < points.size(); ++i) part.perimeter += (points[(i + 1) % points.size()] - points[i]).norm();
+    // Newell's normal of a planar polygon is twice its area along the unit normal.
+    part.area = 0.5 * newell_normal(points).norm();
+    if (p < pm.plane_normals.size()) part.normal = pm.plane_normals[p];
+    if (p < pm.plane_offsets.size()) part.offset = pm.plane_offsets[p];
+    parts.push_back(part);
+  }
+  return parts;
+}
+
+std::string parts_list_csv(const PanelMesh& panels) {
+  std::string csv = "panel,label,sides,area,perimeter,normal_x,normal_y,normal_z,offset\n";
+  double area = 0.0, perimeter = 0.0;
+  for (const PanelPart& part : panel_parts(panels)) {
+    csv += std::to_string(part.panel) + "," + part.label + "," + std::to_string(part.sides) + "," + number(part.area) +
+           "," + number(part.perimeter) + "," + number(part.normal.x()) + "," + number(part.normal.y()) + "," +
+           number(part.normal.z()) + "," + number(part.offset) + "\n";
+    area += part.area;
+    perimeter += part.perimeter;
+  }
+  csv += ",total,," + number(area) + "," + number(perimeter) + ",,,,\n";
+  return csv;
+}
+
+}  // namespace ff

@@ -1,0 +1,90 @@
+#include "core/remesh_params_json.h"
+
+#include <cmath>
+#include <string>
+
+#include "core/util/error.h"
+#include "core/util/json_reader.h"
+
+namespace ff {
+
+namespace {
+
+constexpr double kMaxCount = 10'000'000;       // panels
+constexpr double kMaxIterations = 100'000;     // k1, k2 (the Remesher's own limit)
+constexpr double kMaxSeed = 9007199254740991;  // 2^53 - 1: exact in a JS number
+constexpr double kMaxWeight = 1e6;
+
+double number(const JsonValue& v, const std::string& name, double lo, double hi, bool integer) {
+  if (v.type != JsonValue::Type::Number) throw InputError("parameter '" + name + "' must be a number");
+  const double x = v.number;
+  if (!std::isfinite(x) || x < lo || x > hi) {
+    throw InputError("parameter '" + name + "' must be between " + std::to_string(static_cast<long long>(lo)) +
+                     " and " + std::to_string(static_cast<long long>(hi)));
+  }
+  if (integer && x != std::floor(x)) throw InputError("parameter '" + name + "' must be a whole number");
+  return x;
+}
+
+bool boolean(const JsonValue& v, const std::string& name) {
+  if (v.type != JsonValue::Type::Boolean) throw InputError("parameter '" + name + "' must be true or false");
+  return v.boolean;
+}
+
+void read_weights(const JsonValue& w, MetricWeights& weights) {
+  if (w.type != JsonValue::Type::Object) throw InputError("parameter 'weights' must be an object");
+  for (const auto& [name, value] : w.object) {
+    const std::string full = "weights." + name;
+    if (name == "euclidean")
+      weights.euclidean = number(value, full, 0, kMaxWeight, false);
+    else if (name == "l2")
+      weights.l2 = number(value, full, 0, kMaxWeight, false);
+    else if (name == "l21")
+      weights.l21 = number(value, full, 0, kMaxWeight, false);
+    else if (name == "density")
+      weights.density = number(value, full, 0, 8, false);
+    else if (name == "boundary")
+      weights.boundary = number(value, full, 0, kMaxWeight, false);
+    else
+      throw InputError("unknown parameter '" + full + "'");
+  }
+  if (weights.euclidean + weights.l2 + weights.l21 <= 0.0)
+    throw InputError("parameter 'weights': at least one of euclidean, l2, l21 must be positive");
+}
+
+}  // namespace
+
+RemeshParams remesh_params_from_json(std::string_view json, const RemeshParams& base) {
+  const JsonValue root = parse_json(json, 4, 64 * 1024);
+  if (root.type != JsonValue::Type::Object) throw InputError("parameters must be a JSON object");
+  RemeshParams p = base;
+  for (const auto& [name, value] : root.object) {
+    if (name == "panels") {
+      p.panels = static_cast<int>(number(value, name, 1, kMaxCount, true));
+    } else if (name == "seed") {
+      p.seed = static_cast<std::uint64_t>(number(value, name, 0, kMaxSeed, true));
+    } else if (name == "weights") {
+      read_weights(value, p.weights);
+    } else if (name == "lloydIterations") {
+      p.lloyd_iterations = static_cast<int>(number(value, name, 0, kMaxIterations, true));
+    } else if (name == "panelRounds") {
+      // At least one round: without one there are no panels.
+      p.panel_rounds = static_cast<int>(number(value, name, 1, kMaxIterations, true));
+    } else if (name == "seeding") {
+      if (value.type != JsonValue::Type::String || (value.string != "farthest" && value.string != "random"))
+        throw InputError("parameter 'seeding' must be \"farthest\" or \"random\"");
+      p.seeding = value.string == "random" ? SeedingMethod::Random : SeedingMethod::FarthestPoint;
+    } else if (name == "teleport") {
+      p.teleport_interval = boolean(value, name) ? RemeshParams{}.teleport_interval : 0;
+    } else if (name == "singlePointNodes") {
+      p.single_point_nodes = boolean(value, name);
+    } else if (name == "optimizePlanes") {
+      p.optimize_planes = boolean(value, name);
+    } else {
+      throw InputError("unknown parameter '" + name + "'");
+    }
+  }
+  return p;
+}
+
+}  // namespace ff

@@ -1,0 +1,183 @@
+// The wasm Session as the page's worker uses it: loading, solving, warm starts, exports, and
+// every error coming back as a message while the previous design stays usable.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
+import path from 'node:path';
+import { json, loadModule, maxPlanarity, meshes, parseObj, root, solve } from './module.mjs';
+
+const ff = await loadModule();
+
+function session() {
+  return new ff.Session();
+}
+
+function expectError(text, pattern) {
+  const status = json(text);
+  assert.equal(status.ok, false, `expected an error, got ${text}`);
+  assert.match(status.message, pattern);
+}
+
+test('a shape solves to valid, exactly planar panels with the requested count', () => {
+  const s = session();
+  const info = json(s.loadShape('saddle', 6000));
+  assert.equal(info.ok, true);
+  assert.equal(info.boundaryLoops, 1);
+  assert.equal(info.euler, 1);
+  assert.equal(json(s.setParams(JSON.stringify({ panels: 60, seed: 3 }))).ok, true);
+  const last = solve(s);
+  assert.equal(last.stage, 'Done');
+  const report = json(s.reportJson());
+  assert.equal(report.status, 'valid');
+  assert.equal(report.panels, 60);
+  assert.equal(report.topology_preserved, true);
+  assert.ok(report.max_planarity <= 1e-9);
+  const obj = parseObj(s.objText());
+  assert.equal(obj.faces.length, 60);
+  assert.ok(maxPlanarity(obj) <= 1e-9, `planarity ${maxPlanarity(obj)}`);
+
+  // Display arrays agree with the OBJ and the mesh.
+  const offsets = s.panelOffsets();
+  assert.equal(offsets.length, 61);
+  assert.equal(s.panelIndices().length, offsets[60]);
+  assert.equal(s.clusterIds().length, info.triangles);
+  assert.ok(s.clusterIds().every((c) => c >= 0 && c < 60));
+  const tris = s.panelTriangles();
+  const ids = s.panelTriangleIds();
+  assert.equal(tris.length, 3 * ids.length);
+  // A k-gon gives k - 2 triangles.
+  let expected = 0;
+  for (let i = 0; i < 60; ++i) expected += offsets[i + 1] - offsets[i] - 2;
+  assert.equal(ids.length, expected);
+  assert.equal(s.inputIndices().length, 3 * info.triangles);
+  assert.equal(s.inputPositions().length, 3 * info.vertices);
+  const problems = json(s.problems());
+  assert.deepEqual([problems.spikes, problems.flippedEdges, problems.invalidPanels], [[], [], []]);
+  s.delete();
+});
+
+test('same input, parameters and seed give byte-identical OBJ', () => {
+  const texts = [0, 1].map(() => {
+    const s = session();
+    s.loadShape('helicoid', 5000);
+    s.setParams(JSON.stringify({ panels: 50, seed: 7 }));
+    solve(s);
+    const t = s.objText();
+    s.delete();
+    return t;
+  });
+  assert.ok(texts[0].length > 1000);
+  assert.equal(texts[0], texts[1]);
+});
+
+test('a changed panel count warm-starts from the finished solve', () => {
+  const s = session();
+  s.loadShape('barrel_vault', 6000);
+  s.setParams(JSON.stringify({ panels: 40 }));
+  solve(s);
+  assert.equal(json(s.reportJson()).panels, 40);
+  assert.equal(json(s.setParams(JSON.stringify({ panels: 60 }))).ok, true);
+  assert.equal(s.done(), false);
+  solve(s);
+  const report = json(s.reportJson());
+  assert.equal(report.panels, 60);
+  assert.equal(report.status, 'valid');
+  s.delete();
+});
+
+test('the parts list has a header, one row per panel and totals equal to the panel areas', () => {
+  const s = session();
+  s.loadShape('groin_vault', 6000);
+  s.setParams(JSON.stringify({ panels: 40 }));
+  solve(s);
+  const rows = s.partsCsv().trim().split('\n');
+  assert.equal(rows[0], 'panel,label,sides,area,perimeter,normal_x,normal_y,normal_z,offset');
+  assert.equal(rows.length, 1 + 40 + 1);
+  const areas = rows.slice(1, -1).map((r) => Number(r.split(',')[3]));
+  assert.ok(areas.every((a) => a > 0));
+  const total = Number(rows.at(-1).split(',')[3]);
+  assert.ok(Math.abs(total - areas.reduce((a, b) => a + b, 0)) <= 1e-9 * total);
+  s.delete();
+});
+
+test('bad files come back as messages naming the problem, and the previous mesh stays', () => {
+  const s = session();
+  const ok = json(s.loadShape('saddle', 3000));
+  expectError(s.loadMesh('bad.obj', new Uint8Array([0, 1, 2, 255, 254, 0, 7])), /bad\.obj/);
+  expectError(s.loadMesh('empty.off', new Uint8Array()), /empty\.off/);
+  const nan = new TextEncoder().encode('v 0 0 0\nv 1 0 nan\nv 0 1 0\nf 1 2 3\n');
+  expectError(s.loadMesh('nan.obj', nan), /nan\.obj.*(finite|NaN|nan)/i);
+  const range = new TextEncoder().encode('v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n');
+  expectError(s.loadMesh('range.obj', range), /range\.obj/);
+  expectError(s.loadMesh('mesh.xyz', new TextEncoder().encode('hello')), /mesh\.xyz/);
+  expectError(s.loadArrays('soup', new Float64Array([0, 0, 0, 1, 0]), new Uint32Array([0, 1, 2])), /xyz/);
+  expectError(s.loadArrays('soup', new Float64Array([0, 0, 0, 1, 0, 0, 0, 1, 0]), new Uint32Array([0, 1, 5])), /missing vertex/);
+  expectError(s.loadShape('cathedral', 3000), /unknown example/);
+  expectError(s.loadShape('saddle', 10), /between/);
+  // The saddle is still there and solves.
+  s.setParams(JSON.stringify({ panels: 30 }));
+  solve(s);
+  assert.equal(json(s.reportJson()).triangles, ok.triangles);
+  assert.equal(json(s.reportJson()).status, 'valid');
+  s.delete();
+});
+
+test('bad parameters are refused by name and change nothing', () => {
+  const s = session();
+  expectError(s.step(), /no mesh/);
+  s.loadShape('saddle', 3000);
+  expectError(s.setParams('not json'), /JSON/);
+  expectError(s.setParams('[1,2]'), /object/);
+  expectError(s.setParams(JSON.stringify({ panels: 0 })), /panels/);
+  expectError(s.setParams(JSON.stringify({ panels: 2.5 })), /whole number/);
+  expectError(s.setParams(JSON.stringify({ panels: '40' })), /panels.*number/);
+  expectError(s.setParams(JSON.stringify({ panels: 40, colour: 'red' })), /unknown parameter 'colour'/);
+  expectError(s.setParams(JSON.stringify({ panels: 40, weights: { euclidean: -1 } })), /weights\.euclidean/);
+  expectError(s.setParams(JSON.stringify({ panels: 40, seeding: 'clever' })), /seeding/);
+  expectError(s.setParams('{"panels":' + '['.repeat(100) + ']'.repeat(100) + '}'), /nested/);
+  expectError(s.setParams(JSON.stringify({ panels: 1000000 })), /panel|face|cluster/i);
+  assert.equal(json(s.setParams(JSON.stringify({ panels: 25 }))).ok, true);
+  solve(s);
+  assert.equal(json(s.reportJson()).panels, 25);
+  // Bad parameters after a solve keep the result.
+  expectError(s.setParams(JSON.stringify({ panels: -1 })), /panels/);
+  assert.equal(s.done(), true);
+  assert.equal(json(s.reportJson()).panels, 25);
+  s.delete();
+});
+
+test('a shared mesh read from bytes gives the same panels as the native CLI', async (t) => {
+  const { execFileSync } = await import('node:child_process');
+  const { existsSync, mkdtempSync } = await import('node:fs');
+  const os = await import('node:os');
+  const flatfacet = path.join(root, 'build/release/cli/flatfacet');
+  assert.ok(existsSync(flatfacet), `${flatfacet} missing: build the native CLI first (scripts/test.sh does)`);
+  for (const [file, panels] of [
+    ['inspired_mesh.obj', 42],
+    ['hyperboloid_s4.off', 500],
+  ]) {
+    await t.test(`${file} into ${panels} panels`, () => {
+      const input = path.join(meshes, file);
+      const out = path.join(mkdtempSync(path.join(os.tmpdir(), 'ff-')), 'panels.obj');
+      try {
+        execFileSync(flatfacet, ['remesh', input, '--panels', String(panels), '--seed', '5', '--out', out]);
+      } catch (e) {
+        if (e.status !== 3) throw e; // 3: written with invalid panels, still comparable
+      }
+      const s = session();
+      assert.equal(json(s.loadMesh(file, readFileSync(input))).ok, true);
+      s.setParams(JSON.stringify({ panels, seed: 5 }));
+      solve(s);
+      const native = parseObj(readFileSync(out, 'utf8'));
+      const wasm = parseObj(s.objText());
+      assert.equal(wasm.faces.length, native.faces.length, 'panel count');
+      assert.equal(wasm.vertices.length, native.vertices.length, 'vertex count');
+      assert.deepEqual(wasm.faces, native.faces, 'the same polygons on the same vertices');
+      const scale = Math.max(...native.vertices.flat().map(Math.abs));
+      let worst = 0;
+      native.vertices.forEach((v, i) => v.forEach((x, k) => (worst = Math.max(worst, Math.abs(x - wasm.vertices[i][k])))));
+      assert.ok(worst <= 1e-9 * scale, `vertices differ by ${worst}`);
+      s.delete();
+    });
+  }
+});

@@ -1,0 +1,71 @@
+// Embind bindings: JavaScript types in and out of ff::wasm::Session, nothing else. Typed
+// arrays are copied both ways (a view into the wasm heap dies when the memory grows).
+#include <emscripten/bind.h>
+#include <emscripten/val.h>
+
+#include <string>
+#include <vector>
+
+#include "core/version.h"
+#include "wasm/session.h"
+
+namespace {
+
+using emscripten::val;
+using ff::wasm::Session;
+
+template <typename T>
+val to_typed_array(const std::vector<T>& data, const char* type) {
+  // The view aliases the heap only for the duration of the copy made by the constructor.
+  return val::global(type).new_(emscripten::typed_memory_view(data.size(), data.data()));
+}
+
+template <typename T>
+std::vector<T> from_typed_array(const val& array) {
+  return emscripten::convertJSArrayToNumberVector<T>(array);
+}
+
+std::string load_mesh(Session& s, const std::string& name, const val& bytes) {
+  const std::vector<std::uint8_t> data = from_typed_array<std::uint8_t>(bytes);
+  return s.load_mesh(name, std::string_view(reinterpret_cast<const char*>(data.data()), data.size()));
+}
+
+std::string load_arrays(Session& s, const std::string& name, const val& positions, const val& indices) {
+  return s.load_arrays(name, from_typed_array<double>(positions), from_typed_array<std::uint32_t>(indices));
+}
+
+std::string version() { return ff::kVersion; }
+
+}  // namespace
+
+EMSCRIPTEN_BINDINGS(flatfacet) {
+  emscripten::function("version", &version);
+  emscripten::class_<Session>("Session")
+      .constructor<>()
+      .function("loadMesh", &load_mesh)
+      .function("loadArrays", &load_arrays)
+      .function("loadShape", &Session::load_shape)
+      .function("setParams", &Session::set_params)
+      .function("step", &Session::step)
+      .function("done", &Session::done)
+      .function(
+          "inputPositions", +[](const Session& s) { return to_typed_array(s.input_positions(), "Float32Array"); })
+      .function(
+          "inputIndices", +[](const Session& s) { return to_typed_array(s.input_indices(), "Uint32Array"); })
+      .function(
+          "clusterIds", +[](const Session& s) { return to_typed_array(s.cluster_ids(), "Int32Array"); })
+      .function(
+          "panelPositions", +[](const Session& s) { return to_typed_array(s.panel_positions(), "Float64Array"); })
+      .function(
+          "panelOffsets", +[](const Session& s) { return to_typed_array(s.panel_offsets(), "Uint32Array"); })
+      .function(
+          "panelIndices", +[](const Session& s) { return to_typed_array(s.panel_indices(), "Uint32Array"); })
+      .function(
+          "panelTriangles", +[](const Session& s) { return to_typed_array(s.panel_triangles(), "Uint32Array"); })
+      .function(
+          "panelTriangleIds", +[](const Session& s) { return to_typed_array(s.panel_triangle_ids(), "Uint32Array"); })
+      .function("problems", &Session::problems)
+      .function("reportJson", &Session::report_json)
+      .function("objText", &Session::obj_text)
+      .function("partsCsv", &Session::parts_csv);
+}

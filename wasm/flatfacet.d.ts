@@ -1,0 +1,109 @@
+// Hand-written types of the Embind module (Emscripten 3.1.6 has no --emit-tsd).
+// Every call returns; nothing throws across the boundary. Calls that can fail return a JSON
+// string that parses to a Status (ok false + a one-line message naming the problem), and
+// leave the session's previous mesh, parameters and result untouched.
+
+export interface Status {
+  ok: boolean;
+  message: string; // empty when ok
+}
+
+export interface MeshInfo extends Status {
+  name: string;
+  vertices: number; // of the cleaned mesh
+  triangles: number; // of the cleaned mesh
+  inputTriangles: number; // as read, before clean-up
+  components: number;
+  boundaryLoops: number;
+  euler: number; // Euler characteristic
+  genus: number;
+  bboxDiagonal: number;
+  cleanup: string[]; // one sentence per repair applied ("welded 12 duplicate vertices")
+}
+
+// Everything the designer sets; missing fields keep their defaults (DESIGN.md 4 / CLI).
+export interface RemeshParams {
+  panels: number; // >= 1
+  seed?: number; // integer 0 .. 2^53-1; default 1
+  weights?: { euclidean?: number; l2?: number; l21?: number; density?: number; boundary?: number };
+  lloydIterations?: number; // k1, default 20
+  panelRounds?: number; // k2, default 30
+  seeding?: 'farthest' | 'random';
+  teleport?: boolean; // default true
+  singlePointNodes?: boolean; // default false
+  optimizePlanes?: boolean; // default true
+}
+
+export type StageName = 'Seeding' | 'Lloyd' | 'Panels' | 'Optimize' | 'Done'; // capitalised for display
+
+export interface Progress extends Status {
+  stage: StageName;
+  iteration: number; // within the stage
+  of: number; // the stage's iteration limit
+  energy: number;
+  invalidPanels: number;
+  done: boolean;
+  panelRounds: number; // panel rounds done so far
+}
+
+export interface Problems {
+  spikes: number[]; // xyz triples: panel vertices farther than the spike distance from their corner
+  flippedEdges: number[]; // pairs of xyz triples (6 numbers per edge): edges against their panel's orientation
+  invalidPanels: number[]; // panel ids
+  unbuiltClusters: number[]; // cluster ids that could not become a panel (their faces stay uncovered)
+}
+
+export interface Session {
+  // Reads OBJ/OFF/STL/PLY bytes (format from the name's extension, else the content), cleans
+  // the mesh (weld, drop degenerate/duplicate faces, orient). Returns MeshInfo JSON.
+  loadMesh(name: string, bytes: Uint8Array): string;
+  // A triangle soup from a three.js loader (glTF/GLB): xyz per vertex, 3 indices per triangle.
+  loadArrays(name: string, positions: Float64Array, indices: Uint32Array): string;
+  // A generated example: 'saddle' | 'barrel_vault' | 'groin_vault' | 'helicoid' | 'freeform_roof'
+  // | 'torus' | 'bump' | 'roof_with_hole' | 'twisted_strip', with about `triangles` triangles.
+  loadShape(name: string, triangles: number): string;
+  // Sets parameters (JSON of RemeshParams). With a solve under way or finished, warm-starts from
+  // the current clustering (panel count / weights); a changed seed starts over. Status JSON.
+  setParams(paramsJson: string): string;
+  // Bounded work (seeding, one Lloyd iteration, one panel round). Progress JSON.
+  step(): string;
+  done(): boolean;
+
+  // The cleaned input mesh for display.
+  inputPositions(): Float32Array; // xyz per vertex
+  inputIndices(): Uint32Array; // 3 per triangle
+  // Per cleaned triangle: its cluster (-1 unassigned), valid after any step.
+  clusterIds(): Int32Array;
+  // The panels (empty before the panel phase): vertices, and panel i's vertex indices are
+  // panelIndices[panelOffsets[i] .. panelOffsets[i+1]).
+  panelPositions(): Float64Array;
+  panelOffsets(): Uint32Array; // numPanels + 1 entries
+  panelIndices(): Uint32Array;
+  // The panels triangulated in their own planes (ear clipping, concave panels handled):
+  // indices into panelPositions, and the panel of each triangle.
+  panelTriangles(): Uint32Array;
+  panelTriangleIds(): Uint32Array;
+  problems(): string; // Problems JSON
+  // The quality report (DESIGN.md 4 keys) of the current panels, as JSON text; "{}" without panels.
+  reportJson(): string;
+  // Panels OBJ as `flatfacet remesh --out` writes it (the comment's input line names the file
+  // instead of a path); "" when there are no panels yet.
+  objText(): string;
+  // Parts list CSV: header row, then one row per panel.
+  partsCsv(): string;
+  delete(): void;
+}
+
+export interface FlatfacetModule {
+  Session: { new (): Session };
+  version(): string;
+  HEAPU8: Uint8Array;
+}
+
+export interface ModuleOptions {
+  wasmBinary?: ArrayBuffer | Uint8Array;
+  locateFile?: (path: string, prefix: string) => string;
+}
+
+declare function createFlatfacet(options?: ModuleOptions): Promise<FlatfacetModule>;
+export default createFlatfacet;

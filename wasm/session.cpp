@@ -1,0 +1,345 @@
+#include "wasm/session.h"
+
+#include <algorithm>
+#include <new>
+
+#include "core/fabricate/parts_list.h"
+#include "core/mesh/clean.h"
+#include "core/mesh/mesh_io.h"
+#include "core/panels/panel_export.h"
+#include "core/quality/report_json.h"
+#include "core/remesh_params_json.h"
+#include "core/shapes/example_shapes.h"
+#include "core/util/error.h"
+#include "core/util/json_writer.h"
+
+namespace ff::wasm {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+std::string status_json(bool ok, const std::string& message) {
+  JsonWriter j;
+  j.begin_object().value("ok", ok).value("message", message).end_object();
+  return j.str();
+}
+
+// Runs `f`, turning every exception into a Status JSON: nothing crosses into JavaScript.
+template <typename F>
+std::string guarded(F&& f) {
+  try {
+    return f();
+  } catch (const InputError& e) {
+    return status_json(false, e.what());
+  } catch (const std::bad_alloc&) {
+    return status_json(false, "out of memory: the mesh or the panel count is too large for this browser tab");
+  } catch (const std::exception& e) {
+    return status_json(false, std::string("internal error: ") + e.what());
+  } catch (...) {
+    return status_json(false, "internal error");
+  }
+}
+
+// The page's stage names (wasm/flatfacet.d.ts, StageName).
+const char* display_stage(Stage stage) {
+  switch (stage) {
+    case Stage::Seeding:
+      return "Seeding";
+    case Stage::Lloyd:
+      return "Lloyd";
+    case Stage::Panels:
+      return "Panels";
+    case Stage::Optimize:
+      return "Optimize";
+    case Stage::Done:
+      break;
+  }
+  return "Done";
+}
+
+}  // namespace
+
+Session::Session() = default;
+Session::~Session() = default;
+
+std::string Session::load(const std::string& name, TriMesh raw, int input_triangles) {
+  const auto t0 = Clock::now();
+  CleanMesh clean = clean_mesh(raw);
+  MeshTopology topology = build_topology(clean.mesh);
+  // Everything built: only now replace the previous design.
+  name_ = name;
+  mesh_ = std::move(clean.mesh);
+  topology_ = std::move(topology);
+  cleanup_ = clean.report.messages();
+  remesher_.reset();
+  forget_result();
+  prepare_seconds_ = seconds_since(t0);
+
+  const int euler = euler_characteristic(mesh_, topology_);
+  const int loops = static_cast<int>(topology_.boundary_loops.size());
+  JsonWriter j;
+  j.begin_object().value("ok", true).value("message", "").value("name", name_);
+  j.value("vertices", mesh_.num_vertices()).value("triangles", mesh_.num_faces());
+  j.value("inputTriangles", input_triangles).value("components", topology_.num_components);
+  j.value("boundaryLoops", loops).value("euler", euler);
+  // Orientable surfaces: chi = 2 c - 2 g - b.
+  j.value("genus", (2 * topology_.num_components - euler - loops) / 2);
+  j.value("bboxDiagonal", bbox_diagonal(mesh_));
+  j.begin_array("cleanup");
+  for (const std::string& m : cleanup_) j.value(nullptr, m);
+  j.end_array().end_object();
+  return j.str();
+}
+
+std::string Session::load_mesh(const std::string& name, std::string_view bytes) {
+  return guarded([&] {
+    RawMesh raw;
+    try {
+      raw = read_mesh(bytes, name);
+    } catch (const InputError& e) {
+      // The page shows the message: name the file, unless the reader already did.
+      if (std::string(e.what()).find(name) != std::string::npos) throw;
+      throw InputError(name + ": " + e.what());
+    }
+    const int triangles = raw.mesh.num_faces();
+    return load(name, std::move(raw.mesh), triangles);
+  });
+}
+
+std::string Session::load_arrays(const std::string& name, const std::vector<double>& positions,
+                                 const std::vector<std::uint32_t>& indices) {
+  return guarded([&] {
+    if (positions.size() % 3 != 0) throw InputError(name + ": positions are not xyz triples");
+    if (indices.size() % 3 != 0) throw InputError(name + ": indices are not triangles");
+    TriMesh mesh;
+    for (size_t i = 0; i < positions.size(); i += 3) {
+      const Vec3 p(positions[i], positions[i + 1], positions[i + 2]);
+      if (!p.allFinite()) throw InputError(name + ": vertex " + std::to_string(i / 3) + " is not finite");
+      mesh.positions.push_back(p);
+    }
+    for (size_t i = 0; i < indices.size(); i += 3) {
+      std::array<int, 3> t{};
+      for (int k = 0; k < 3; ++k) {
+        if (indices[i + k] >= mesh.positions.size())
+          throw InputError(name + ": triangle " + std::to_string(i / 3) + " uses a missing vertex");
+        t[k] = static_cast<int>(indices[i + k]);
+      }
+      mesh.triangles.push_back(t);
+    }
+    const int triangles = mesh.num_faces();
+    return load(name, std::move(mesh), triangles);
+  });
+}
+
+std::string Session::load_shape(const std::string& name, int triangles) {
+  return guarded([&] {
+    TriMesh mesh = make_example_shape(name, triangles);
+    const int count = mesh.num_faces();
+    return load(name, std::move(mesh), count);
+  });
+}
+
+std::string Session::set_params(const std::string& params_json) {
+  return guarded([&] {
+    RemeshParams params = remesh_params_from_json(params_json);
+    params.make_panels = true;
+    if (remesher_) {
+      remesher_->set_params(params);  // throws and keeps everything on bad parameters
+      forget_result();
+    } else if (mesh_.num_faces() > 0) {
+      // Build now, so a panel count the mesh cannot take is refused here, not at step().
+      remesher_ = std::make_unique<Remesher>(mesh_, params);
+      forget_result();
+    }
+    params_ = params;
+    return status_json(true, "");
+  });
+}
+
+std::string Session::step() {
+  return guarded([&] {
+    if (mesh_.num_faces() == 0) throw InputError("no mesh loaded");
+    if (!remesher_) remesher_ = std::make_unique<Remesher>(mesh_, params_);
+    const Stage stage = remesher_->progress().stage;
+    const auto t0 = Clock::now();
+    const Progress p = remesher_->step();
+    (stage == Stage::Seeding || stage == Stage::Lloyd ? timings_.cluster : timings_.panels) += seconds_since(t0);
+    quality_.reset();
+    JsonWriter j;
+    j.begin_object().value("ok", true).value("message", "");
+    j.value("stage", display_stage(p.stage)).value("iteration", p.iteration).value("of", p.of);
+    j.value("energy", p.energy).value("invalidPanels", p.invalid_panels);
+    j.value("done", remesher_->done()).value("panelRounds", remesher_->panel_rounds_done());
+    j.end_object();
+    return j.str();
+  });
+}
+
+bool Session::done() const { return remesher_ && remesher_->done(); }
+
+void Session::forget_result() {
+  quality_.reset();
+  timings_ = Timings{};
+}
+
+const QualityReport* Session::quality() {
+  if (!remesher_ || remesher_->panels().num_panels() == 0) return nullptr;
+  if (!quality_) {
+    const auto t0 = Clock::now();
+    QualityOptions options;
+    // Mid-solve the page only wants the problems: a coarse Hausdorff is enough then.
+    if (!remesher_->done()) options.samples_per_side = 2000;
+    quality_ = measure_quality(mesh_, topology_, remesher_->panels(), options);
+    if (remesher_->done()) timings_.quality = seconds_since(t0);
+  }
+  return &*quality_;
+}
+
+std::vector<float> Session::input_positions() const {
+  std::vector<float> out;
+  out.reserve(mesh_.positions.size() * 3);
+  for (const Vec3& p : mesh_.positions)
+    for (int k = 0; k < 3; ++k) out.push_back(static_cast<float>(p[k]));
+  return out;
+}
+
+std::vector<std::uint32_t> Session::input_indices() const {
+  std::vector<std::uint32_t> out;
+  out.reserve(mesh_.triangles.size() * 3);
+  for (const auto& t : mesh_.triangles)
+    for (const int v : t) out.push_back(static_cast<std::uint32_t>(v));
+  return out;
+}
+
+std::vector<std::int32_t> Session::cluster_ids() const {
+  if (!remesher_ || remesher_->clustering().labels.empty())
+    return std::vector<std::int32_t>(mesh_.triangles.size(), -1);
+  const std::vector<int>& labels = remesher_->clustering().labels;
+  return std::vector<std::int32_t>(labels.begin(), labels.end());
+}
+
+std::vector<double> Session::panel_positions() const {
+  std::vector<double> out;
+  if (!remesher_) return out;
+  for (const Vec3& p : remesher_->panels().vertices)
+    for (int k = 0; k < 3; ++k) out.push_back(p[k]);
+  return out;
+}
+
+std::vector<std::uint32_t> Session::panel_offsets() const {
+  std::vector<std::uint32_t> out{0};
+  if (!remesher_) return out;
+  for (const std::vector<int>& panel : remesher_->panels().panels)
+    out.push_back(out.back() + static_cast<std::uint32_t>(panel.size()));
+  return out;
+}
+
+std::vector<std::uint32_t> Session::panel_indices() const {
+  std::vector<std::uint32_t> out;
+  if (!remesher_) return out;
+  for (const std::vector<int>& panel : remesher_->panels().panels)
+    for (const int v : panel) out.push_back(static_cast<std::uint32_t>(v));
+  return out;
+}
+
+std::vector<std::uint32_t> Session::panel_triangles() const {
+  std::vector<std::uint32_t> out;
+  if (!remesher_) return out;
+  for (const auto& t : triangulate_panels(remesher_->panels()).triangles)
+    for (const int v : t) out.push_back(static_cast<std::uint32_t>(v));
+  return out;
+}
+
+std::vector<std::uint32_t> Session::panel_triangle_ids() const {
+  if (!remesher_) return {};
+  const std::vector<int> panel = triangulate_panels(remesher_->panels()).panel;
+  return std::vector<std::uint32_t>(panel.begin(), panel.end());
+}
+
+std::string Session::problems() {
+  return guarded([&] {
+    JsonWriter j;
+    j.begin_object().value("ok", true).value("message", "");
+    const QualityReport* q = quality();
+    const PanelMesh* pm = remesher_ ? &remesher_->panels() : nullptr;
+    j.begin_array("spikes");
+    if (q)
+      for (const int v : q->spike_vertex_ids)
+        for (int k = 0; k < 3; ++k) j.value(nullptr, pm->vertices[static_cast<size_t>(v)][k]);
+    j.end_array().begin_array("flippedEdges");
+    if (q)
+      for (const auto& e : q->flipped_edge_vertices)
+        for (const int v : e)
+          for (int k = 0; k < 3; ++k) j.value(nullptr, pm->vertices[static_cast<size_t>(v)][k]);
+    j.end_array().begin_array("invalidPanels");
+    if (q)
+      for (const int p : q->invalid_panel_ids) j.value(nullptr, p);
+    j.end_array().begin_array("unbuiltClusters");
+    if (pm)
+      for (const int c : pm->unbuilt_clusters) j.value(nullptr, c);
+    j.end_array().end_object();
+    return j.str();
+  });
+}
+
+std::string Session::report_json() {
+  return guarded([&]() -> std::string {
+    const QualityReport* q = quality();
+    if (!q) return "{}";
+    const Remesher& r = *remesher_;
+    const RemeshParams& p = r.params();
+    const PanelMesh& pm = r.panels();
+    JsonWriter j;
+    j.begin_object();
+    j.value("input", name_).value("mesh_vertices", mesh_.num_vertices()).value("triangles", mesh_.num_faces());
+    j.value("components", topology_.num_components);
+    j.begin_array("cleanup");
+    for (const std::string& m : cleanup_) j.value(nullptr, m);
+    j.end_array();
+    j.value("status", panels_status(pm, *q));
+    j.value("done", r.done());
+    j.value("requested_panels", p.panels).value("panels", q->panels).value("vertices", q->vertices);
+    write_quality_fields(j, *q);
+    j.value("invalid_panels_flagged", pm.num_invalid());
+    write_invalid_panels(j, pm, *q);
+    j.value("seed", static_cast<std::uint64_t>(p.seed));
+    j.value("seeding", p.seeding == SeedingMethod::Random ? "random" : "farthest");
+    j.begin_object("weights");
+    j.value("euclidean", p.weights.euclidean).value("l2", p.weights.l2).value("l21", p.weights.l21);
+    j.value("density", p.weights.density).value("boundary", p.weights.boundary);
+    j.end_object();
+    j.value("single_point_nodes", p.single_point_nodes).value("optimize_planes", p.optimize_planes);
+    j.begin_object("iterations");
+    j.value("lloyd", r.lloyd_iterations_done()).value("panel_rounds", r.panel_rounds_done());
+    j.value("lloyd_limit", p.lloyd_iterations).value("panel_rounds_limit", p.panel_rounds);
+    j.end_object();
+    j.value("expected_cluster_diameter", r.metric().diameter());
+    j.begin_object("timings_s");
+    j.value("prepare", prepare_seconds_).value("cluster", timings_.cluster).value("panels", timings_.panels);
+    j.value("quality", timings_.quality);
+    j.value("total", prepare_seconds_ + timings_.cluster + timings_.panels + timings_.quality);
+    j.end_object();
+    j.end_object();
+    return j.str();
+  });
+}
+
+std::string Session::obj_text() {
+  return guarded([&]() -> std::string {
+    const QualityReport* q = quality();
+    if (!q) return "";
+    const std::string comment = panels_obj_comment(name_, q->panels, remesher_->params().panels, q->vertices,
+                                                   remesher_->params().seed, q->invalid_panels);
+    return panels_obj(remesher_->panels(), comment);
+  });
+}
+
+std::string Session::parts_csv() const {
+  if (!remesher_) return parts_list_csv(PanelMesh{});
+  return parts_list_csv(remesher_->panels());
+}
+
+}  // namespace ff::wasm

@@ -1,0 +1,74 @@
+#pragma once
+// One designer's session in the browser: the loaded mesh, the parameters and the Remesher,
+// behind calls that never throw. Plain C++ over the core (bindings.cpp only converts types
+// for JavaScript), so everything the page can do is also callable from native code.
+//
+// Every failing call leaves the previous mesh, parameters and result as they were, and
+// answers with a Status JSON {"ok": false, "message": "..."} naming the problem.
+#include <array>
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/mesh/topology.h"
+#include "core/mesh/tri_mesh.h"
+#include "core/quality/report.h"
+#include "core/remesher.h"
+
+namespace ff::wasm {
+
+class Session {
+ public:
+  Session();
+  ~Session();
+  Session(const Session&) = delete;
+  Session& operator=(const Session&) = delete;
+
+  // MeshInfo JSON (wasm/flatfacet.d.ts).
+  std::string load_mesh(const std::string& name, std::string_view bytes);
+  std::string load_arrays(const std::string& name, const std::vector<double>& positions,
+                          const std::vector<std::uint32_t>& indices);
+  std::string load_shape(const std::string& name, int triangles);
+  // Status JSON. Warm-starts a solve under way or finished (Remesher::set_params).
+  std::string set_params(const std::string& params_json);
+  // Progress JSON.
+  std::string step();
+  bool done() const;
+
+  std::vector<float> input_positions() const;
+  std::vector<std::uint32_t> input_indices() const;
+  std::vector<std::int32_t> cluster_ids() const;
+  std::vector<double> panel_positions() const;
+  std::vector<std::uint32_t> panel_offsets() const;
+  std::vector<std::uint32_t> panel_indices() const;
+  std::vector<std::uint32_t> panel_triangles() const;
+  std::vector<std::uint32_t> panel_triangle_ids() const;
+  std::string problems();
+  std::string report_json();
+  std::string obj_text();  // empty without panels
+  std::string parts_csv() const;
+
+ private:
+  struct Timings {
+    double cluster = 0.0, panels = 0.0, quality = 0.0;
+  };
+  std::string load(const std::string& name, TriMesh raw, int input_triangles);
+  const QualityReport* quality();
+  void forget_result();
+
+  std::string name_;
+  TriMesh mesh_;  // cleaned
+  MeshTopology topology_;
+  std::vector<std::string> cleanup_;
+  RemeshParams params_;
+  std::unique_ptr<Remesher> remesher_;
+  std::optional<QualityReport> quality_;  // of the current panels, measured on demand
+  Timings timings_;                       // of the solve since the last load or parameter change
+  double prepare_seconds_ = 0.0;          // cleaning + topology of the loaded mesh
+};
+
+}  // namespace ff::wasm
