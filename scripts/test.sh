@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Builds and runs every test: smoke runs of the benchmark drivers, the native GoogleTest
-# suite and CLI checks (Release), and the same tests under AddressSanitizer +
-# UndefinedBehaviorSanitizer. Installs what is missing first (scripts/setup.sh).
+# suite and CLI checks (Release), the WebAssembly module under Node and the page in headless
+# Chromium (registered in the same ctest run), and the native tests again under
+# AddressSanitizer + UndefinedBehaviorSanitizer. Installs what is missing first
+# (scripts/setup.sh: apt packages, npm ci).
 # The last lines are ctest's summary, so CI reads the test count.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -10,14 +12,18 @@ jobs=$(nproc 2>/dev/null || echo 2)
 scripts/setup.sh
 
 echo "== native build (Release)"
-cmake -S . -B build/release -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake -S . -B build/release -DCMAKE_BUILD_TYPE=Release -DFF_WEB_TESTS=ON >/dev/null
 cmake --build build/release -j"$jobs"
 
 echo "== benchmark smoke runs"
 build/release/bench/bench_cluster --smoke
 build/release/bench/bench_remesh --smoke
 
-echo "== native tests"
+echo "== WebAssembly and web build (wasm modules, site in web/dist, strict type check)"
+npm run --silent build
+npm run --silent typecheck
+
+echo "== native, wasm (Node) and browser tests"
 ctest --test-dir build/release --output-on-failure -j"$jobs"
 
 echo "== sanitizer build (ASan + UBSan) of the core tests"

@@ -64,6 +64,10 @@ EMSCRIPTEN_BINDINGS(flatfacet) {
           "panelTriangles", +[](const Session& s) { return to_typed_array(s.panel_triangles(), "Uint32Array"); })
       .function(
           "panelTriangleIds", +[](const Session& s) { return to_typed_array(s.panel_triangle_ids(), "Uint32Array"); })
+      .function(
+          "cornerPositions", +[](const Session& s) { return to_typed_array(s.corner_positions(), "Float64Array"); })
+      .function(
+          "cornerPlanarity", +[](const Session& s) { return to_typed_array(s.corner_planarity(), "Float64Array"); })
       .function("problems", &Session::problems)
       .function("reportJson", &Session::report_json)
       .function("objText", &Session::obj_text)

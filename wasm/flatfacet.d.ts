@@ -83,6 +83,11 @@ export interface Session {
   // indices into panelPositions, and the panel of each triangle.
   panelTriangles(): Uint32Array;
   panelTriangleIds(): Uint32Array;
+  // "Before the fix": each panel vertex moved back to its mesh corner (same layout as
+  // panelPositions), i.e. the polygons a plain corner remeshing would give, and per panel how
+  // far those are from planar (max distance to the best-fit plane / panel diameter).
+  cornerPositions(): Float64Array;
+  cornerPlanarity(): Float64Array;
   problems(): string; // Problems JSON
   // The quality report (DESIGN.md 4 keys) of the current panels, as JSON text; "{}" without panels.
   reportJson(): string;

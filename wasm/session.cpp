@@ -7,6 +7,7 @@
 #include "core/mesh/clean.h"
 #include "core/mesh/mesh_io.h"
 #include "core/panels/panel_export.h"
+#include "core/quality/planarity.h"
 #include "core/quality/report_json.h"
 #include "core/remesh_params_json.h"
 #include "core/shapes/example_shapes.h"
@@ -257,6 +258,24 @@ std::vector<std::uint32_t> Session::panel_triangle_ids() const {
   if (!remesher_) return {};
   const std::vector<int> panel = triangulate_panels(remesher_->panels()).panel;
   return std::vector<std::uint32_t>(panel.begin(), panel.end());
+}
+
+std::vector<double> Session::corner_positions() const {
+  std::vector<double> out;
+  if (!remesher_) return out;
+  const PanelMesh& pm = remesher_->panels();
+  for (size_t v = 0; v < pm.vertices.size(); ++v) {
+    const int corner = v < pm.vertex_corner.size() ? pm.vertex_corner[v] : -1;
+    const Vec3& p =
+        corner >= 0 && corner < mesh_.num_vertices() ? mesh_.positions[static_cast<size_t>(corner)] : pm.vertices[v];
+    for (int k = 0; k < 3; ++k) out.push_back(p[k]);
+  }
+  return out;
+}
+
+std::vector<double> Session::corner_planarity() const {
+  if (!remesher_) return {};
+  return corner_polygon_planarity(mesh_, remesher_->panels());
 }
 
 std::string Session::problems() {

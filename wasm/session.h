@@ -47,6 +47,8 @@ class Session {
   std::vector<std::uint32_t> panel_indices() const;
   std::vector<std::uint32_t> panel_triangles() const;
   std::vector<std::uint32_t> panel_triangle_ids() const;
+  std::vector<double> corner_positions() const;
+  std::vector<double> corner_planarity() const;
   std::string problems();
   std::string report_json();
   std::string obj_text();  // empty without panels

@@ -1,6 +1,5 @@
 #include "core/quality/report.h"
 
-#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <climits>
@@ -10,6 +9,7 @@
 
 #include "core/panels/polygon2d.h"
 #include "core/quality/hausdorff.h"
+#include "core/quality/planarity.h"
 #include "core/util/error.h"
 
 namespace ff {
@@ -21,25 +21,6 @@ void check_size(size_t size, size_t expected, const char* what, const char* per)
     throw InputError(std::string("quality: ") + what + " has " + std::to_string(size) + " entries for " +
                      std::to_string(expected) + " " + per);
   }
-}
-
-// Max distance of the points to their least-squares plane / their diameter.
-double planarity(const std::vector<Vec3>& points) {
-  if (points.size() < 4) return 0.0;  // three points are always coplanar
-  Vec3 mean = Vec3::Zero();
-  for (const Vec3& p : points) mean += p;
-  mean /= static_cast<double>(points.size());
-  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
-  for (const Vec3& p : points) covariance += (p - mean) * (p - mean).transpose();
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance);
-  const Vec3 normal = solver.eigenvectors().col(0);  // eigenvalues ascend
-  double deviation = 0.0, diameter2 = 0.0;
-  for (size_t i = 0; i < points.size(); ++i) {
-    deviation = std::max(deviation, std::abs(normal.dot(points[i] - mean)));
-    for (size_t j = i + 1; j < points.size(); ++j)
-      diameter2 = std::max(diameter2, (points[i] - points[j]).squaredNorm());
-  }
-  return diameter2 > 0.0 ? deviation / std::sqrt(diameter2) : 0.0;
 }
 
 struct PanelTopology {
@@ -265,7 +246,7 @@ QualityReport measure_quality(const TriMesh& input, const MeshTopology& input_to
     const std::vector<Vec2> poly2d = panel_polygon_2d(panels, p, frame);
     std::vector<Vec3> points;
     for (int v : poly) points.push_back(panels.vertices[static_cast<size_t>(v)]);
-    r.max_planarity = std::max(r.max_planarity, planarity(points));
+    r.max_planarity = std::max(r.max_planarity, polygon_planarity(points));
 
     const bool simple = is_simple(poly2d, tol);
     const std::vector<Vec2> kernel = polygon_kernel(poly2d, tol);

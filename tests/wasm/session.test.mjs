@@ -51,6 +51,11 @@ test('a shape solves to valid, exactly planar panels with the requested count', 
   assert.equal(ids.length, expected);
   assert.equal(s.inputIndices().length, 3 * info.triangles);
   assert.equal(s.inputPositions().length, 3 * info.vertices);
+  // Before the fix: the polygons through the mesh corners bend on a saddle; after, none does.
+  const before = s.cornerPlanarity();
+  assert.equal(before.length, 60);
+  assert.ok(Math.max(...before) > 1e-3, `corner polygons bend by at most ${Math.max(...before)}`);
+  assert.equal(s.cornerPositions().length, s.panelPositions().length);
   const problems = json(s.problems());
   assert.deepEqual([problems.spikes, problems.flippedEdges, problems.invalidPanels], [[], [], []]);
   s.delete();

@@ -1,0 +1,22 @@
+#pragma once
+// Planarity of polygons: how far a polygon's vertices are from their least-squares plane,
+// relative to its size. For the panels (exact by construction: ~1e-15) and for the polygons
+// through their mesh corners, i.e. the panels before the planes are intersected: what a
+// plain cluster-corner remeshing (like VSA's extraction) would have to bend.
+#include <vector>
+
+#include "core/mesh/tri_mesh.h"
+#include "core/panels/panel_mesh.h"
+
+namespace ff {
+
+// Max distance of the points to their least-squares plane / their diameter; 0 for fewer than
+// four points.
+double polygon_planarity(const std::vector<Vec3>& points);
+
+// Per panel: polygon_planarity of its vertices moved back to their mesh corners
+// (PanelMesh::vertex_corner; a vertex without a corner keeps its position). Empty when the
+// panel mesh has no vertex_corner.
+std::vector<double> corner_polygon_planarity(const TriMesh& mesh, const PanelMesh& panels);
+
+}  // namespace ff
