@@ -130,10 +130,11 @@ bool PanelLayout::tilt_spike_planes() {
   const int before = num_invalid();
   MasterPlanes saved = planes_;
   planes_ = std::move(tilted);
-  rebuild_all();
+  rebuild_changed(saved.planes);
   if (num_invalid() < before) return true;
+  const std::vector<Plane> tilted_planes = planes_.planes;
   planes_ = std::move(saved);
-  rebuild_all();
+  rebuild_changed(tilted_planes);
   return false;
 }
 

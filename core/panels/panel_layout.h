@@ -90,6 +90,7 @@ class PanelLayout {
   void build_panel(int cluster);
   void rebuild(const std::vector<int>& clusters);
   void rebuild_all();
+  void rebuild_changed(const std::vector<Plane>& old);  // after planes_ changed from `old`
   std::vector<int> clusters_of_group(int group) const;
   std::vector<int> masters_of_node(size_t node) const;
   // A node's distinct master planes, sorted (at most three: one per cluster of its triangle).
