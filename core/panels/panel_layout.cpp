@@ -137,7 +137,8 @@ void PanelLayout::place_group_nodes(int g) {
     const auto same = std::find(masters.begin(), masters.end() - 1, masters.back());
     node_alias_[static_cast<size_t>(node)] = first + static_cast<int>(same - masters.begin());
     planes.clear();
-    for (int i = 0; i < masters.back().count; ++i) planes.push_back(planes_.planes[static_cast<size_t>(masters.back().m[i])]);
+    for (int i = 0; i < masters.back().count; ++i)
+      planes.push_back(planes_.planes[static_cast<size_t>(masters.back().m[i])]);
     VertexRuleResult r = closest_point_on_planes(planes, group.reference);
     if (group.has_wall && planes.size() <= 2 && touches_boundary(g, node)) {
       // On the border's wall when the wall crosses the planes at a clear angle.
@@ -219,8 +220,8 @@ void PanelLayout::build_panel(int c) {
     const int v = head(h);
     const int corner = graph_.corner_of_vertex[static_cast<size_t>(v)];
     if (corner >= 0) {
-      events.push_back({groups_.group_of_corner[static_cast<size_t>(corner)], v, run_begin,
-                        static_cast<int>(border.size())});
+      events.push_back(
+          {groups_.group_of_corner[static_cast<size_t>(corner)], v, run_begin, static_cast<int>(border.size())});
       run_begin = static_cast<int>(border.size());
     } else if (PanelGraph::other_side(topology_, labels_, h) == kBoundary) {
       border.push_back(v);
@@ -345,37 +346,6 @@ void PanelLayout::set_planes(std::vector<Plane> planes) {
   std::vector<Plane> old = std::move(planes_.planes);
   planes_.planes = std::move(planes);
   rebuild_changed(old);
-}
-
-// Node groups and panels are functions of the planes they use: only those a changed plane
-// reaches are placed and built again (later panel rounds relax a few planes among many).
-void PanelLayout::rebuild_changed(const std::vector<Plane>& old) {
-  const std::vector<Plane>& now = planes_.planes;
-  if (old.size() != now.size()) return rebuild_all();
-  std::vector<char> changed(now.size(), 0);
-  bool any = false;
-  for (size_t m = 0; m < now.size(); ++m) {
-    // Compared as values, so a NaN plane always counts as changed.
-    changed[m] = !(old[m].normal == now[m].normal && old[m].offset == now[m].offset);
-    any = any || changed[m];
-  }
-  if (!any) return;
-  std::vector<char> group_marked(groups_.groups.size(), 0), cluster_marked(polygons_.size(), 0);
-  for (size_t c = 0; c < polygons_.size(); ++c) {
-    if (!changed[static_cast<size_t>(planes_.master_of[c])]) continue;
-    cluster_marked[c] = 1;
-    for (int g : groups_of_cluster_[c]) group_marked[static_cast<size_t>(g)] = 1;
-  }
-  for (size_t g = 0; g < group_marked.size(); ++g) {
-    if (!group_marked[g]) continue;
-    place_group_nodes(static_cast<int>(g));
-    for (int c : groups_.groups[g].clusters) {
-      if (c != kBoundary) cluster_marked[static_cast<size_t>(c)] = 1;
-    }
-  }
-  for (size_t c = 0; c < polygons_.size(); ++c) {
-    if (cluster_marked[c]) build_panel(static_cast<int>(c));
-  }
 }
 
 PanelMesh PanelLayout::to_panel_mesh(const FaceData& frame) const {
