@@ -47,22 +47,32 @@ std::vector<Pairing> node_pairings(int k) {
 Pairing fan_pairing(int k) { return fan_from(k, k - 1); }
 
 std::vector<int> triangles_around(const Pairing& pairing, int k, int i) {
+  std::vector<int> out;
+  triangles_around(pairing, k, i, out);
+  return out;
+}
+
+void triangles_around(const Pairing& pairing, int k, int i, std::vector<int>& out) {
   // Order by the offset (mod k) of the triangle's other two positions from i: the triangle
-  // through i+1 has the smallest, the one through i-1 the largest.
-  std::vector<std::pair<int, int>> keyed;
+  // through i+1 has the smallest, the one through i-1 the largest. The offsets are distinct
+  // (a pairing is a triangulation), so an insertion sort by them gives that order.
+  const auto offset = [&](int t) {
+    int lo = k;
+    for (int p : pairing[static_cast<size_t>(t)]) {
+      if (p != i) lo = std::min(lo, ((p - i) % k + k) % k);
+    }
+    return lo;
+  };
+  out.clear();
   for (size_t t = 0; t < pairing.size(); ++t) {
     const NodeTriangle& tri = pairing[t];
     if (tri[0] != i && tri[1] != i && tri[2] != i) continue;
-    int lo = k;
-    for (int p : tri) {
-      if (p != i) lo = std::min(lo, ((p - i) % k + k) % k);
-    }
-    keyed.emplace_back(lo, static_cast<int>(t));
+    const int key = offset(static_cast<int>(t));
+    size_t at = out.size();
+    out.push_back(static_cast<int>(t));
+    for (; at > 0 && offset(out[at - 1]) > key; --at) out[at] = out[at - 1];
+    out[at] = static_cast<int>(t);
   }
-  std::sort(keyed.begin(), keyed.end());
-  std::vector<int> out;
-  for (const auto& [key, t] : keyed) out.push_back(t);
-  return out;
 }
 
 }  // namespace ff

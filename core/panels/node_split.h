@@ -23,5 +23,7 @@ Pairing fan_pairing(int k);
 // The triangles of `pairing` containing position i, in the order a panel's boundary meets
 // them: from the one with position i+1 to the one with position i-1 (mod k).
 std::vector<int> triangles_around(const Pairing& pairing, int k, int i);
+// The same into `out` (cleared first), for the hot loop that lays out every panel.
+void triangles_around(const Pairing& pairing, int k, int i, std::vector<int>& out);
 
 }  // namespace ff

@@ -1,6 +1,6 @@
 // The fixes a PanelLayout can make without reclustering: switching pairings (paper fig. 6),
 // tilting spike planes (2.3), trying new planes under a validity guard, grouping the corners
-// of flipped chains, and single-point nodes (2.2).
+// of flipped chains, single-point nodes (2.2), and the partial rebuild after plane changes.
 #include <Eigen/Dense>
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -130,10 +130,11 @@ bool PanelLayout::tilt_spike_planes() {
   const int before = num_invalid();
   MasterPlanes saved = planes_;
   planes_ = std::move(tilted);
-  rebuild_all();
+  rebuild_changed(saved.planes);
   if (num_invalid() < before) return true;
+  const std::vector<Plane> tilted_planes = planes_.planes;
   planes_ = std::move(saved);
-  rebuild_all();
+  rebuild_changed(tilted_planes);
   return false;
 }
 
@@ -194,6 +195,37 @@ std::vector<std::pair<int, int>> PanelLayout::reversed_chains() const {
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
+}
+
+// Node groups and panels are functions of the planes they use: only those a changed plane
+// reaches are placed and built again (later panel rounds relax a few planes among many).
+void PanelLayout::rebuild_changed(const std::vector<Plane>& old) {
+  const std::vector<Plane>& now = planes_.planes;
+  if (old.size() != now.size()) return rebuild_all();
+  std::vector<char> changed(now.size(), 0);
+  bool any = false;
+  for (size_t m = 0; m < now.size(); ++m) {
+    // Compared as values, so a NaN plane always counts as changed.
+    changed[m] = !(old[m].normal == now[m].normal && old[m].offset == now[m].offset);
+    any = any || changed[m];
+  }
+  if (!any) return;
+  std::vector<char> group_marked(groups_.groups.size(), 0), cluster_marked(polygons_.size(), 0);
+  for (size_t c = 0; c < polygons_.size(); ++c) {
+    if (!changed[static_cast<size_t>(planes_.master_of[c])]) continue;
+    cluster_marked[c] = 1;
+    for (int g : groups_of_cluster_[c]) group_marked[static_cast<size_t>(g)] = 1;
+  }
+  for (size_t g = 0; g < group_marked.size(); ++g) {
+    if (!group_marked[g]) continue;
+    place_group_nodes(static_cast<int>(g));
+    for (int c : groups_.groups[g].clusters) {
+      if (c != kBoundary) cluster_marked[static_cast<size_t>(c)] = 1;
+    }
+  }
+  for (size_t c = 0; c < polygons_.size(); ++c) {
+    if (cluster_marked[c]) build_panel(static_cast<int>(c));
+  }
 }
 
 }  // namespace ff

@@ -99,20 +99,28 @@ bool PanelLayout::touches_boundary(int g, int node) const {
   return false;
 }
 
-std::vector<int> PanelLayout::masters_of_node(size_t node) const {
+PanelLayout::NodeMasters PanelLayout::node_masters(size_t node) const {
   const int g = node_group_[node];
   const NodeGroup& group = groups_.groups[static_cast<size_t>(g)];
   const NodeTriangle& tri =
       pairing_[static_cast<size_t>(g)][node - static_cast<size_t>(node_offset_[static_cast<size_t>(g)])];
-  std::vector<int> masters;
+  NodeMasters out;
   for (int p : tri) {
     const int c = group.clusters[static_cast<size_t>(p)];
     if (c == kBoundary) continue;
     const int m = planes_.master_of[static_cast<size_t>(c)];
-    if (std::find(masters.begin(), masters.end(), m) == masters.end()) masters.push_back(m);
+    if (std::find(out.m, out.m + out.count, m) == out.m + out.count) out.m[out.count++] = m;
   }
-  std::sort(masters.begin(), masters.end());
-  return masters;
+  // Sorted by hand: three at most (std::sort here trips GCC's array-bounds warning).
+  for (int i = 1; i < out.count; ++i) {
+    for (int j = i; j > 0 && out.m[j - 1] > out.m[j]; --j) std::swap(out.m[j - 1], out.m[j]);
+  }
+  return out;
+}
+
+std::vector<int> PanelLayout::masters_of_node(size_t node) const {
+  const NodeMasters m = node_masters(node);
+  return std::vector<int>(m.m, m.m + m.count);
 }
 
 // Each node: the vertex rule on the distinct master planes of its triangle's clusters (the
@@ -120,14 +128,17 @@ std::vector<int> PanelLayout::masters_of_node(size_t node) const {
 void PanelLayout::place_group_nodes(int g) {
   const NodeGroup& group = groups_.groups[static_cast<size_t>(g)];
   const int first = node_offset_[static_cast<size_t>(g)];
-  std::vector<std::vector<int>> masters;
+  std::vector<NodeMasters>& masters = scratch_masters_;
+  std::vector<Plane>& planes = scratch_planes_;
+  masters.clear();
   for (int node = first; node < node_offset_[static_cast<size_t>(g) + 1]; ++node) {
     node_group_[static_cast<size_t>(node)] = g;
-    masters.push_back(masters_of_node(static_cast<size_t>(node)));
+    masters.push_back(node_masters(static_cast<size_t>(node)));
     const auto same = std::find(masters.begin(), masters.end() - 1, masters.back());
     node_alias_[static_cast<size_t>(node)] = first + static_cast<int>(same - masters.begin());
-    std::vector<Plane> planes;
-    for (int m : masters.back()) planes.push_back(planes_.planes[static_cast<size_t>(m)]);
+    planes.clear();
+    for (int i = 0; i < masters.back().count; ++i)
+      planes.push_back(planes_.planes[static_cast<size_t>(masters.back().m[i])]);
     VertexRuleResult r = closest_point_on_planes(planes, group.reference);
     if (group.has_wall && planes.size() <= 2 && touches_boundary(g, node)) {
       // On the border's wall when the wall crosses the planes at a clear angle.
@@ -163,13 +174,13 @@ double PanelLayout::pairing_cost(int g) const {
   const NodeGroup& group = groups_.groups[static_cast<size_t>(g)];
   const double penalty = 1e3 * options_.diameter;
   double cost = 0.0;
-  std::vector<std::vector<int>> seen;
+  std::vector<NodeMasters> seen;
   for (int node = node_offset_[static_cast<size_t>(g)]; node < node_offset_[static_cast<size_t>(g) + 1]; ++node) {
     cost += (node_point_[static_cast<size_t>(node)] - group.reference).norm();
     if (!node_exact_[static_cast<size_t>(node)]) cost += penalty;
-    std::vector<int> masters = masters_of_node(static_cast<size_t>(node));
+    const NodeMasters masters = node_masters(static_cast<size_t>(node));
     if (std::find(seen.begin(), seen.end(), masters) != seen.end()) cost += penalty;
-    seen.push_back(std::move(masters));
+    seen.push_back(masters);
   }
   return cost;
 }
@@ -184,7 +195,9 @@ std::vector<int> PanelLayout::clusters_of_group(int g) const {
 
 void PanelLayout::build_panel(int c) {
   PanelPolygon& poly = polygons_[static_cast<size_t>(c)];
-  poly = PanelPolygon{};
+  // Cleared, not replaced: a rebuild reuses the vectors' memory (layouts rebuild panels
+  // many times per round).
+  poly.points.clear(), poly.node.clear(), poly.corner.clear(), poly.reference.clear();
   PanelIssues& issues = issues_[static_cast<size_t>(c)];
   issues = PanelIssues{};
   const std::vector<int>& loop = graph_.loops[static_cast<size_t>(c)];
@@ -196,44 +209,55 @@ void PanelLayout::build_panel(int c) {
   const auto head = [&](int h) {
     return mesh_.triangles[static_cast<size_t>(h / 3)][static_cast<size_t>((h % 3 + 1) % 3)];
   };
-  // The node groups along the loop, with the border vertices met before each.
-  struct Event {
-    int group;
-    int vertex;
-    std::vector<int> border;
-  };
-  std::vector<Event> events;
-  std::vector<int> run;
+  // The node groups along the loop, with the border vertices met before each: a range
+  // [border, border_end) of `border` (the border vertices in loop order).
+  using Event = ScratchEvent;
+  std::vector<Event>& events = scratch_events_;
+  std::vector<int>& border = scratch_border_;
+  events.clear(), border.clear();
+  int run_begin = 0;
   for (int h : loop) {
     const int v = head(h);
     const int corner = graph_.corner_of_vertex[static_cast<size_t>(v)];
     if (corner >= 0) {
-      events.push_back({groups_.group_of_corner[static_cast<size_t>(corner)], v, std::move(run)});
-      run.clear();
+      events.push_back(
+          {groups_.group_of_corner[static_cast<size_t>(corner)], v, run_begin, static_cast<int>(border.size())});
+      run_begin = static_cast<int>(border.size());
     } else if (PanelGraph::other_side(topology_, labels_, h) == kBoundary) {
-      run.push_back(v);
+      border.push_back(v);
     }
   }
+  const int run_end = static_cast<int>(border.size());  // the vertices after the last corner
   // The two corners of a group meet the loop one after the other (the short chain between
   // them): the group's nodes come once.
-  std::vector<Event> kept;
+  size_t kept = 0;
   for (size_t i = 0; i < events.size(); ++i) {
-    if (i > 0 && events[i].group == kept.back().group && events[i].border.empty()) continue;
-    kept.push_back(std::move(events[i]));
+    const bool empty = events[i].border == events[i].border_end;
+    if (i > 0 && events[i].group == events[kept - 1].group && empty) continue;
+    events[kept++] = events[i];
   }
-  if (kept.size() > 1 && kept.front().group == kept.back().group && kept.front().border.empty()) {
-    kept.front().border = std::move(kept.back().border);
-    kept.pop_back();
+  events.resize(kept);
+  if (events.size() > 1 && events.front().group == events.back().group &&
+      events.front().border == events.front().border_end) {
+    events.front().border = events.back().border;
+    events.front().border_end = events.back().border_end;
+    events.pop_back();
   }
 
   // Nodes, remembering where each border run goes.
-  std::vector<std::pair<size_t, std::vector<int>>> runs;  // (insert before polygon vertex i, run)
-  for (Event& e : kept) {
-    if (!e.border.empty()) runs.emplace_back(poly.points.size(), std::move(e.border));
+  struct Run {
+    size_t at;  // insert before polygon vertex `at`
+    int begin, end;
+  };
+  std::vector<Run> runs;
+  std::vector<int>& around = scratch_triangles_;
+  for (const Event& e : events) {
+    if (e.border != e.border_end) runs.push_back({poly.points.size(), e.border, e.border_end});
     const NodeGroup& group = groups_.groups[static_cast<size_t>(e.group)];
     const int i = position_of(group.clusters, c);
     const int size = static_cast<int>(group.clusters.size());
-    for (int t : triangles_around(pairing_[static_cast<size_t>(e.group)], size, i)) {
+    triangles_around(pairing_[static_cast<size_t>(e.group)], size, i, around);
+    for (int t : around) {
       const int node = node_alias_[static_cast<size_t>(node_offset_[static_cast<size_t>(e.group)] + t)];
       if (!poly.node.empty() && poly.node.back() == node) continue;  // one point, one vertex
       poly.points.push_back(node_point_[static_cast<size_t>(node)]);
@@ -245,14 +269,15 @@ void PanelLayout::build_panel(int c) {
   if (poly.node.size() > 1 && poly.node.front() == poly.node.back() && runs.empty()) {
     poly.points.pop_back(), poly.node.pop_back(), poly.corner.pop_back(), poly.reference.pop_back();
   }
-  if (!run.empty()) runs.emplace_back(poly.points.size(), std::move(run));  // a loop with no corner
+  if (run_end > run_begin) runs.push_back({poly.points.size(), run_begin, run_end});  // a loop with no corner
   // Border vertices, last run first so earlier insert positions stay valid.
   const size_t fixed = poly.points.size();
   const double tolerance = options_.border_tolerance * options_.diameter;
   for (auto it = runs.rbegin(); it != runs.rend(); ++it) {
-    const size_t at = it->first;
+    const size_t at = it->at;
     std::vector<Vec3> projected;
-    for (int v : it->second) projected.push_back(plane.project(positions_[static_cast<size_t>(v)]));
+    for (int j = it->begin; j < it->end; ++j)
+      projected.push_back(plane.project(positions_[static_cast<size_t>(border[static_cast<size_t>(j)])]));
     const std::vector<int> keep =
         fixed == 0 ? thin_closed_border(projected, tolerance)
                    : thin_border(poly.points[(at + fixed - 1) % fixed], projected, poly.points[at % fixed], tolerance,
@@ -261,7 +286,7 @@ void PanelLayout::build_panel(int c) {
     std::vector<int> corners;
     for (int j : keep) {
       points.push_back(projected[static_cast<size_t>(j)]);
-      corners.push_back(it->second[static_cast<size_t>(j)]);
+      corners.push_back(border[static_cast<size_t>(it->begin + j)]);
       references.push_back(positions_[static_cast<size_t>(corners.back())]);
     }
     const long where = static_cast<long>(at);
@@ -318,8 +343,9 @@ std::vector<char> PanelLayout::spike_nodes() const {
 }
 
 void PanelLayout::set_planes(std::vector<Plane> planes) {
+  std::vector<Plane> old = std::move(planes_.planes);
   planes_.planes = std::move(planes);
-  rebuild_all();
+  rebuild_changed(old);
 }
 
 PanelMesh PanelLayout::to_panel_mesh(const FaceData& frame) const {

@@ -90,8 +90,18 @@ class PanelLayout {
   void build_panel(int cluster);
   void rebuild(const std::vector<int>& clusters);
   void rebuild_all();
+  void rebuild_changed(const std::vector<Plane>& old);  // after planes_ changed from `old`
   std::vector<int> clusters_of_group(int group) const;
   std::vector<int> masters_of_node(size_t node) const;
+  // A node's distinct master planes, sorted (at most three: one per cluster of its triangle).
+  struct NodeMasters {
+    int m[3] = {-1, -1, -1};
+    int count = 0;
+    bool operator==(const NodeMasters& o) const {
+      return count == o.count && m[0] == o.m[0] && m[1] == o.m[1] && m[2] == o.m[2];
+    }
+  };
+  NodeMasters node_masters(size_t node) const;
   bool touches_boundary(int group, int node) const;
 
   const TriMesh& mesh_;
@@ -118,6 +128,14 @@ class PanelLayout {
   std::vector<std::vector<int>> groups_of_cluster_;
   std::vector<PanelPolygon> polygons_;
   std::vector<PanelIssues> issues_;
+  // build_panel()'s working memory, kept between calls (it runs thousands of times a round).
+  std::vector<int> scratch_triangles_, scratch_border_;
+  struct ScratchEvent {
+    int group, vertex, border, border_end;
+  };
+  std::vector<ScratchEvent> scratch_events_;
+  std::vector<NodeMasters> scratch_masters_;  // place_group_nodes()
+  std::vector<Plane> scratch_planes_;
 };
 
 }  // namespace ff

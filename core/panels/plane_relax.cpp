@@ -2,8 +2,75 @@
 
 #include <Eigen/Dense>
 #include <Eigen/Eigenvalues>
+#include <cmath>
+#include <limits>
+#include <utility>
 
 namespace ff {
+
+namespace {
+
+// Eigen's LDLT<Matrix3d>(A).solve(b) step for step: the same pivots and the same operations
+// in the same order (so the same bits, which the chaotic panel phase needs to stay as it
+// was), without the generic machinery around them: the node solve runs once per node and
+// iteration, 80 times per relaxation. Eigen 3.4, LDLT.h: ldlt_inplace<Lower>::unblocked
+// and _solve_impl_transposed (unrolled triangular solves).
+Vec3 ldlt_solve3(const Eigen::Matrix3d& A, const Vec3& b) {
+  double m[3][3];  // the lower triangle: L below the diagonal, D on it
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j <= i; ++j) m[i][j] = A(i, j);
+  }
+  int t[3] = {0, 1, 2};
+  for (int k = 0; k < 3; ++k) {
+    int p = k;  // the largest diagonal entry left (the first on ties)
+    double best = std::abs(m[k][k]);
+    for (int j = k + 1; j < 3; ++j) {
+      if (std::abs(m[j][j]) > best) best = std::abs(m[j][j]), p = j;
+    }
+    t[k] = p;
+    if (p != k) {
+      for (int j = 0; j < k; ++j) std::swap(m[k][j], m[p][j]);
+      for (int i = p + 1; i < 3; ++i) std::swap(m[i][k], m[i][p]);
+      std::swap(m[k][k], m[p][p]);
+      for (int i = k + 1; i < p; ++i) std::swap(m[i][k], m[p][i]);
+    }
+    if (k > 0) {
+      double temp[2];
+      for (int j = 0; j < k; ++j) temp[j] = m[j][j] * m[k][j];
+      m[k][k] -= k == 1 ? m[k][0] * temp[0] : m[k][0] * temp[0] + m[k][1] * temp[1];
+      if (k == 1) m[2][1] -= m[2][0] * temp[0];
+    }
+    const double pivot = m[k][k];
+    const bool valid = std::abs(pivot) > 0.0;
+    if (k == 0 && !valid) {  // a zero diagonal: Eigen stops here with no transpositions
+      t[0] = 0, t[1] = 1, t[2] = 2;
+      break;
+    }
+    if (valid) {
+      for (int i = k + 1; i < 3; ++i) m[i][k] /= pivot;
+    }
+  }
+  double y[3] = {b.x(), b.y(), b.z()};
+  for (int k = 0; k < 3; ++k) {
+    if (t[k] != k) std::swap(y[k], y[t[k]]);
+  }
+  y[1] -= m[1][0] * y[0];
+  y[2] -= m[2][0] * y[0] + m[2][1] * y[1];
+  for (int i = 0; i < 3; ++i) {
+    if (std::abs(m[i][i]) > std::numeric_limits<double>::min())
+      y[i] /= m[i][i];
+    else
+      y[i] = 0.0;
+  }
+  y[1] -= m[2][1] * y[2];
+  y[0] -= m[1][0] * y[1] + m[2][0] * y[2];
+  for (int k = 2; k >= 0; --k) {
+    if (t[k] != k) std::swap(y[k], y[t[k]]);
+  }
+  return Vec3(y[0], y[1], y[2]);
+}
+
+}  // namespace
 
 std::vector<Plane> relax_planes(const std::vector<NodeConstraint>& nodes, const std::vector<ClusterMoments>& moments,
                                 const std::vector<Plane>& start, const RelaxOptions& options,
@@ -42,7 +109,7 @@ std::vector<Plane> relax_planes(const std::vector<NodeConstraint>& nodes, const 
         A += w * p.normal * p.normal.transpose();
         b += w * p.offset * p.normal;
       }
-      x[k] = A.ldlt().solve(b);
+      x[k] = ldlt_solve3(A, b);
     }
     // Planes: least squares over their faces (exact moments) and their nodes (weight W w_i),
     // the scatter formed about the common centre (two passes) to keep its precision at large W.

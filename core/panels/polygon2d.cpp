@@ -25,9 +25,10 @@ double segment_distance(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2&
 }
 
 // Keeps the part of convex `poly` where n.(p - a) >= offset (Sutherland-Hodgman, one plane).
-std::vector<Vec2> clip_half_plane(const std::vector<Vec2>& poly, const Vec2& a, const Vec2& n, double offset) {
-  std::vector<Vec2> out;
-  out.reserve(poly.size() + 1);
+// Clips `poly` to n.(p - a) >= offset into `out` (cleared first; its capacity is reused).
+void clip_half_plane(const std::vector<Vec2>& poly, const Vec2& a, const Vec2& n, double offset,
+                     std::vector<Vec2>& out) {
+  out.clear();
   const size_t m = poly.size();
   for (size_t i = 0; i < m; ++i) {
     const Vec2& p = poly[i];
@@ -40,7 +41,6 @@ std::vector<Vec2> clip_half_plane(const std::vector<Vec2>& poly, const Vec2& a, 
     }
   }
   if (out.size() > 1 && out.front() == out.back()) out.pop_back();
-  return out;
 }
 
 std::vector<std::array<int, 3>> fan(int k) {
@@ -155,12 +155,17 @@ std::vector<Vec2> polygon_kernel(const std::vector<Vec2>& ccw_polygon, double to
   }
   // The kernel lies inside the polygon, hence inside its bounding box.
   std::vector<Vec2> kernel = {lo, Vec2(hi.x(), lo.y()), hi, Vec2(lo.x(), hi.y())};
+  // Two buffers in turn: a clip per edge without an allocation per clip.
+  kernel.reserve(k + 4);
+  std::vector<Vec2> clipped;
+  clipped.reserve(k + 4);
   for (size_t i = 0; i < k && !kernel.empty(); ++i) {
     const Vec2& a = ccw_polygon[i];
     const Vec2 d = at(ccw_polygon, i + 1) - a;
     const double len = d.norm();
     if (len <= 0.0) continue;
-    kernel = clip_half_plane(kernel, a, Vec2(-d.y(), d.x()) / len, tol);  // inward = left
+    clip_half_plane(kernel, a, Vec2(-d.y(), d.x()) / len, tol, clipped);  // inward = left
+    kernel.swap(clipped);
   }
   if (kernel.size() < 3 || signed_area(kernel) <= tol * tol) return {};
   return kernel;
