@@ -1,0 +1,40 @@
+// Browser benchmark: hyperboloid_s4.off (50k triangles) into 500 panels in the real page
+// (headless Debian Chromium, the wasm core in its worker), timed in the worker from the first
+// step to the result, over a few cold solves. Needs the built site: `npm run build` first.
+//   node bench/browser_bench.mjs [--panels N] [--runs R]
+import { launchBrowser, openPage, remesh, setPanels, solveAfter, startServer, waitForDone } from '../tests/browser/harness.mjs';
+
+const args = process.argv.slice(2);
+const option = (name, fallback) => {
+  const index = args.indexOf(name);
+  return index >= 0 && args[index + 1] ? Number(args[index + 1]) : fallback;
+};
+const panels = option('--panels', 500);
+const runs = option('--runs', 3);
+
+const server = await startServer();
+const browser = await launchBrowser();
+try {
+  const { page, errors } = await openPage(browser, server.url); // opens hyperboloid_s4 by default
+  await waitForDone(page);
+  if ((await page.getByLabel('Example', { exact: true }).inputValue()) !== 'hyperboloid_s4') throw new Error('the default example is not hyperboloid_s4');
+  await setPanels(page, panels);
+  await solveAfter(page, () => remesh(page), 300_000); // warm-up: a warm start, and wasm tier-up
+  const worker = [];
+  const core = [];
+  for (let run = 0; run < runs; run++) {
+    // Identical parameters solve afresh (a new session), so every run is a cold solve.
+    const made = await solveAfter(page, () => remesh(page), 300_000);
+    if (made !== panels) throw new Error(`asked for ${panels} panels, got ${made}`);
+    const times = await page.locator('#stats').evaluate((element) => ({ worker: Number(element.dataset.solveSeconds), core: Number(element.dataset.coreSeconds) }));
+    worker.push(times.worker);
+    core.push(times.core);
+  }
+  if (errors.length) throw new Error(errors.join('\n'));
+  const median = (values) => [...values].sort((a, b) => a - b)[Math.floor(values.length / 2)];
+  console.log(`browser: hyperboloid_s4.off -> ${panels} panels, ${runs} cold solves in the page's worker after one warm-up`);
+  console.log(`browser: worker solve ${median(worker).toFixed(3)} s median (runs: ${worker.map((t) => t.toFixed(3)).join(', ')}); core timings_s.total ${median(core).toFixed(3)} s median`);
+} finally {
+  await browser.close();
+  await server.close();
+}

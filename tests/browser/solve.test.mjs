@@ -1,0 +1,289 @@
+// The designer's page end to end, in headless Chromium against the built site (web/dist):
+// examples, remesh, exports, uploads, bad files, cancel, a painting main thread, screenshots.
+import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
+import { join } from 'node:path';
+import { after, before, test } from 'node:test';
+import { wavyGridGlb } from './glb.mjs';
+import {
+  distinctColours,
+  download,
+  errorAfter,
+  launchBrowser,
+  maxPlanarity,
+  outcomes,
+  openPage,
+  parseObj,
+  remesh,
+  screenshot,
+  selectExample,
+  setPanels,
+  sharedMeshes,
+  solveAfter,
+  startServer,
+  statusText,
+  waitForDone,
+  waitForSolving,
+  waitForStatus,
+} from './harness.mjs';
+
+let server;
+let browser;
+before(async () => {
+  server = await startServer();
+  browser = await launchBrowser();
+});
+after(async () => {
+  await browser?.close();
+  await server?.close();
+});
+
+// Every test gets a fresh context and ends with no page or console errors.
+async function withPage(run) {
+  const { context, page, errors } = await openPage(browser, server.url);
+  try {
+    await run(page);
+    assert.deepEqual(errors, [], 'no page or console errors');
+  } finally {
+    await context.close();
+  }
+}
+
+test('an example remeshes to the requested count; the OBJ is planar and the parts list matches', () =>
+  withPage(async (page) => {
+    assert.equal(await waitForDone(page), 300, 'the default example solves at start');
+    await screenshot(page, 'hyperboloid-300');
+    assert.equal(await solveAfter(page, () => selectExample(page, 'saddle')), 120);
+    await setPanels(page, 80);
+    assert.equal(await solveAfter(page, () => remesh(page)), 80);
+    assert.match(await page.locator('#stats').textContent(), /Panels\s*80/);
+
+    const obj = await download(page, 'Export OBJ');
+    assert.equal(obj.name, 'saddle-panels.obj');
+    const mesh = parseObj(obj.text);
+    assert.equal(mesh.faces.length, 80, 'one f line per panel');
+    assert.ok(mesh.faces.every((face) => face.length >= 3));
+    const planarity = maxPlanarity(mesh);
+    assert.ok(planarity <= 1e-9, `every panel planar (max ${planarity})`);
+
+    const parts = await download(page, 'Export parts list');
+    assert.equal(parts.name, 'saddle-parts.csv');
+    const rows = parts.text.trim().split('\n');
+    assert.match(rows[0], /^panel,/, 'a header row');
+    assert.equal(rows.filter((row) => /^\d+,/.test(row)).length, 80, 'one row per panel');
+    await screenshot(page, 'saddle-80');
+  }));
+
+test('a mesh opened with "Open mesh" (OFF, then GLB) or dropped on the view is solved', () =>
+  withPage(async (page) => {
+    await waitForDone(page);
+    await setPanels(page, 60);
+    assert.equal(await solveAfter(page, () => page.getByLabel('Open mesh').setInputFiles(join(sharedMeshes, 'bumpy.off'))), 60);
+    assert.match(await page.locator('#mesh-title').textContent(), /bumpy\.off/);
+    assert.match(await page.locator('#mesh-details').textContent(), /2,496 triangles/);
+    const obj = await download(page, 'Export OBJ');
+    assert.equal(obj.name, 'bumpy-panels.obj');
+    assert.equal(parseObj(obj.text).faces.length, 60);
+
+    const glb = wavyGridGlb(16);
+    await setPanels(page, 24);
+    const open = () => page.getByLabel('Open mesh').setInputFiles({ name: 'canopy.glb', mimeType: 'model/gltf-binary', buffer: glb.bytes });
+    assert.equal(await solveAfter(page, open), 24);
+    assert.match(await page.locator('#mesh-details').textContent(), new RegExp(`${glb.triangles} triangles`));
+    const canopy = parseObj((await download(page, 'Export OBJ')).text);
+    // The node's scale (10) and translation (5, 0, -3) reach the core: x spans 5..15.
+    const xs = canopy.vertices.map((v) => v[0]);
+    assert.ok(Math.min(...xs) > 4.9 && Math.max(...xs) < 15.1 && Math.max(...xs) - Math.min(...xs) > 9, `world coordinates (x in ${Math.min(...xs)}..${Math.max(...xs)})`);
+    await screenshot(page, 'uploaded-glb');
+
+    // Dropped on the viewport: a generated OFF (a dome over a 12 x 12 grid).
+    const cells = 12;
+    const lines = [];
+    for (let j = 0; j <= cells; j++) for (let i = 0; i <= cells; i++) lines.push(`${i} ${j} ${(3 - ((i - 6) ** 2 + (j - 6) ** 2) / 24).toFixed(6)}`);
+    const faces = [];
+    for (let j = 0; j < cells; j++) {
+      for (let i = 0; i < cells; i++) {
+        const a = j * (cells + 1) + i;
+        faces.push(`3 ${a} ${a + 1} ${a + cells + 2}`, `3 ${a} ${a + cells + 2} ${a + cells + 1}`);
+      }
+    }
+    const off = `OFF\n${lines.length} ${faces.length} 0\n${lines.join('\n')}\n${faces.join('\n')}\n`;
+    await setPanels(page, 12);
+    const drop = async () => {
+      const dataTransfer = await page.evaluateHandle((text) => {
+        const transfer = new DataTransfer();
+        transfer.items.add(new File([text], 'dome.off', { type: 'text/plain' }));
+        return transfer;
+      }, off);
+      await page.dispatchEvent('#viewport', 'dragover', { dataTransfer });
+      await page.dispatchEvent('#viewport', 'drop', { dataTransfer });
+    };
+    assert.equal(await solveAfter(page, drop), 12);
+    assert.match(await page.locator('#mesh-title').textContent(), /dome\.off/);
+    assert.match(await page.locator('#mesh-details').textContent(), /288 triangles/);
+    assert.equal(await page.locator('#drop-hint').isHidden(), true, 'the drop hint goes away');
+  }));
+
+test('a bad file gives a clear message and the previous design keeps working', () =>
+  withPage(async (page) => {
+    await waitForDone(page);
+    await solveAfter(page, () => selectExample(page, 'barrel_vault'));
+    const garbage = Buffer.from(Array.from({ length: 4096 }, (_, i) => (i * 7919 + 13) % 256));
+    const message = await errorAfter(page, () => page.getByLabel('Open mesh').setInputFiles({ name: 'bad.obj', mimeType: 'application/octet-stream', buffer: garbage }));
+    assert.match(message, /^Error/);
+    assert.match(message, /bad\.obj/, 'the message names the file');
+    assert.ok(message.length > 'Error: bad.obj'.length + 5, `the message says what is wrong: ${message}`);
+    assert.match(await page.locator('#mesh-title').textContent(), /Barrel vault/, 'the previous mesh stays loaded');
+    assert.equal(await page.getByLabel('Example', { exact: true }).inputValue(), 'barrel_vault');
+    assert.equal(await page.getByRole('button', { name: 'Export OBJ' }).isEnabled(), true, 'the previous result can still be exported');
+    await setPanels(page, 50);
+    assert.equal(await solveAfter(page, () => remesh(page)), 50);
+    // An empty file, a broken GLB, too many panels: clear messages too, and nothing is lost.
+    const empty = await errorAfter(page, () => page.getByLabel('Open mesh').setInputFiles({ name: 'empty.off', mimeType: 'text/plain', buffer: Buffer.alloc(0) }));
+    assert.match(empty, /^Error: empty\.off: .*empty/);
+    const glb = await errorAfter(page, () => page.getByLabel('Open mesh').setInputFiles({ name: 'broken.glb', mimeType: 'model/gltf-binary', buffer: Buffer.from('glTF not really') }));
+    assert.match(glb, /^Error: broken\.glb/);
+    await setPanels(page, 99999);
+    assert.match(await errorAfter(page, () => remesh(page)), /^Error: .*\S/);
+    await setPanels(page, 50);
+    assert.equal(await solveAfter(page, () => remesh(page)), 50);
+  }));
+
+test('Cancel answers at once during a solve, and the page keeps working', () =>
+  withPage(async (page) => {
+    await waitForDone(page);
+    await setPanels(page, 500);
+    await remesh(page);
+    await waitForSolving(page);
+    await page.waitForTimeout(400);
+    const started = Date.now();
+    await page.getByRole('button', { name: 'Cancel' }).click();
+    const message = await waitForStatus(page, /Cancelled/, 1000);
+    const took = Date.now() - started;
+    assert.ok(took < 1000, `cancelled within 1 s (${took} ms)`);
+    assert.match(message, /Cancelled/);
+    assert.equal(await page.getByRole('button', { name: 'Cancel' }).isDisabled(), true);
+    // Nothing from the cancelled solve arrives later.
+    await page.waitForTimeout(1500);
+    assert.match(await statusText(page), /Cancelled/);
+    await setPanels(page, 150);
+    // Enter in the field solves, like the Remesh button; Escape cancels.
+    assert.equal(await solveAfter(page, () => page.getByLabel('Panels', { exact: true }).press('Enter')), 150);
+    await setPanels(page, 400);
+    await remesh(page);
+    await waitForSolving(page);
+    await page.keyboard.press('Escape');
+    await waitForStatus(page, /Cancelled/, 1000);
+  }));
+
+test('a cancel that replaces the worker (as for a long step) leaves the page working and deterministic', async () => {
+  const { context, page, errors } = await openPage(browser, `${server.url}?cancelGrace=0`);
+  try {
+    assert.equal(await waitForDone(page), 300);
+    const busyWorker = page.workers()[0];
+    assert.ok(busyWorker, 'the solver runs in a worker');
+    const first = (await download(page, 'Export OBJ')).text;
+    await setPanels(page, 500);
+    await remesh(page);
+    await waitForSolving(page);
+    await page.waitForTimeout(300);
+    const started = Date.now();
+    await page.getByRole('button', { name: 'Cancel' }).click();
+    await waitForStatus(page, /Cancelled/, 1000);
+    assert.ok(Date.now() - started < 1000);
+    await page.waitForTimeout(500);
+    assert.equal(page.workers().length, 1, 'one solver worker');
+    assert.notEqual(page.workers()[0], busyWorker, 'the busy worker was replaced by a new one');
+    await setPanels(page, 300);
+    assert.equal(await solveAfter(page, () => remesh(page)), 300);
+    assert.equal((await download(page, 'Export OBJ')).text, first, 'the new worker solves to the identical OBJ');
+    assert.deepEqual(errors, []);
+  } finally {
+    await context.close();
+  }
+});
+
+test('a parameter change during a solve reaches the worker and warm-starts it', () =>
+  withPage(async (page) => {
+    await waitForDone(page);
+    const since = await outcomes(page);
+    await setPanels(page, 500);
+    await remesh(page);
+    await waitForSolving(page);
+    await page.waitForTimeout(200);
+    await page.getByLabel('Panels', { exact: true }).fill('220');
+    await page.getByLabel('Panels', { exact: true }).press('Enter');
+    assert.equal(await waitForDone(page, since), 220, 'the running solve finished with the new count');
+    assert.equal((await outcomes(page)).solves, since.solves + 1, 'one solve, not a restart after the first');
+    const obj = parseObj((await download(page, 'Export OBJ')).text);
+    assert.equal(obj.faces.length, 220);
+  }));
+
+test('the main thread keeps painting frames during a long solve', () =>
+  withPage(async (page) => {
+    await waitForDone(page);
+    await page.getByText('Metric and solver').click();
+    await page.getByLabel('Lloyd iterations').fill('100');
+    await setPanels(page, 1200); // a solve of several seconds
+    await remesh(page);
+    await waitForSolving(page);
+    const frames = await page.evaluate(
+      () =>
+        new Promise((resolve) => {
+          const times = [];
+          const start = performance.now();
+          const tick = (now) => {
+            times.push(now);
+            if (now - start < 1500) requestAnimationFrame(tick);
+            else resolve({ times, solving: document.body.dataset.solving === 'true' });
+          };
+          requestAnimationFrame(tick);
+        }),
+    );
+    const gaps = frames.times.slice(1).map((t, i) => t - frames.times[i]);
+    const maxGap = Math.max(...gaps);
+    assert.ok(frames.solving, 'the solve was still running when the measurement ended');
+    // Lenient for a software rasteriser on 2 cores (a GPU paints 60 a second); a solve on the
+    // main thread would paint none.
+    assert.ok(frames.times.length >= 15, `at least 10 frames a second (${frames.times.length} in 1.5 s)`);
+    assert.ok(maxGap < 500, `no frame gap of 500 ms or more (max ${maxGap.toFixed(0)} ms)`);
+    // Input is handled at once too: a view toggle answers within 100 ms.
+    const latency = await page.evaluate(() => {
+      const box = document.getElementById('show-edges');
+      const t = performance.now();
+      box.click();
+      return performance.now() - t;
+    });
+    assert.ok(latency < 100, `a toggle is handled in ${latency.toFixed(1)} ms`);
+    await screenshot(page, 'clusters-converging');
+    assert.equal(await waitForDone(page, { solves: 1, errors: Number.MAX_SAFE_INTEGER }), 1200);
+  }));
+
+test('screenshots of the page after a solve, in each view', () =>
+  withPage(async (page) => {
+    await waitForDone(page);
+    assert.equal(await solveAfter(page, () => selectExample(page, 'inspired_mesh')), 120);
+    const shot = await screenshot(page, 'inspired-panels');
+    assert.ok(readFileSync(shot).length > 20_000, 'a real picture, not a blank page');
+    const panelsView = await distinctColours(page, '#viewport canvas');
+    await page.getByLabel('Show panels').uncheck();
+    await page.getByLabel('Show clusters').check();
+    assert.notEqual(await distinctColours(page, '#viewport canvas'), panelsView, 'the clusters view differs from the panels view');
+    await screenshot(page, 'inspired-clusters');
+    await page.getByLabel('Show clusters').uncheck();
+    await page.getByLabel('Show panels').check();
+    // Before the fix: the corner polygons, coloured by how far they are from planar.
+    await page.getByLabel('Show before the fix').check();
+    assert.equal(await page.locator('#view-legend').isVisible(), true, 'the legend explains the colours');
+    assert.notEqual(await distinctColours(page, '#viewport canvas'), panelsView, 'the before view differs from the panels view');
+    assert.match(await page.locator('#stats').textContent(), /Before the fix\s*\d\.\d×10/);
+    await screenshot(page, 'inspired-before-fix');
+    await page.getByLabel('Show before the fix').uncheck();
+    await solveAfter(page, () => selectExample(page, 'YasIsland'));
+    await screenshot(page, 'yasisland-panels');
+    await solveAfter(page, () => selectExample(page, 'freeform_roof'));
+    await screenshot(page, 'freeform-roof-panels');
+    // The viewport really draws the model (many panel colours), not just its background.
+    const distinct = await distinctColours(page, '#viewport canvas');
+    assert.ok(distinct > 30, `the viewport shows the panels (${distinct} distinct colours)`);
+  }));

@@ -1,0 +1,12 @@
+// Typed element lookup: the page's markup is fixed, so a missing element is a programming error.
+export function element<T extends HTMLElement>(id: string, type: new () => T): T {
+  const found = document.getElementById(id);
+  if (!(found instanceof type)) throw new Error(`page element #${id} is missing or not a ${type.name}`);
+  return found;
+}
+
+// Counters on <body> (data-solves, data-errors) let tests and scripts wait for the next
+// outcome rather than for a status text that may already be showing.
+export function countOutcome(name: 'solves' | 'errors'): void {
+  document.body.dataset[name] = String(Number(document.body.dataset[name] ?? '0') + 1);
+}

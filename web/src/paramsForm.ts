@@ -1,0 +1,83 @@
+// The parameter inputs of the side panel <-> DesignParams. Reading validates through
+// params.ts, so the form, links and stored sessions share one set of rules.
+import { element } from './dom.ts';
+import { validateParams, type Checked, type DesignParams } from './params.ts';
+
+export class ParamsForm {
+  private readonly panels = element('panels', HTMLInputElement);
+  private readonly seed = element('seed', HTMLInputElement);
+  private readonly euclidean = element('w-euclidean', HTMLInputElement);
+  private readonly l2 = element('w-l2', HTMLInputElement);
+  private readonly l21 = element('w-l21', HTMLInputElement);
+  private readonly boundary = element('w-boundary', HTMLInputElement);
+  private readonly lloydIterations = element('lloyd-iterations', HTMLInputElement);
+  private readonly panelRounds = element('panel-rounds', HTMLInputElement);
+  private readonly seeding = element('seeding', HTMLSelectElement);
+  private readonly teleport = element('teleport', HTMLInputElement);
+  private readonly singlePointNodes = element('single-point-nodes', HTMLInputElement);
+  private readonly optimizePlanes = element('optimize-planes', HTMLInputElement);
+
+  private get numberInputs(): HTMLInputElement[] {
+    return [this.panels, this.seed, this.euclidean, this.l2, this.l21, this.boundary, this.lloydIterations, this.panelRounds];
+  }
+
+  // Calls back on committed changes (enter, blur, spinner, checkbox), not on every keystroke.
+  onChange(callback: () => void): void {
+    for (const input of [...this.numberInputs, this.teleport, this.singlePointNodes, this.optimizePlanes, this.seeding]) {
+      input.addEventListener('change', callback);
+    }
+  }
+
+  read(): Checked<DesignParams> {
+    for (const input of this.numberInputs) input.removeAttribute('aria-invalid');
+    const number = (input: HTMLInputElement): number => (input.value.trim() === '' ? Number.NaN : Number(input.value));
+    const checked = validateParams({
+      panels: number(this.panels),
+      seed: number(this.seed),
+      weights: { euclidean: number(this.euclidean), l2: number(this.l2), l21: number(this.l21), boundary: number(this.boundary) },
+      lloydIterations: number(this.lloydIterations),
+      panelRounds: number(this.panelRounds),
+      seeding: this.seeding.value,
+      teleport: this.teleport.checked,
+      singlePointNodes: this.singlePointNodes.checked,
+      optimizePlanes: this.optimizePlanes.checked,
+    });
+    if (!checked.ok) this.markInvalid(checked.message);
+    return checked;
+  }
+
+  private markInvalid(message: string): void {
+    const byName: [string, HTMLInputElement][] = [
+      ['Panels', this.panels],
+      ['Seed', this.seed],
+      ['euclidean', this.euclidean],
+      ['l21', this.l21],
+      ['l2', this.l2],
+      ['boundary', this.boundary],
+      ['Lloyd', this.lloydIterations],
+      ['Panel rounds', this.panelRounds],
+    ];
+    const match = byName.find(([name]) => message.includes(name));
+    match?.[1].setAttribute('aria-invalid', 'true');
+  }
+
+  write(params: DesignParams): void {
+    this.panels.value = String(params.panels);
+    this.seed.value = String(params.seed);
+    this.euclidean.value = String(params.weights.euclidean);
+    this.l2.value = String(params.weights.l2);
+    this.l21.value = String(params.weights.l21);
+    this.boundary.value = String(params.weights.boundary);
+    this.lloydIterations.value = String(params.lloydIterations);
+    this.panelRounds.value = String(params.panelRounds);
+    this.seeding.value = params.seeding;
+    this.teleport.checked = params.teleport;
+    this.singlePointNodes.checked = params.singlePointNodes;
+    this.optimizePlanes.checked = params.optimizePlanes;
+    for (const input of this.numberInputs) input.removeAttribute('aria-invalid');
+  }
+
+  setPanels(panels: number): void {
+    this.panels.value = String(panels);
+  }
+}

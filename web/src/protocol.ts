@@ -1,0 +1,71 @@
+// The messages between the page and the solver worker. The worker owns the wasm Session; the
+// page only ever sees copies. Every request carries a job number and every answer repeats
+// it, so the page drops answers to jobs it has moved past (a cancelled solve, a replaced mesh).
+import type { MeshInfo, Problems, Progress, RemeshParams } from '@flatfacet/wasm';
+
+// What the worker loads: file bytes for the core's readers (OBJ, OFF, STL, PLY), a triangle
+// soup from three.js (glTF/GLB), or a generated surface.
+export type MeshPayload =
+  | { kind: 'bytes'; name: string; bytes: Uint8Array }
+  | { kind: 'arrays'; name: string; positions: Float64Array; indices: Uint32Array }
+  | { kind: 'shape'; name: string; triangles: number };
+
+export type WorkerRequest =
+  // quiet: reload after a worker restart; answer without the display arrays.
+  | { type: 'load'; job: number; mesh: MeshPayload; quiet: boolean }
+  // fresh: start from the loaded mesh (a new Session), else warm-start the current one.
+  // chain: parameter sets solved one after the other (a share link replays a warm-start chain).
+  | { type: 'solve'; job: number; fresh: boolean; chain: RemeshParams[] }
+  // A parameter change during a solve: applied before the next step (warm start).
+  | { type: 'update'; job: number; params: RemeshParams }
+  | { type: 'cancel'; job: number };
+
+// The report's keys as DESIGN.md 4 names them; read defensively (the core may add keys).
+export type QualityReport = Record<string, unknown>;
+
+export interface SolveResult {
+  clusterIds: Int32Array;
+  panelPositions: Float64Array;
+  panelOffsets: Uint32Array;
+  panelIndices: Uint32Array;
+  panelTriangles: Uint32Array;
+  panelTriangleIds: Uint32Array;
+  // "Before the fix": the same polygons through their mesh corners (layout of panelPositions),
+  // and per panel how far each is from planar (distance / diameter).
+  cornerPositions: Float64Array;
+  cornerPlanarity: Float64Array;
+  problems: Problems;
+  report: QualityReport;
+  objText: string;
+  partsCsv: string;
+  solveSeconds: number; // wall time in the worker, first step to last
+  steps: number;
+}
+
+export type WorkerResponse =
+  | { type: 'ready'; version: string }
+  | { type: 'fatal'; message: string }
+  | { type: 'loaded'; job: number; info: MeshInfo; positions: Float32Array; indices: Uint32Array }
+  // A load or solve the core refused; the worker's previous mesh and result are intact.
+  | { type: 'failed'; job: number; message: string }
+  | { type: 'progress'; job: number; progress: Progress; elapsedSeconds: number }
+  | { type: 'clusters'; job: number; clusterIds: Int32Array }
+  | { type: 'solved'; job: number; result: SolveResult }
+  | { type: 'cancelled'; job: number };
+
+// The buffers a message can hand over instead of copying (each a fresh copy, never a view of
+// the wasm heap: see docs on typed_memory_view in shared/notes/toolchain.md, note 7).
+export function transferablesOf(message: WorkerResponse): Transferable[] {
+  switch (message.type) {
+    case 'loaded':
+      return [message.positions.buffer, message.indices.buffer];
+    case 'clusters':
+      return [message.clusterIds.buffer];
+    case 'solved': {
+      const r = message.result;
+      return [r.clusterIds, r.panelPositions, r.panelOffsets, r.panelIndices, r.panelTriangles, r.panelTriangleIds, r.cornerPositions, r.cornerPlanarity].map((a) => a.buffer);
+    }
+    default:
+      return [];
+  }
+}

@@ -1,0 +1,167 @@
+// Share links (DESIGN.md 4): the design in the URL hash, never sent to a server.
+//
+//   #v1=<base64url( zlib( u32 json length | JSON | mesh file bytes ) )>
+//
+// JSON: { v: 1, mesh: { example } | { file, size }, params, history }. `history` lists the
+// earlier solves of a warm-start chain; replaying history then params from the loaded mesh
+// gives the identical panels. An uploaded mesh travels as its file bytes (under 2 MiB).
+// Decoding treats the link as hostile: sizes capped before and during inflation, every field
+// checked by hand, nothing evaluated. No DOM: unit-tested in Node.
+import { Unzlib, zlibSync } from 'fflate';
+import { decodeBase64url, encodeBase64url } from './base64url.ts';
+import { findExample } from './examples.ts';
+import { failure, validateParams, type Checked, type DesignParams } from './params.ts';
+
+export const SHARE_VERSION = 1;
+export const MAX_SHARED_MESH_BYTES = 2 * 1024 * 1024;
+export const MAX_HISTORY = 8;
+const MAX_JSON_BYTES = 64 * 1024;
+const MAX_FILE_NAME = 200;
+const HASH_PREFIX = `v${SHARE_VERSION}=`;
+
+export type DesignMesh = { kind: 'example'; id: string } | { kind: 'file'; name: string; bytes: Uint8Array };
+
+export interface DesignState {
+  mesh: DesignMesh;
+  params: DesignParams;
+  history: DesignParams[];
+}
+
+export interface DecodeLimits {
+  maxMeshBytes: number;
+}
+
+export const LINK_LIMITS: DecodeLimits = { maxMeshBytes: MAX_SHARED_MESH_BYTES };
+
+function isRecord(value: unknown): value is Record<string, unknown> {
+  return typeof value === 'object' && value !== null && !Array.isArray(value);
+}
+
+// File names come back into the page as text only; still keep them plain and short.
+function checkFileName(value: unknown): Checked<string> {
+  if (typeof value !== 'string' || value.length === 0 || value.length > MAX_FILE_NAME) return failure('the mesh file name is missing or too long');
+  if (/[\u0000-\u001f\u007f/\\]/.test(value)) return failure('the mesh file name has characters a file name cannot have');
+  return { ok: true, value };
+}
+
+// The binary payload (before compression).
+export function encodePayload(state: DesignState): Uint8Array {
+  const meshJson = state.mesh.kind === 'example' ? { example: state.mesh.id } : { file: state.mesh.name, size: state.mesh.bytes.length };
+  const json = new TextEncoder().encode(JSON.stringify({ v: SHARE_VERSION, mesh: meshJson, params: state.params, history: state.history }));
+  const fileBytes = state.mesh.kind === 'file' ? state.mesh.bytes : new Uint8Array(0);
+  const out = new Uint8Array(4 + json.length + fileBytes.length);
+  new DataView(out.buffer).setUint32(0, json.length, true);
+  out.set(json, 4);
+  out.set(fileBytes, 4 + json.length);
+  return out;
+}
+
+export function encodeState(state: DesignState): Uint8Array {
+  return zlibSync(encodePayload(state), { level: 9 });
+}
+
+// Inflates in small pieces and stops as soon as the output passes `cap`: a deflate bomb
+// costs at most one piece beyond the cap (deflate expands at most ~1032x).
+export function inflateCapped(compressed: Uint8Array, cap: number): Checked<Uint8Array> {
+  const pieces: Uint8Array[] = [];
+  let total = 0;
+  let overCap = false;
+  const inflater = new Unzlib((piece) => {
+    total += piece.length;
+    if (total > cap) overCap = true;
+    else pieces.push(piece);
+  });
+  const step = 4096;
+  try {
+    for (let i = 0; i < compressed.length && !overCap; i += step) {
+      const end = Math.min(i + step, compressed.length);
+      inflater.push(compressed.subarray(i, end), end === compressed.length);
+    }
+  } catch {
+    return failure('the link is damaged (its compressed data is not valid)');
+  }
+  if (overCap) return failure(`the link unpacks to more than ${Math.round(cap / 1024)} KiB, more than any design needs`);
+  if (compressed.length === 0) return failure('the link is empty');
+  const out = new Uint8Array(total);
+  let offset = 0;
+  for (const piece of pieces) {
+    out.set(piece, offset);
+    offset += piece.length;
+  }
+  return { ok: true, value: out };
+}
+
+export function decodePayload(payload: Uint8Array, limits: DecodeLimits): Checked<DesignState> {
+  if (payload.length < 4) return failure('the link is too short to hold a design');
+  const jsonLength = new DataView(payload.buffer, payload.byteOffset, payload.byteLength).getUint32(0, true);
+  if (jsonLength > MAX_JSON_BYTES || jsonLength > payload.length - 4) return failure('the link is damaged (bad header)');
+  let parsed: unknown;
+  try {
+    parsed = JSON.parse(new TextDecoder('utf-8', { fatal: true }).decode(payload.subarray(4, 4 + jsonLength)));
+  } catch {
+    return failure('the link is damaged (its settings are not readable)');
+  }
+  if (!isRecord(parsed)) return failure('the link is damaged (its settings are not an object)');
+  if (parsed.v !== SHARE_VERSION) {
+    return failure(typeof parsed.v === 'number' ? `the link has format version ${parsed.v}; this page reads version ${SHARE_VERSION}` : 'the link has no format version');
+  }
+  const rest = payload.subarray(4 + jsonLength);
+  const meshValue = parsed.mesh;
+  if (!isRecord(meshValue)) return failure('the link names no mesh');
+  let mesh: DesignMesh;
+  if (typeof meshValue.example === 'string') {
+    const example = findExample(meshValue.example);
+    if (!example) return failure(`the link names an unknown example "${meshValue.example.slice(0, 40)}"`);
+    if (rest.length !== 0) return failure('the link is damaged (extra data after an example)');
+    mesh = { kind: 'example', id: example.id };
+  } else if ('file' in meshValue) {
+    const name = checkFileName(meshValue.file);
+    if (!name.ok) return failure(`in the link, ${name.message}`);
+    const size = meshValue.size;
+    if (typeof size !== 'number' || !Number.isInteger(size) || size < 1) return failure('the link gives no valid mesh size');
+    if (size > limits.maxMeshBytes) return failure(`the link's mesh is larger than ${Math.round(limits.maxMeshBytes / 1024)} KiB`);
+    if (size !== rest.length) return failure('the link is damaged (the mesh is truncated)');
+    mesh = { kind: 'file', name: name.value, bytes: rest.slice() };
+  } else {
+    return failure('the link names no mesh');
+  }
+  const params = validateParams(parsed.params, 'parameters');
+  if (!params.ok) return failure(`in the link, ${params.message}`);
+  const historyValue = parsed.history ?? [];
+  if (!Array.isArray(historyValue) || historyValue.length > MAX_HISTORY) return failure('the link is damaged (bad solve history)');
+  const history: DesignParams[] = [];
+  for (const entry of historyValue) {
+    const checked = validateParams(entry, 'history');
+    if (!checked.ok) return failure(`in the link's history, ${checked.message}`);
+    history.push(checked.value);
+  }
+  return { ok: true, value: { mesh, params: params.value, history } };
+}
+
+export function decodeState(compressed: Uint8Array, limits: DecodeLimits): Checked<DesignState> {
+  const inflated = inflateCapped(compressed, limits.maxMeshBytes + MAX_JSON_BYTES + 4);
+  if (!inflated.ok) return inflated;
+  return decodePayload(inflated.value, limits);
+}
+
+export function stateToHash(state: DesignState): string {
+  return `#${HASH_PREFIX}${encodeBase64url(encodeState(state))}`;
+}
+
+// Whether the hash is meant as a share link at all (an empty hash or "#" is not).
+export function isShareHash(hash: string): boolean {
+  return hash.replace(/^#/, '').length > 0;
+}
+
+export function hashToState(hash: string): Checked<DesignState> {
+  const body = hash.replace(/^#/, '');
+  const version = /^v(\d{1,6})=/.exec(body);
+  if (!version) return failure('this is not a Flatfacet share link (it should start with #v1=)');
+  if (version[1] !== String(SHARE_VERSION)) return failure(`the link has format version ${version[1]}; this page reads version ${SHARE_VERSION}`);
+  const encoded = body.slice(version[0].length);
+  // base64 of the largest valid payload, compressed at worst 1:1, plus slack.
+  if (encoded.length > ((LINK_LIMITS.maxMeshBytes + MAX_JSON_BYTES) * 4) / 3 + 1024) return failure('the link is too long');
+  const compressed = decodeBase64url(encoded);
+  if (!compressed) return failure('the link is damaged (it has characters a share link never has)');
+  return decodeState(compressed, LINK_LIMITS);
+}

@@ -1,0 +1,111 @@
+// The quality panel: the report's numbers in words a designer reads (DESIGN.md 5 targets).
+import type { QualityReport, SolveResult } from './protocol.ts';
+
+function numberAt(report: QualityReport, key: string): number | null {
+  const value = report[key];
+  return typeof value === 'number' && Number.isFinite(value) ? value : null;
+}
+
+// The invalid panels appear as a count or as a list of {panel, problems}.
+function countAt(report: QualityReport, key: string): number | null {
+  const value = report[key];
+  if (Array.isArray(value)) return value.length;
+  return numberAt(report, key);
+}
+
+// Share of interior nodes where exactly three panels meet, from the key or the histogram.
+export function valence3Share(report: QualityReport): number | null {
+  const direct = numberAt(report, 'valence3_share');
+  if (direct !== null) return direct;
+  const histogram = report.interior_valence;
+  let total = 0;
+  let three = 0;
+  if (Array.isArray(histogram)) {
+    histogram.forEach((count, valence) => {
+      if (typeof count === 'number') {
+        total += count;
+        if (valence === 3) three += count;
+      }
+    });
+  } else if (typeof histogram === 'object' && histogram !== null) {
+    for (const [valence, count] of Object.entries(histogram)) {
+      if (typeof count === 'number') {
+        total += count;
+        if (valence === '3') three += count;
+      }
+    }
+  } else {
+    return null;
+  }
+  return total > 0 ? three / total : null;
+}
+
+function scientific(value: number | null): string {
+  if (value === null) return '–';
+  if (value === 0) return '0';
+  return value.toExponential(1).replace('e', '×10^').replace(/\^\+?(-?\d+)$/, (_, e: string) => superscript(e));
+}
+
+function superscript(exponent: string): string {
+  const map: Record<string, string> = { '-': '⁻', '0': '⁰', '1': '¹', '2': '²', '3': '³', '4': '⁴', '5': '⁵', '6': '⁶', '7': '⁷', '8': '⁸', '9': '⁹' };
+  return [...exponent].map((c) => map[c] ?? c).join('');
+}
+
+interface Row {
+  label: string;
+  value: string;
+  hint: string;
+  warn?: boolean;
+}
+
+export function statsRows(result: SolveResult): Row[] {
+  const report = result.report;
+  const timings = typeof report.timings_s === 'object' && report.timings_s !== null ? (report.timings_s as Record<string, unknown>) : {};
+  const total = typeof timings.total === 'number' ? timings.total : null;
+  const share = valence3Share(report);
+  const invalid = countAt(report, 'invalid_panels');
+  const topology = report.topology_preserved;
+  const minAngle = numberAt(report, 'min_corner_angle_deg');
+  const hausdorff = numberAt(report, 'hausdorff');
+  const before = result.cornerPlanarity.length > 0 ? result.cornerPlanarity.reduce((worst, value) => Math.max(worst, value), 0) : null;
+  return [
+    { label: 'Panels', value: String(numberAt(report, 'panels') ?? '–'), hint: 'planar panels in the result' },
+    { label: 'Planarity', value: scientific(numberAt(report, 'max_planarity')), hint: 'largest distance of a panel vertex to its plane, relative to the panel size (target ≤ 10⁻⁹)' },
+    { label: 'Before the fix', value: scientific(before), hint: 'planarity of the same polygons through their mesh corners, before the planes were intersected' },
+    { label: 'Hausdorff', value: hausdorff === null ? '–' : `${(hausdorff * 100).toFixed(2)} %`, hint: 'two-sided distance to the input surface, relative to the bounding-box diagonal' },
+    { label: 'Valence 3', value: share === null ? '–' : `${(share * 100).toFixed(1)} %`, hint: 'interior nodes where exactly three panels meet' },
+    { label: 'Min angle', value: minAngle === null ? '–' : `${minAngle.toFixed(1)}°`, hint: 'smallest corner angle of any panel' },
+    { label: 'Invalid', value: invalid === null ? '–' : String(invalid), hint: 'panels that are not simple, star-shaped and spike-free (shown red)', warn: (invalid ?? 0) > 0 },
+    { label: 'Topology', value: topology === true ? 'preserved' : topology === false ? 'changed' : '–', hint: 'same Euler characteristic and boundary loops as the input', warn: topology === false },
+    { label: 'Solve time', value: `${result.solveSeconds.toFixed(2)} s`, hint: total === null ? 'in the worker' : `in the worker; the core reports ${total.toFixed(2)} s` },
+  ];
+}
+
+export function renderStats(container: HTMLElement, result: SolveResult | null): void {
+  container.replaceChildren();
+  if (!result) {
+    const empty = document.createElement('p');
+    empty.className = 'muted';
+    empty.textContent = 'Remesh to see the quality of the panels.';
+    container.append(empty);
+    return;
+  }
+  const list = document.createElement('dl');
+  for (const row of statsRows(result)) {
+    const term = document.createElement('dt');
+    term.textContent = row.label;
+    term.title = row.hint;
+    const detail = document.createElement('dd');
+    detail.textContent = row.value;
+    detail.title = row.hint;
+    if (row.warn) detail.classList.add('warn');
+    list.append(term, detail);
+  }
+  container.append(list);
+  // For bench/browser_bench.mjs: the worker's wall time and the core's own total.
+  container.dataset.solveSeconds = result.solveSeconds.toFixed(4);
+  const timings = result.report.timings_s;
+  if (typeof timings === 'object' && timings !== null && typeof (timings as Record<string, unknown>).total === 'number') {
+    container.dataset.coreSeconds = ((timings as Record<string, number>).total ?? 0).toFixed(4);
+  }
+}

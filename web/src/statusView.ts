@@ -1,0 +1,64 @@
+// The status line (role="status": the text people and tests read), the progress bar and its
+// stage label. The status ends with "Done: N panels" after a solve and starts with "Error:"
+// when something failed.
+import type { Progress } from '@flatfacet/wasm';
+import { countOutcome, element } from './dom.ts';
+
+export type StatusTone = 'info' | 'done' | 'error';
+
+export class StatusView {
+  private readonly status = element('status', HTMLParagraphElement);
+  private readonly progress = element('progress', HTMLProgressElement);
+  private readonly label = element('progress-label', HTMLSpanElement);
+
+  show(text: string, tone: StatusTone = 'info'): void {
+    this.pendingProgress = null; // a newer message wins over a progress line not yet drawn
+    this.status.textContent = text;
+    this.status.classList.toggle('error', tone === 'error');
+    this.status.classList.toggle('done', tone === 'done');
+  }
+
+  error(text: string): void {
+    this.show(text.startsWith('Error') ? text : `Error: ${text}`, 'error');
+    countOutcome('errors');
+  }
+
+  private pendingProgress: { progress: Progress; elapsedSeconds: number } | null = null;
+
+  // Steps can come faster than frames: draw the latest progress once per frame.
+  showProgress(progress: Progress, elapsedSeconds: number): void {
+    const scheduled = this.pendingProgress !== null;
+    this.pendingProgress = { progress, elapsedSeconds };
+    if (scheduled) return;
+    requestAnimationFrame(() => {
+      const latest = this.pendingProgress;
+      this.pendingProgress = null;
+      if (latest) this.drawProgress(latest.progress, latest.elapsedSeconds);
+    });
+  }
+
+  // Stages run in order; the bar shows the stage's share of its iteration limit.
+  private drawProgress(progress: Progress, elapsedSeconds: number): void {
+    const order = ['Seeding', 'Lloyd', 'Panels', 'Optimize', 'Done'];
+    const stageIndex = Math.max(0, order.indexOf(progress.stage));
+    const within = progress.of > 0 ? Math.min(1, progress.iteration / progress.of) : 0;
+    const weights = [0.02, 0.45, 0.45, 0.08];
+    let value = 0;
+    for (let i = 0; i < stageIndex && i < weights.length; i++) value += weights[i]!;
+    if (stageIndex < weights.length) value += weights[stageIndex]! * within;
+    this.progress.value = progress.done ? 1 : value;
+    this.label.textContent = progress.done ? 'done' : `${progress.stage} ${progress.iteration}/${progress.of}`;
+    const invalid = progress.invalidPanels > 0 ? ` · ${progress.invalidPanels} invalid` : '';
+    this.show(`Solving: ${progress.stage.toLowerCase()} ${progress.iteration} of ${progress.of}${invalid} · ${elapsedSeconds.toFixed(1)} s`);
+  }
+
+  resetProgress(label = 'idle'): void {
+    this.progress.value = 0;
+    this.label.textContent = label;
+  }
+
+  finishProgress(): void {
+    this.progress.value = 1;
+    this.label.textContent = 'done';
+  }
+}

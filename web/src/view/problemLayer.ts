@@ -1,0 +1,59 @@
+// Problem markers (paper fig. 6): spike vertices as red points, flipped edges as thick red
+// lines (screen-space width, since WebGL lines are one pixel wide). Invalid panels are tinted
+// by the panel layer.
+import * as THREE from 'three';
+import { LineMaterial } from 'three/examples/jsm/lines/LineMaterial.js';
+import { LineSegments2 } from 'three/examples/jsm/lines/LineSegments2.js';
+import { LineSegmentsGeometry } from 'three/examples/jsm/lines/LineSegmentsGeometry.js';
+import type { Problems } from '@flatfacet/wasm';
+
+const RED = 0xee2924;
+
+export class ProblemLayer {
+  readonly group = new THREE.Group();
+  private readonly spikes: THREE.Points<THREE.BufferGeometry, THREE.PointsMaterial>;
+  private readonly flipped: LineSegments2;
+  private readonly lineMaterial: LineMaterial;
+
+  constructor() {
+    this.group.name = 'problems';
+    this.spikes = new THREE.Points(
+      new THREE.BufferGeometry(),
+      new THREE.PointsMaterial({ color: RED, size: 9, sizeAttenuation: false, depthTest: false }),
+    );
+    this.lineMaterial = new LineMaterial({ color: RED, linewidth: 4, depthTest: false });
+    this.flipped = new LineSegments2(new LineSegmentsGeometry(), this.lineMaterial);
+    this.spikes.renderOrder = 10;
+    this.flipped.renderOrder = 10;
+    this.group.add(this.spikes, this.flipped);
+  }
+
+  set(problems: Problems | null, origin: THREE.Vector3): void {
+    const spikes = problems?.spikes ?? [];
+    const spikePositions = new Float32Array(spikes.length);
+    for (let i = 0; i < spikes.length; i++) spikePositions[i] = spikes[i]! - origin.getComponent(i % 3);
+    this.spikes.geometry.dispose();
+    this.spikes.geometry = new THREE.BufferGeometry();
+    this.spikes.geometry.setAttribute('position', new THREE.BufferAttribute(spikePositions, 3));
+
+    const edges = problems?.flippedEdges ?? [];
+    const edgePositions = new Float32Array(edges.length);
+    for (let i = 0; i < edges.length; i++) edgePositions[i] = edges[i]! - origin.getComponent(i % 3);
+    this.flipped.geometry.dispose();
+    const geometry = new LineSegmentsGeometry();
+    if (edgePositions.length >= 6) geometry.setPositions(edgePositions);
+    this.flipped.geometry = geometry;
+    this.flipped.visible = edgePositions.length >= 6;
+    this.spikes.visible = spikePositions.length >= 3;
+  }
+
+  // LineMaterial measures its width in pixels of the drawing buffer.
+  setResolution(width: number, height: number): void {
+    this.lineMaterial.resolution.set(width, height);
+  }
+
+  count(problems: Problems | null): number {
+    if (!problems) return 0;
+    return problems.spikes.length / 3 + problems.flippedEdges.length / 6 + problems.invalidPanels.length;
+  }
+}

@@ -1,0 +1,176 @@
+// The 3D viewport: scene, camera, orbit controls and the layers. Renders on demand (after a
+// change or a camera move), so an idle page costs nothing and a solve in the worker gets the
+// CPU.
+import * as THREE from 'three';
+import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
+import type { SolveResult } from '../protocol.ts';
+import { isSoftwareRenderer } from './gpu.ts';
+import { InputLayer } from './inputLayer.ts';
+import { PanelLayer } from './panelLayer.ts';
+import { ProblemLayer } from './problemLayer.ts';
+
+export interface ViewToggles {
+  clusters: boolean;
+  panels: boolean;
+  edges: boolean;
+  problems: boolean;
+  beforeFix: boolean; // the polygons through their mesh corners, coloured by planarity
+}
+
+export class Viewer {
+  private readonly renderer: THREE.WebGLRenderer;
+  private readonly scene = new THREE.Scene();
+  private readonly camera = new THREE.PerspectiveCamera(40, 1, 0.01, 1000);
+  private readonly controls: OrbitControls;
+  private readonly input = new InputLayer();
+  private readonly panels = new PanelLayer();
+  private readonly problems = new ProblemLayer();
+  private readonly origin = new THREE.Vector3();
+  private toggles: ViewToggles = { clusters: false, panels: true, edges: true, problems: true, beforeFix: false };
+  private result: SolveResult | null = null;
+  private hasPanels = false;
+  private solving = false;
+  private renderQueued = false;
+  // Live cluster colours during a solve: at most one redraw per interval, the latest wins.
+  private readonly liveInterval: number;
+  private liveClusters: Int32Array | null = null;
+  private liveTimer: ReturnType<typeof setTimeout> | null = null;
+  private lastLiveUpdate = 0;
+  private readonly software: boolean;
+
+  constructor(private readonly container: HTMLElement) {
+    const software = isSoftwareRenderer();
+    this.software = software;
+    this.liveInterval = software ? 750 : 100;
+    this.renderer = new THREE.WebGLRenderer({ antialias: !software, preserveDrawingBuffer: false });
+    this.renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
+    this.renderer.setClearColor(0x24272c);
+    container.appendChild(this.renderer.domElement);
+    this.renderer.domElement.setAttribute('aria-label', '3D view of the design');
+
+    this.scene.add(new THREE.HemisphereLight(0xf2f4f8, 0x3a3d44, 1.6));
+    const headlight = new THREE.DirectionalLight(0xffffff, 1.4);
+    headlight.position.set(0.4, 0.8, 1);
+    this.camera.add(headlight); // lights what the camera sees, from any side
+    this.scene.add(this.camera);
+    this.scene.add(this.input.mesh, this.panels.faces, this.panels.edges, this.problems.group);
+
+    this.controls = new OrbitControls(this.camera, this.renderer.domElement);
+    this.controls.addEventListener('change', () => this.requestRender());
+    new ResizeObserver(() => this.resize()).observe(container);
+    this.resize();
+    this.applyVisibility();
+  }
+
+  requestRender(): void {
+    if (this.renderQueued) return;
+    this.renderQueued = true;
+    requestAnimationFrame(() => {
+      this.renderQueued = false;
+      this.renderer.render(this.scene, this.camera);
+    });
+  }
+
+  private resize(): void {
+    const width = Math.max(1, this.container.clientWidth);
+    const height = Math.max(1, this.container.clientHeight);
+    this.renderer.setSize(width, height, false);
+    this.camera.aspect = width / height;
+    this.camera.updateProjectionMatrix();
+    const buffer = this.renderer.getDrawingBufferSize(new THREE.Vector2());
+    this.problems.setResolution(buffer.x, buffer.y);
+    this.requestRender();
+  }
+
+  // A new input surface: shifts everything to its bounding-box centre and frames it.
+  setSurface(positions: Float32Array, indices: Uint32Array, upAxis: 'y' | 'z'): void {
+    const box = new THREE.Box3();
+    for (let i = 0; i + 2 < positions.length; i += 3) box.expandByPoint(new THREE.Vector3(positions[i], positions[i + 1], positions[i + 2]));
+    box.getCenter(this.origin);
+    const local = new Float32Array(positions.length);
+    for (let i = 0; i < positions.length; i++) local[i] = positions[i]! - this.origin.getComponent(i % 3);
+    this.input.setSurface(local, indices);
+    this.input.setClusters(null);
+    this.setResult(null);
+    this.frame(box, upAxis);
+  }
+
+  private frame(box: THREE.Box3, upAxis: 'y' | 'z'): void {
+    const radius = Math.max(1e-9, box.getSize(new THREE.Vector3()).length() / 2);
+    this.camera.up.set(0, upAxis === 'y' ? 1 : 0, upAxis === 'z' ? 1 : 0);
+    const direction = upAxis === 'y' ? new THREE.Vector3(0.9, 0.55, 1.1) : new THREE.Vector3(1.1, -0.9, 0.6);
+    const distance = radius / Math.sin(THREE.MathUtils.degToRad(this.camera.fov / 2)) * 1.02;
+    this.camera.position.copy(direction.normalize().multiplyScalar(distance));
+    this.camera.near = distance / 200;
+    this.camera.far = distance * 20;
+    this.camera.updateProjectionMatrix();
+    this.controls.target.set(0, 0, 0);
+    this.controls.update();
+    this.requestRender();
+  }
+
+  setClusters(clusterIds: Int32Array | null): void {
+    this.cancelLiveUpdate();
+    this.input.setClusters(clusterIds);
+    this.requestRender();
+  }
+
+  // The clusters converging (paper fig. 5 b-c), throttled so the page stays responsive.
+  showLiveClusters(clusterIds: Int32Array): void {
+    this.liveClusters = clusterIds;
+    if (this.liveTimer !== null) return;
+    const wait = Math.max(0, this.lastLiveUpdate + this.liveInterval - performance.now());
+    this.liveTimer = setTimeout(() => {
+      this.liveTimer = null;
+      this.lastLiveUpdate = performance.now();
+      if (this.liveClusters && this.solving) this.input.setClusters(this.liveClusters);
+      this.liveClusters = null;
+      this.requestRender();
+    }, wait);
+  }
+
+  private cancelLiveUpdate(): void {
+    if (this.liveTimer !== null) clearTimeout(this.liveTimer);
+    this.liveTimer = null;
+    this.liveClusters = null;
+  }
+
+  setResult(result: SolveResult | null): void {
+    this.result = result;
+    this.panels.set(result, this.origin, this.toggles.beforeFix);
+    this.problems.set(result?.problems ?? null, this.origin);
+    this.hasPanels = result !== null && result.panelTriangles.length > 0;
+    if (result) this.setClusters(result.clusterIds);
+    this.applyVisibility();
+  }
+
+  // While solving, the clusters converging on the input are the view (paper fig. 5 b-c).
+  setSolving(solving: boolean): void {
+    if (this.solving !== solving && this.software) {
+      // A software rasteriser shares the CPU with the solver: draw the live view at half
+      // resolution so the page keeps its frame rate; full resolution again for the result.
+      this.renderer.setPixelRatio(solving ? 0.5 : Math.min(window.devicePixelRatio, 2));
+      this.resize();
+    }
+    this.solving = solving;
+    if (!solving) this.cancelLiveUpdate();
+    this.applyVisibility();
+  }
+
+  setToggles(toggles: ViewToggles): void {
+    const rebuild = toggles.beforeFix !== this.toggles.beforeFix;
+    this.toggles = { ...toggles };
+    if (rebuild) this.panels.set(this.result, this.origin, toggles.beforeFix);
+    this.applyVisibility();
+  }
+
+  private applyVisibility(): void {
+    const showPanels = this.hasPanels && !this.solving;
+    this.panels.faces.visible = showPanels && this.toggles.panels;
+    this.panels.edges.visible = showPanels && this.toggles.edges;
+    this.problems.group.visible = showPanels && this.toggles.problems && !this.toggles.beforeFix;
+    // The surface shows when panels do not cover it: during a solve, before any, or on request.
+    this.input.mesh.visible = this.solving || !showPanels || this.toggles.clusters || !this.toggles.panels;
+    this.requestRender();
+  }
+}
