@@ -48,6 +48,7 @@ EMSCRIPTEN_BINDINGS(flatfacet) {
       .function("setParams", &Session::set_params)
       .function("step", &Session::step)
       .function("done", &Session::done)
+      .function("resetSolve", &Session::reset_solve)
       .function(
           "inputPositions", +[](const Session& s) { return to_typed_array(s.input_positions(), "Float32Array"); })
       .function(

@@ -1,7 +1,8 @@
 // Hand-written types of the Embind module (Emscripten 3.1.6 has no --emit-tsd).
-// Every call returns; nothing throws across the boundary. Calls that can fail return a JSON
-// string that parses to a Status (ok false + a one-line message naming the problem), and
-// leave the session's previous mesh, parameters and result untouched.
+// Calls that can fail return a string that parses to a Status (ok false + a one-line message
+// naming the problem) and leave the session's previous mesh, parameters and result untouched.
+// Nothing else throws, except when the wasm runs out of memory (a typed-array getter's copy)
+// or traps: treat any exception from a call as a crashed solver (restart the worker).
 
 export interface Status {
   ok: boolean;
@@ -46,7 +47,7 @@ export interface Progress extends Status {
   panelRounds: number; // panel rounds done so far
 }
 
-export interface Problems {
+export interface Problems extends Status {
   spikes: number[]; // xyz triples: panel vertices farther than the spike distance from their corner
   flippedEdges: number[]; // pairs of xyz triples (6 numbers per edge): edges against their panel's orientation
   invalidPanels: number[]; // panel ids
@@ -68,6 +69,9 @@ export interface Session {
   // Bounded work (seeding, one Lloyd iteration, one panel round). Progress JSON.
   step(): string;
   done(): boolean;
+  // Drops the solve: the next step() starts cold from the loaded mesh with the current
+  // parameters (the same result as a new Session), without reading the mesh again.
+  resetSolve(): void;
 
   // The cleaned input mesh for display.
   inputPositions(): Float32Array; // xyz per vertex
@@ -88,13 +92,15 @@ export interface Session {
   // far those are from planar (max distance to the best-fit plane / panel diameter).
   cornerPositions(): Float64Array;
   cornerPlanarity(): Float64Array;
-  problems(): string; // Problems JSON
-  // The quality report (DESIGN.md 4 keys) of the current panels, as JSON text; "{}" without panels.
+  problems(): string; // Problems JSON (ok true) or a Status (ok false)
+  // The quality report (DESIGN.md 4 keys plus "ok": true) of the current panels; only
+  // {"ok": true, "message": ""} without panels; a Status (ok false) on failure.
   reportJson(): string;
   // Panels OBJ as `flatfacet remesh --out` writes it (the comment's input line names the file
-  // instead of a path); "" when there are no panels yet.
+  // instead of a path); "" when there are no panels yet; a Status JSON on failure (it starts
+  // with '{', which an OBJ never does).
   objText(): string;
-  // Parts list CSV: header row, then one row per panel.
+  // Parts list CSV: header row, one row per panel, a total row; a Status JSON on failure.
   partsCsv(): string;
   delete(): void;
 }

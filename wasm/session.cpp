@@ -148,8 +148,13 @@ std::string Session::set_params(const std::string& params_json) {
     RemeshParams params = remesh_params_from_json(params_json);
     params.make_panels = true;
     if (remesher_) {
+      const bool mid_solve = !remesher_->done();
       remesher_->set_params(params);  // throws and keeps everything on bad parameters
-      forget_result();
+      // A change during a solve continues it: its time so far still counts.
+      if (mid_solve)
+        quality_.reset();
+      else
+        forget_result();
     } else if (mesh_.num_faces() > 0) {
       // Build now, so a panel count the mesh cannot take is refused here, not at step().
       remesher_ = std::make_unique<Remesher>(mesh_, params);
@@ -307,12 +312,13 @@ std::string Session::problems() {
 std::string Session::report_json() {
   return guarded([&]() -> std::string {
     const QualityReport* q = quality();
-    if (!q) return "{}";
+    if (!q) return status_json(true, "");
     const Remesher& r = *remesher_;
     const RemeshParams& p = r.params();
     const PanelMesh& pm = r.panels();
     JsonWriter j;
     j.begin_object();
+    j.value("ok", true);
     j.value("input", name_).value("mesh_vertices", mesh_.num_vertices()).value("triangles", mesh_.num_faces());
     j.value("components", topology_.num_components);
     j.begin_array("cleanup");
@@ -357,8 +363,12 @@ std::string Session::obj_text() {
 }
 
 std::string Session::parts_csv() const {
-  if (!remesher_) return parts_list_csv(PanelMesh{});
-  return parts_list_csv(remesher_->panels());
+  return guarded([&] { return parts_list_csv(remesher_ ? remesher_->panels() : PanelMesh{}); });
+}
+
+void Session::reset_solve() {
+  remesher_.reset();
+  forget_result();
 }
 
 }  // namespace ff::wasm

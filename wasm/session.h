@@ -4,7 +4,9 @@
 // for JavaScript), so everything the page can do is also callable from native code.
 //
 // Every failing call leaves the previous mesh, parameters and result as they were, and
-// answers with a Status JSON {"ok": false, "message": "..."} naming the problem.
+// answers with a Status JSON {"ok": false, "message": "..."} naming the problem. The one
+// exception that can still escape is running out of memory in the typed-array getters (a
+// std::bad_alloc from a copy); the page treats that, and any wasm trap, as a crashed solver.
 #include <array>
 #include <chrono>
 #include <cstdint>
@@ -38,6 +40,9 @@ class Session {
   // Progress JSON.
   std::string step();
   bool done() const;
+  // Drops the solve: the next step() starts cold from the loaded mesh with the current
+  // parameters (what a new Session would do), without reading the mesh again.
+  void reset_solve();
 
   std::vector<float> input_positions() const;
   std::vector<std::uint32_t> input_indices() const;
@@ -51,8 +56,8 @@ class Session {
   std::vector<double> corner_planarity() const;
   std::string problems();
   std::string report_json();
-  std::string obj_text();  // empty without panels
-  std::string parts_csv() const;
+  std::string obj_text();         // empty without panels
+  std::string parts_csv() const;  // a Status JSON on failure
 
  private:
   struct Timings {

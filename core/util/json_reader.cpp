@@ -129,7 +129,8 @@ class Parser {
     }
   }
 
-  // \uXXXX as UTF-8 (surrogate pairs are kept as two 3-byte sequences: names we read are ASCII).
+  // \uXXXX as UTF-8; a surrogate pair becomes two 3-byte sequences (CESU-8), which is fine for
+  // what we read: names and values are compared with ASCII words, never decoded further.
   std::string unicode() {
     if (pos_ + 4 > text_.size()) fail("short \\u escape");
     unsigned code = 0;
@@ -168,7 +169,9 @@ class Parser {
       return pos_ > from;
     };
     if (pos_ < text_.size() && text_[pos_] == '-') ++pos_;
+    const size_t integer = pos_;
     if (!digits()) fail("expected a value");
+    if (text_[integer] == '0' && pos_ - integer > 1) fail("leading zero in a number");
     if (pos_ < text_.size() && text_[pos_] == '.') {
       ++pos_;
       if (!digits()) fail("expected digits after '.'");

@@ -1,7 +1,9 @@
 #pragma once
-// A small strict JSON reader for parameter objects that cross from the browser (and may come
-// from a hostile share link): objects, arrays, strings, numbers, booleans, null. Nesting and
-// size are bounded; any syntax error throws InputError naming the offset.
+// A small JSON reader for parameter objects that cross from the browser (and may come from a
+// hostile share link): objects, arrays, strings, numbers, booleans, null, with JSON's grammar
+// checked strictly (no NaN, hex, leading zeros, trailing commas or garbage). Nesting and size
+// are bounded; any error throws InputError naming the offset. Strings are kept as bytes (not
+// checked as UTF-8): callers compare them with ASCII words.
 #include <string>
 #include <string_view>
 #include <utility>

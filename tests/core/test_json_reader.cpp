@@ -28,7 +28,7 @@ TEST(JsonReader, ReadsEveryKind) {
 
 TEST(JsonReader, RefusesWhatIsNotJson) {
   for (const char* bad : {"", "{", "[1,]", "{\"a\" 1}", "01x", "NaN", "Infinity", "+1", "0x10", ".5", "1.", "1e",
-                          "\"\\q\"", "\"abc", "[1] 2", "{\"a\":1,}", "tru", "\"\x01\""}) {
+                          "\"\\q\"", "\"abc", "[1] 2", "{\"a\":1,}", "tru", "\"\x01\"", "01", "-00.5"}) {
     EXPECT_THROW(parse_json(bad), InputError) << bad;
   }
 }

@@ -186,3 +186,61 @@ test('a shared mesh read from bytes gives the same panels as the native CLI', as
     });
   }
 });
+
+test('a warm-start chain replayed in a new session gives the identical OBJ (what share links rely on)', () => {
+  const chain = [
+    { panels: 50, seed: 11 },
+    { panels: 70, seed: 11 },
+    { panels: 60, seed: 11, weights: { l2: 2 } },
+  ];
+  const run = () => {
+    const s = session();
+    s.loadShape('freeform_roof', 6000);
+    for (const params of chain) {
+      assert.equal(json(s.setParams(JSON.stringify(params))).ok, true);
+      solve(s);
+    }
+    const obj = s.objText();
+    s.delete();
+    return obj;
+  };
+  const first = run();
+  assert.equal(parseObj(first).faces.length, 60);
+  assert.equal(run(), first);
+});
+
+test('resetSolve starts cold like a new session, without reading the mesh again', () => {
+  const bytes = readFileSync(path.join(meshes, 'epcot.off'));
+  const fresh = session();
+  fresh.loadMesh('epcot.off', bytes);
+  fresh.setParams(JSON.stringify({ panels: 30, seed: 2 }));
+  solve(fresh);
+  const expected = fresh.objText();
+  fresh.delete();
+
+  const s = session();
+  s.loadMesh('epcot.off', bytes);
+  s.setParams(JSON.stringify({ panels: 45, seed: 2 }));
+  solve(s);
+  s.setParams(JSON.stringify({ panels: 30, seed: 2 }));
+  s.resetSolve();
+  assert.equal(s.done(), false);
+  assert.equal(s.objText(), '');
+  solve(s);
+  assert.equal(s.objText(), expected);
+  s.delete();
+});
+
+test('the largest seed a link can carry (2^53 - 1) reaches the core and the report unchanged', () => {
+  const s = session();
+  s.loadShape('saddle', 3000);
+  const seed = Number.MAX_SAFE_INTEGER;
+  assert.equal(json(s.setParams(JSON.stringify({ panels: 20, seed }))).ok, true);
+  solve(s);
+  const report = json(s.reportJson());
+  assert.equal(report.ok, true);
+  assert.equal(report.seed, seed);
+  assert.match(s.objText(), new RegExp(`seed: ${seed}`));
+  expectError(s.setParams(JSON.stringify({ panels: 20, seed: seed + 1 })), /seed/);
+  s.delete();
+});
