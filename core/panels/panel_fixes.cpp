@@ -175,6 +175,23 @@ int PanelLayout::try_planes(const std::vector<Plane>& candidates) {
   return kept;
 }
 
+std::vector<char> PanelLayout::spike_master_clusters() const {
+  std::vector<char> out(planes_.master_of.size(), 0);
+  const std::vector<char> spikes = spike_nodes();
+  for (size_t node = 0; node < node_point_.size(); ++node) {
+    if (!spikes[node] || node_planes_[node] < 3 || single_[static_cast<size_t>(node_group_[node])]) continue;
+    const int g = node_group_[node];
+    const NodeGroup& group = groups_.groups[static_cast<size_t>(g)];
+    for (int p : pairing_[static_cast<size_t>(g)][node - static_cast<size_t>(node_offset_[static_cast<size_t>(g)])]) {
+      const int c = group.clusters[static_cast<size_t>(p)];
+      if (c == kBoundary) continue;
+      if (planes_.count[static_cast<size_t>(planes_.master_of[static_cast<size_t>(c)])] > 1)
+        out[static_cast<size_t>(c)] = 1;
+    }
+  }
+  return out;
+}
+
 std::vector<std::pair<int, int>> PanelLayout::reversed_chains() const {
   std::vector<std::pair<int, int>> out;
   for (size_t c = 0; c < polygons_.size(); ++c) {

@@ -68,6 +68,9 @@ class PanelLayout {
   std::vector<NodeConstraint> node_constraints() const;
   void set_planes(std::vector<Plane> planes);
   std::vector<char> spike_nodes() const;
+  // The clusters at spike nodes of three distinct planes that share their master with other
+  // clusters (per cluster): alone, their planes can tilt where a master could not.
+  std::vector<char> spike_master_clusters() const;
   // Chains of invalid panels whose two nodes came out in the opposite order to their corners
   // (a flipped edge, paper fig. 6), as sorted corner pairs: grouping them lets the pairing
   // switch which two clusters share the edge.
