@@ -15,6 +15,17 @@ std::vector<Plane> proxy_planes(const Clustering& clustering) {
   return planes;
 }
 
+// Per master: whether a fixed (settled) cluster is on it; empty when none is fixed.
+std::vector<char> fixed_masters_of(const PanelLayout& layout, const std::vector<char>& fixed) {
+  std::vector<char> out;
+  if (fixed.empty()) return out;
+  out.assign(layout.planes().planes.size(), 0);
+  for (size_t c = 0; c < fixed.size() && c < layout.planes().master_of.size(); ++c) {
+    if (fixed[c]) out[static_cast<size_t>(layout.planes().master_of[c])] = 1;
+  }
+  return out;
+}
+
 // Relaxes the layout's planes (plane_relax.h), then the paper's tilt (2.3) in the same least
 // squares: pull the spikes harder and relax again, for as long as that lowers the number of
 // invalid panels. Masters with a fixed cluster stay.
@@ -23,13 +34,7 @@ void relax(PanelLayout& layout, const std::vector<ClusterMoments>& moments, cons
   const size_t n = moments.size();
   std::vector<ClusterMoments> master_moments(layout.planes().planes.size());
   for (size_t c = 0; c < n; ++c) master_moments[static_cast<size_t>(layout.planes().master_of[c])].add(moments[c]);
-  std::vector<char> fixed_masters;
-  if (!fixed.empty()) {
-    fixed_masters.assign(master_moments.size(), 0);
-    for (size_t c = 0; c < n && c < fixed.size(); ++c) {
-      if (fixed[c]) fixed_masters[static_cast<size_t>(layout.planes().master_of[c])] = 1;
-    }
-  }
+  const std::vector<char> fixed_masters = fixed_masters_of(layout, fixed);
   std::vector<NodeConstraint> nodes = layout.node_constraints();
   layout.set_planes(relax_planes(nodes, master_moments, layout.planes().planes, options.relax_options, fixed_masters));
   for (int t = 0; t < options.tilt_rounds && layout.num_invalid() > 0; ++t) {
@@ -108,13 +113,13 @@ PanelAttempt::PanelAttempt(const TriMesh& mesh, const MeshTopology& topology, co
     return layout;
   };
   layout_ = lay_out({});
-  // Spikes at nodes of three distinct planes where a plane is a master shared by several
-  // clusters: on a barrel vault, strips of panels along the axis snap into one master each,
-  // and where a strip ends between two others, all three planes nearly contain the axis, so
-  // their point runs off along it; a whole strip cannot tilt without leaving its faces. The
-  // cluster at the strip's end can: take the clusters at such nodes out of their masters
-  // (the paper's "snap/unsnap facets to master planes", 4) and relax again; kept when
-  // fewer panels are invalid.
+  // Spikes at nodes where a plane is a master shared by several clusters: on a barrel vault,
+  // strips of panels along the axis snap into one master each, and where a strip ends
+  // between two others all three planes nearly contain the axis, so their point runs off
+  // along it; a whole strip cannot tilt without leaving its faces. The cluster at the
+  // strip's end can: take the clusters at such nodes out of their masters (the paper's
+  // "snap/unsnap facets to master planes", 4) and relax again; kept when fewer panels are
+  // invalid.
   std::vector<char> alone(n, 0);
   for (int t = 0; t < options.unsnap_rounds && layout_->num_invalid() > 0; ++t) {
     bool more = false;
@@ -145,7 +150,7 @@ PanelAttempt::PanelAttempt(const TriMesh& mesh, const MeshTopology& topology, co
     layout_ = std::move(regrouped);
   }
   for (int t = 0; t < options.tilt_rounds && layout_->num_invalid() > 0; ++t) {
-    if (!layout_->tilt_spike_planes()) break;
+    if (!layout_->tilt_spike_planes(fixed_masters_of(*layout_, fixed))) break;
     layout_->switch_pairings();
   }
 }
