@@ -13,6 +13,7 @@ struct Group {
   Vec3 center_sum = Vec3::Zero();
   double area = 0.0;
   int members = 1;
+  int fixed = -1;  // a member whose plane is fixed: the group keeps it
 };
 
 int find(std::vector<int>& parent, int x) {
@@ -27,7 +28,7 @@ int find(std::vector<int>& parent, int x) {
 
 MasterPlanes snap_master_planes(const std::vector<Plane>& planes, const std::vector<Vec3>& centers,
                                 const std::vector<double>& areas, const std::vector<std::pair<int, int>>& neighbours,
-                                double max_angle_deg) {
+                                double max_angle_deg, const std::vector<char>& fixed, const std::vector<char>& alone) {
   const size_t n = planes.size();
   const double cos_max = std::cos(max_angle_deg * M_PI / 180.0);
   std::vector<Group> groups(n);
@@ -35,14 +36,17 @@ MasterPlanes snap_master_planes(const std::vector<Plane>& planes, const std::vec
   std::iota(parent.begin(), parent.end(), 0);
   for (size_t i = 0; i < n; ++i) {
     const double a = std::max(areas[i], 1e-300);
-    groups[i] = Group{a * planes[i].normal, a * centers[i], a, 1};
+    const int kept = i < fixed.size() && fixed[i] ? static_cast<int>(i) : -1;
+    groups[i] = Group{a * planes[i].normal, a * centers[i], a, 1, kept};
   }
   struct Candidate {
     double cosine;
     int a, b;
   };
   std::vector<Candidate> close;
+  const auto single = [&](int c) { return static_cast<size_t>(c) < alone.size() && alone[static_cast<size_t>(c)]; };
   for (const auto& [a, b] : neighbours) {
+    if (single(a) || single(b)) continue;
     const double c = planes[static_cast<size_t>(a)].normal.dot(planes[static_cast<size_t>(b)].normal);
     if (c > cos_max) close.push_back({c, std::min(a, b), std::max(a, b)});
   }
@@ -56,9 +60,15 @@ MasterPlanes snap_master_planes(const std::vector<Plane>& planes, const std::vec
     Group& ga = groups[static_cast<size_t>(ra)];
     Group& gb = groups[static_cast<size_t>(rb)];
     if (ga.normal_sum.normalized().dot(gb.normal_sum.normalized()) <= cos_max) continue;
+    // Two fixed planes stay as they are: they join only when they are the same plane.
+    if (ga.fixed >= 0 && gb.fixed >= 0) {
+      const Plane& pa = planes[static_cast<size_t>(ga.fixed)];
+      const Plane& pb = planes[static_cast<size_t>(gb.fixed)];
+      if (pa.normal != pb.normal || pa.offset != pb.offset) continue;
+    }
     const int root = std::min(ra, rb), child = std::max(ra, rb);
     Group merged{ga.normal_sum + gb.normal_sum, ga.center_sum + gb.center_sum, ga.area + gb.area,
-                 ga.members + gb.members};
+                 ga.members + gb.members, ga.fixed >= 0 ? ga.fixed : gb.fixed};
     groups[static_cast<size_t>(root)] = merged;
     parent[static_cast<size_t>(child)] = root;
   }
@@ -70,7 +80,9 @@ MasterPlanes snap_master_planes(const std::vector<Plane>& planes, const std::vec
     if (id_of_root[static_cast<size_t>(r)] < 0) {
       id_of_root[static_cast<size_t>(r)] = static_cast<int>(m.planes.size());
       const Group& g = groups[static_cast<size_t>(r)];
-      if (g.members == 1) {
+      if (g.fixed >= 0) {
+        m.planes.push_back(planes[static_cast<size_t>(g.fixed)]);
+      } else if (g.members == 1) {
         m.planes.push_back(planes[i]);  // a group of one keeps its plane exactly
       } else {
         m.planes.push_back(Plane::through(g.center_sum / g.area, g.normal_sum.normalized()));

@@ -24,8 +24,13 @@ struct MasterPlanes {
 // pair, joining two groups only while their area-weighted normals stay within the angle (so
 // a gently curved strip does not chain into one plane). A group's plane: the area-weighted
 // normal through the area-weighted centre. Deterministic.
+// `fixed` (per cluster, empty for none): planes kept from an earlier round (settled
+// clusters); a group with one keeps that plane exactly, and two groups with different fixed
+// planes never join. `alone` (per cluster, empty for none): clusters that keep their own
+// plane, in no group.
 MasterPlanes snap_master_planes(const std::vector<Plane>& planes, const std::vector<Vec3>& centers,
                                 const std::vector<double>& areas, const std::vector<std::pair<int, int>>& neighbours,
-                                double max_angle_deg = 1.0);
+                                double max_angle_deg = 1.0, const std::vector<char>& fixed = {},
+                                const std::vector<char>& alone = {});
 
 }  // namespace ff

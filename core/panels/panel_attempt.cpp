@@ -15,6 +15,50 @@ std::vector<Plane> proxy_planes(const Clustering& clustering) {
   return planes;
 }
 
+// Per master: whether a fixed (settled) cluster is on it; empty when none is fixed.
+std::vector<char> fixed_masters_of(const PanelLayout& layout, const std::vector<char>& fixed) {
+  std::vector<char> out;
+  if (fixed.empty()) return out;
+  out.assign(layout.planes().planes.size(), 0);
+  for (size_t c = 0; c < fixed.size() && c < layout.planes().master_of.size(); ++c) {
+    if (fixed[c]) out[static_cast<size_t>(layout.planes().master_of[c])] = 1;
+  }
+  return out;
+}
+
+// Relaxes the layout's planes (plane_relax.h), then the paper's tilt (2.3) in the same least
+// squares: pull the spikes harder and relax again, for as long as that lowers the number of
+// invalid panels. Masters with a fixed cluster stay.
+void relax(PanelLayout& layout, const std::vector<ClusterMoments>& moments, const std::vector<char>& fixed,
+           const PanelAttemptOptions& options) {
+  const size_t n = moments.size();
+  std::vector<ClusterMoments> master_moments(layout.planes().planes.size());
+  for (size_t c = 0; c < n; ++c) master_moments[static_cast<size_t>(layout.planes().master_of[c])].add(moments[c]);
+  const std::vector<char> fixed_masters = fixed_masters_of(layout, fixed);
+  std::vector<NodeConstraint> nodes = layout.node_constraints();
+  layout.set_planes(relax_planes(nodes, master_moments, layout.planes().planes, options.relax_options, fixed_masters));
+  for (int t = 0; t < options.tilt_rounds && layout.num_invalid() > 0; ++t) {
+    // Spikes, and every node of a panel that is invalid otherwise (a flipped edge is two
+    // nodes in the wrong order: pulled to their corners they come back in order).
+    std::vector<char> pull = layout.spike_nodes();
+    for (int c = 0; c < layout.num_clusters(); ++c) {
+      if (layout.issues()[static_cast<size_t>(c)].valid()) continue;
+      for (int node : layout.polygon(c).node) {
+        if (node >= 0) pull[static_cast<size_t>(node)] = 1;
+      }
+    }
+    if (std::find(pull.begin(), pull.end(), 1) == pull.end()) break;
+    for (size_t k = 0; k < nodes.size(); ++k) nodes[k].weight *= pull[k] ? 10.0 : 1.0;
+    const std::vector<Plane> before = layout.planes().planes;
+    const int invalid = layout.num_invalid();
+    layout.set_planes(relax_planes(nodes, master_moments, before, options.relax_options, fixed_masters));
+    if (layout.num_invalid() >= invalid) {
+      layout.set_planes(before);
+      break;
+    }
+  }
+}
+
 }  // namespace
 
 PanelAttempt::PanelAttempt(const TriMesh& mesh, const MeshTopology& topology, const std::vector<Vec3>& positions,
@@ -55,46 +99,38 @@ PanelAttempt::PanelAttempt(const TriMesh& mesh, const MeshTopology& topology, co
     areas[c] = moments[c].area;
   }
   neighbours_ = plane_neighbours(topology, clustering_.labels, graph_);
-  MasterPlanes masters = snap_master_planes(planes, centers, areas, neighbours_, options.master_angle_deg);
   LayoutOptions layout_options = options.layout;
   layout_options.spike_distance = spike_distance_;
-  layout_ = std::make_unique<PanelLayout>(mesh, topology, clustering_.labels, positions, graph_, std::move(masters),
-                                          layout_options);
-  if (options.relax) {
-    std::vector<ClusterMoments> master_moments(layout_->planes().planes.size());
-    for (size_t c = 0; c < n; ++c) master_moments[static_cast<size_t>(layout_->planes().master_of[c])].add(moments[c]);
-    std::vector<char> fixed_masters;
-    if (any_fixed) {
-      fixed_masters.assign(master_moments.size(), 0);
-      for (size_t c = 0; c < n && c < options.fixed.size(); ++c) {
-        if (options.fixed[c]) fixed_masters[static_cast<size_t>(layout_->planes().master_of[c])] = 1;
-      }
+  const std::vector<char> no_fixed;
+  const std::vector<char>& fixed = any_fixed ? options.fixed : no_fixed;
+  // Planes, relaxed (plane_relax.h), for one choice of master planes.
+  const auto lay_out = [&](const std::vector<char>& alone) {
+    MasterPlanes masters =
+        snap_master_planes(planes, centers, areas, neighbours_, options.master_angle_deg, fixed, alone);
+    auto layout = std::make_unique<PanelLayout>(mesh, topology, clustering_.labels, positions, graph_,
+                                                std::move(masters), layout_options);
+    if (options.relax) relax(*layout, moments, fixed, options);
+    return layout;
+  };
+  layout_ = lay_out({});
+  // Spikes at nodes where a plane is a master shared by several clusters: on a barrel vault,
+  // strips of panels along the axis snap into one master each, and where a strip ends
+  // between two others all three planes nearly contain the axis, so their point runs off
+  // along it; a whole strip cannot tilt without leaving its faces. The cluster at the
+  // strip's end can: take the clusters at such nodes out of their masters (the paper's
+  // "snap/unsnap facets to master planes", 4) and relax again; kept when fewer panels are
+  // invalid.
+  std::vector<char> alone(n, 0);
+  for (int t = 0; t < options.unsnap_rounds && layout_->num_invalid() > 0; ++t) {
+    bool more = false;
+    const std::vector<char> spiked = layout_->spike_master_clusters();
+    for (size_t c = 0; c < n; ++c) {
+      if (spiked[c] && !alone[c]) alone[c] = 1, more = true;
     }
-    std::vector<NodeConstraint> nodes = layout_->node_constraints();
-    layout_->set_planes(
-        relax_planes(nodes, master_moments, layout_->planes().planes, options.relax_options, fixed_masters));
-    // The paper's tilt (2.3), in the same least squares: pull the spikes harder and relax
-    // again, for as long as that lowers the number of invalid panels.
-    for (int t = 0; t < options.tilt_rounds && layout_->num_invalid() > 0; ++t) {
-      // Spikes, and every node of a panel that is invalid otherwise (a flipped edge is two
-      // nodes in the wrong order: pulled to their corners they come back in order).
-      std::vector<char> pull = layout_->spike_nodes();
-      for (int c = 0; c < layout_->num_clusters(); ++c) {
-        if (layout_->issues()[static_cast<size_t>(c)].valid()) continue;
-        for (int node : layout_->polygon(c).node) {
-          if (node >= 0) pull[static_cast<size_t>(node)] = 1;
-        }
-      }
-      if (std::find(pull.begin(), pull.end(), 1) == pull.end()) break;
-      for (size_t k = 0; k < nodes.size(); ++k) nodes[k].weight *= pull[k] ? 10.0 : 1.0;
-      const std::vector<Plane> before = layout_->planes().planes;
-      const int invalid = layout_->num_invalid();
-      layout_->set_planes(relax_planes(nodes, master_moments, before, options.relax_options, fixed_masters));
-      if (layout_->num_invalid() >= invalid) {
-        layout_->set_planes(before);
-        break;
-      }
-    }
+    if (!more) break;
+    auto unsnapped = lay_out(alone);
+    if (unsnapped->num_invalid() >= layout_->num_invalid()) break;
+    layout_ = std::move(unsnapped);
   }
   layout_->switch_pairings();
   // Flipped edges between two nodes: group their corners and let the pairing choose again
@@ -114,7 +150,7 @@ PanelAttempt::PanelAttempt(const TriMesh& mesh, const MeshTopology& topology, co
     layout_ = std::move(regrouped);
   }
   for (int t = 0; t < options.tilt_rounds && layout_->num_invalid() > 0; ++t) {
-    if (!layout_->tilt_spike_planes()) break;
+    if (!layout_->tilt_spike_planes(fixed_masters_of(*layout_, fixed))) break;
     layout_->switch_pairings();
   }
 }

@@ -18,6 +18,9 @@ struct PanelAttemptOptions {
   // centre to its boundary), not D = sqrt(area / n): a regular hexagon is 1.24 D across.
   double spike_factor = 0.2;
   double master_angle_deg = 1.0;
+  // Rounds of taking the clusters at spike nodes out of their master planes (each kept only
+  // when it leaves fewer invalid panels; PanelLayout::spike_master_clusters).
+  int unsnap_rounds = 4;
   int tilt_rounds = 3;
   // Weight of the corners in the planes' fit (plane_fit.h corner_fit_planes); 0: the proxies.
   double corner_weight = 1.0;

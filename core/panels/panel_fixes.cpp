@@ -105,7 +105,7 @@ int PanelLayout::switch_pairings() {
   return changes;
 }
 
-bool PanelLayout::tilt_spike_planes() {
+bool PanelLayout::tilt_spike_planes(const std::vector<char>& fixed_masters) {
   MasterPlanes tilted = planes_;
   bool any = false;
   const std::vector<char> spikes = spike_nodes();
@@ -113,6 +113,7 @@ bool PanelLayout::tilt_spike_planes() {
     if (!spikes[node]) continue;
     const Vec3& at = groups_.groups[static_cast<size_t>(node_group_[node])].reference;
     for (int m : masters_of_node(node)) {
+      if (static_cast<size_t>(m) < fixed_masters.size() && fixed_masters[static_cast<size_t>(m)]) continue;
       Plane& plane = tilted.planes[static_cast<size_t>(m)];
       // Average the plane with the nearest plane through its centre and the corner.
       const Vec3& center = planes_.centers[static_cast<size_t>(m)];
@@ -174,6 +175,23 @@ int PanelLayout::try_planes(const std::vector<Plane>& candidates) {
     }
   }
   return kept;
+}
+
+std::vector<char> PanelLayout::spike_master_clusters() const {
+  std::vector<char> out(planes_.master_of.size(), 0);
+  const std::vector<char> spikes = spike_nodes();
+  for (size_t node = 0; node < node_point_.size(); ++node) {
+    if (!spikes[node] || node_planes_[node] < 2 || single_[static_cast<size_t>(node_group_[node])]) continue;
+    const int g = node_group_[node];
+    const NodeGroup& group = groups_.groups[static_cast<size_t>(g)];
+    for (int p : pairing_[static_cast<size_t>(g)][node - static_cast<size_t>(node_offset_[static_cast<size_t>(g)])]) {
+      const int c = group.clusters[static_cast<size_t>(p)];
+      if (c == kBoundary) continue;
+      if (planes_.count[static_cast<size_t>(planes_.master_of[static_cast<size_t>(c)])] > 1)
+        out[static_cast<size_t>(c)] = 1;
+    }
+  }
+  return out;
 }
 
 std::vector<std::pair<int, int>> PanelLayout::reversed_chains() const {

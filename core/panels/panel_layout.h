@@ -56,8 +56,9 @@ class PanelLayout {
   // lowers the number of invalid panels around the group. Returns the number of changes.
   int switch_pairings();
   // Tilts the planes around spike nodes towards their corner (paper 2.3); keeps the tilts
-  // when they lower the number of invalid panels. Returns true when it kept any.
-  bool tilt_spike_planes();
+  // when they lower the number of invalid panels; fixed_masters (per master, empty for none)
+  // stay. Returns true when it kept any.
+  bool tilt_spike_planes(const std::vector<char>& fixed_masters = {});
   // Replaces the plane of each master with `candidates[m]`, one at a time, keeping each
   // change that does not add invalid panels around it (beyond the paper: planes fitted to
   // the surface). Returns how many it kept.
@@ -68,6 +69,9 @@ class PanelLayout {
   std::vector<NodeConstraint> node_constraints() const;
   void set_planes(std::vector<Plane> planes);
   std::vector<char> spike_nodes() const;
+  // The clusters at spike nodes (of two or more distinct planes) that share their master with
+  // other clusters (per cluster): alone, their planes can tilt where a master could not.
+  std::vector<char> spike_master_clusters() const;
   // Chains of invalid panels whose two nodes came out in the opposite order to their corners
   // (a flipped edge, paper fig. 6), as sorted corner pairs: grouping them lets the pairing
   // switch which two clusters share the edge.

@@ -125,5 +125,40 @@ TEST(MasterPlanes, Deterministic) {
   for (size_t k = 0; k < a.planes.size(); ++k) EXPECT_TRUE(a.planes[k].normal == b.planes[k].normal);
 }
 
+// Settled clusters keep their planes from round to round: a group with a fixed plane takes
+// it bit for bit, and two different fixed planes never join.
+TEST(MasterPlanes, FixedPlanesAreKeptExactly) {
+  const std::vector<Vec3> centers = {Vec3(0, 0, 0), Vec3(1, 0, 0.01), Vec3(2, 0, 0.02)};
+  const std::vector<Plane> planes = {Plane::through(centers[0], tilted(0.0)), Plane::through(centers[1], tilted(0.3)),
+                                     Plane::through(centers[2], tilted(0.6))};
+  const std::vector<std::pair<int, int>> neighbours = {{0, 1}, {1, 2}};
+  const MasterPlanes free = snap_master_planes(planes, centers, {1.0, 1.0, 1.0}, neighbours);
+  ASSERT_EQ(free.planes.size(), 1u);
+  const MasterPlanes kept = snap_master_planes(planes, centers, {1.0, 1.0, 1.0}, neighbours, 1.0, {0, 0, 1});
+  ASSERT_EQ(kept.planes.size(), 1u);
+  EXPECT_EQ(kept.planes[0].normal, planes[2].normal);
+  EXPECT_EQ(kept.planes[0].offset, planes[2].offset);
+  const MasterPlanes two = snap_master_planes(planes, centers, {1.0, 1.0, 1.0}, neighbours, 1.0, {1, 0, 1});
+  ASSERT_EQ(two.planes.size(), 2u);
+  EXPECT_NE(two.master_of[0], two.master_of[2]);
+  EXPECT_EQ(two.plane_of(0).normal, planes[0].normal);
+  EXPECT_EQ(two.plane_of(2).normal, planes[2].normal);
+  EXPECT_TRUE(two.plane_of(1).normal == planes[0].normal || two.plane_of(1).normal == planes[2].normal);
+}
+
+// A cluster left alone keeps its own plane; the others still snap.
+TEST(MasterPlanes, AloneClustersStayOutOfGroups) {
+  const std::vector<Vec3> centers = {Vec3(0, 0, 0), Vec3(1, 0, 0.01), Vec3(2, 0, 0.02)};
+  const std::vector<Plane> planes = {Plane::through(centers[0], tilted(0.0)), Plane::through(centers[1], tilted(0.1)),
+                                     Plane::through(centers[2], tilted(0.2))};
+  const MasterPlanes m =
+      snap_master_planes(planes, centers, {1.0, 1.0, 1.0}, {{0, 1}, {1, 2}, {0, 2}}, 1.0, {}, {0, 0, 1});
+  ASSERT_EQ(m.planes.size(), 2u);
+  EXPECT_EQ(m.master_of[0], m.master_of[1]);
+  EXPECT_EQ(m.count[static_cast<size_t>(m.master_of[2])], 1);
+  EXPECT_EQ(m.plane_of(2).normal, planes[2].normal);
+  EXPECT_EQ(m.plane_of(2).offset, planes[2].offset);
+}
+
 }  // namespace
 }  // namespace ff
