@@ -30,7 +30,7 @@ try {
   const worker = [];
   const core = [];
   for (let run = 0; run < runs; run++) {
-    // Identical parameters solve afresh (a new session), so every run is a cold solve.
+    // Identical parameters solve afresh (Session.resetSolve), so every run is a cold solve.
     const made = await solveAfter(page, () => remesh(page), 300_000);
     if (made !== panels) throw new Error(`asked for ${panels} panels, got ${made}`);
     const times = await page.locator('#stats').evaluate((element) => ({ worker: Number(element.dataset.solveSeconds), core: Number(element.dataset.coreSeconds) }));

@@ -85,7 +85,14 @@ export async function statusText(page) {
 
 // The page counts finished solves and shown errors on <body> (data-solves, data-errors).
 export async function outcomes(page) {
-  return page.evaluate(() => ({ solves: Number(document.body.dataset.solves ?? 0), errors: Number(document.body.dataset.errors ?? 0) }));
+  return page.evaluate(() => ({ solves: Number(document.body.dataset.solves ?? 0), errors: Number(document.body.dataset.errors ?? 0), saves: Number(document.body.dataset.saves ?? 0) }));
+}
+
+// Waits until the session is written to this browser's storage after `since` (outcomes()
+// taken before the action): a reload before that would restore an older design.
+// `count`: the saves expected since (one per load, one per finished solve).
+export async function waitForSaved(page, since, count = 1, timeoutMs = 30_000) {
+  await page.waitForFunction(([since, count]) => Number(document.body.dataset.saves ?? 0) >= since.saves + count, [since, count], { timeout: timeoutMs, polling: 20 });
 }
 
 // Waits for the next finished solve after `since` (from outcomes(); default: the first) and
@@ -136,6 +143,15 @@ export async function waitForStatus(page, pattern, timeoutMs = 60_000) {
 
 export async function waitForSolving(page, timeoutMs = 30_000) {
   await page.waitForFunction(() => document.body.dataset.solving === 'true', null, { timeout: timeoutMs, polling: 20 });
+}
+
+// Waits until the solve under way has shown a progress line (the worker is stepping).
+export async function waitForProgress(page, timeoutMs = 60_000) {
+  await page.waitForFunction(
+    () => document.body.dataset.solving === 'true' && (document.querySelector('[role="status"]')?.textContent ?? '').startsWith('Solving:'),
+    null,
+    { timeout: timeoutMs, polling: 20 },
+  );
 }
 
 export async function setPanels(page, panels) {

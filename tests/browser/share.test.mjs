@@ -9,6 +9,7 @@ import {
   download,
   launchBrowser,
   openPage,
+  outcomes,
   remesh,
   selectExample,
   setPanels,
@@ -17,6 +18,7 @@ import {
   startServer,
   statusText,
   waitForDone,
+  waitForSaved,
 } from './harness.mjs';
 
 let server;
@@ -137,8 +139,10 @@ test('a reload restores the last design from this browser', async () => {
     await waitForDone(page);
     await solveAfter(page, () => selectExample(page, 'helicoid'));
     await setPanels(page, 64);
+    let since = await outcomes(page);
     assert.equal(await solveAfter(page, () => remesh(page)), 64);
     const before = (await download(page, 'Export OBJ')).text;
+    await waitForSaved(page, since);
     await page.reload();
     assert.equal(await waitForDone(page), 64);
     assert.equal(await page.getByLabel('Example', { exact: true }).inputValue(), 'helicoid');
@@ -146,7 +150,9 @@ test('a reload restores the last design from this browser', async () => {
     assert.equal((await download(page, 'Export OBJ')).text, before, 'the same panels after the reload');
     // An uploaded mesh survives a reload too.
     await setPanels(page, 30);
+    since = await outcomes(page);
     await solveAfter(page, () => page.getByLabel('Open mesh').setInputFiles(join(sharedMeshes, 'bumpy.off')));
+    await waitForSaved(page, since, 2); // the load's and the solve's
     await page.reload();
     assert.equal(await waitForDone(page), 30);
     assert.match(await page.locator('#mesh-title').textContent(), /bumpy\.off/);

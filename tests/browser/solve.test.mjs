@@ -23,6 +23,7 @@ import {
   startServer,
   statusText,
   waitForDone,
+  waitForProgress,
   waitForSolving,
   waitForStatus,
 } from './harness.mjs';
@@ -91,9 +92,10 @@ test('a mesh opened with "Open mesh" (OFF, then GLB) or dropped on the view is s
     assert.equal(await solveAfter(page, open), 24);
     assert.match(await page.locator('#mesh-details').textContent(), new RegExp(`${glb.triangles} triangles`));
     const canopy = parseObj((await download(page, 'Export OBJ')).text);
-    // The node's scale (10) and translation (5, 0, -3) reach the core: x spans 5..15.
+    // The node's scale (10) and translation (5, 0, -3) reach the core: x spans 5..15 (panel
+    // corners where planes meet may lie a little outside the surface's own box).
     const xs = canopy.vertices.map((v) => v[0]);
-    assert.ok(Math.min(...xs) > 4.9 && Math.max(...xs) < 15.1 && Math.max(...xs) - Math.min(...xs) > 9, `world coordinates (x in ${Math.min(...xs)}..${Math.max(...xs)})`);
+    assert.ok(Math.min(...xs) > 4.5 && Math.max(...xs) < 15.5 && Math.max(...xs) - Math.min(...xs) > 9, `world coordinates (x in ${Math.min(...xs)}..${Math.max(...xs)})`);
     await screenshot(page, 'uploaded-glb');
 
     // Dropped on the viewport: a generated OFF (a dome over a 12 x 12 grid).
@@ -154,8 +156,7 @@ test('Cancel answers at once during a solve, and the page keeps working', () =>
     await waitForDone(page);
     await setPanels(page, 500);
     await remesh(page);
-    await waitForSolving(page);
-    await page.waitForTimeout(400);
+    await waitForProgress(page);
     const started = Date.now();
     await page.getByRole('button', { name: 'Cancel' }).click();
     const message = await waitForStatus(page, /Cancelled/, 1000);
@@ -163,12 +164,12 @@ test('Cancel answers at once during a solve, and the page keeps working', () =>
     assert.ok(took < 1000, `cancelled within 1 s (${took} ms)`);
     assert.match(message, /Cancelled/);
     assert.equal(await page.getByRole('button', { name: 'Cancel' }).isDisabled(), true);
-    // Nothing from the cancelled solve arrives later.
-    await page.waitForTimeout(1500);
-    assert.match(await statusText(page), /Cancelled/);
+    const afterCancel = await outcomes(page);
     await setPanels(page, 150);
     // Enter in the field solves, like the Remesh button; Escape cancels.
     assert.equal(await solveAfter(page, () => page.getByLabel('Panels', { exact: true }).press('Enter')), 150);
+    // Nothing from the cancelled solve arrived: exactly one solve finished since, the new one.
+    assert.equal((await outcomes(page)).solves, afterCancel.solves + 1, 'the cancelled solve never finished on the page');
     await setPanels(page, 400);
     await remesh(page);
     await waitForSolving(page);
@@ -185,13 +186,14 @@ test('a cancel that replaces the worker (as for a long step) leaves the page wor
     const first = (await download(page, 'Export OBJ')).text;
     await setPanels(page, 500);
     await remesh(page);
-    await waitForSolving(page);
-    await page.waitForTimeout(300);
+    await waitForProgress(page);
     const started = Date.now();
+    const replacement = page.waitForEvent('worker', { timeout: 10_000 });
+    const closed = new Promise((resolve) => busyWorker.once('close', resolve));
     await page.getByRole('button', { name: 'Cancel' }).click();
     await waitForStatus(page, /Cancelled/, 1000);
     assert.ok(Date.now() - started < 1000);
-    await page.waitForTimeout(500);
+    await Promise.all([replacement, closed]);
     assert.equal(page.workers().length, 1, 'one solver worker');
     assert.notEqual(page.workers()[0], busyWorker, 'the busy worker was replaced by a new one');
     await setPanels(page, 300);
@@ -209,8 +211,7 @@ test('a parameter change during a solve reaches the worker and warm-starts it', 
     const since = await outcomes(page);
     await setPanels(page, 500);
     await remesh(page);
-    await waitForSolving(page);
-    await page.waitForTimeout(200);
+    await waitForProgress(page);
     await page.getByLabel('Panels', { exact: true }).fill('220');
     await page.getByLabel('Panels', { exact: true }).press('Enter');
     assert.equal(await waitForDone(page, since), 220, 'the running solve finished with the new count');
@@ -225,38 +226,53 @@ test('the main thread keeps painting frames during a long solve', () =>
     await page.getByText('Metric and solver').click();
     await page.getByLabel('Lloyd iterations').fill('100');
     await setPanels(page, 1200); // a solve of several seconds
+    // Frames are recorded from now on; the solve's span is from its first progress line on the
+    // page to its result, so a fast machine that finishes early still measures what it ran.
+    await page.evaluate(() => {
+      const record = { frames: [], firstProgress: null, done: null };
+      window.frameRecord = record;
+      const tick = (now) => {
+        record.frames.push(now);
+        if (record.done === null) requestAnimationFrame(tick);
+      };
+      requestAnimationFrame(tick);
+      const status = document.querySelector('[role="status"]');
+      new MutationObserver(() => {
+        const text = status.textContent ?? '';
+        if (record.firstProgress === null && text.startsWith('Solving:')) record.firstProgress = performance.now();
+        if (record.firstProgress !== null && record.done === null && /Done: \d+ panels$/.test(text)) record.done = performance.now();
+      }).observe(status, { childList: true, characterData: true, subtree: true });
+    });
+    const since = await outcomes(page);
     await remesh(page);
-    await waitForSolving(page);
-    const frames = await page.evaluate(
+    await waitForProgress(page);
+    // Input is handled at once too: a view toggle is drawn in the next frames (time from the
+    // click to the second animation frame after it, i.e. the frame its redraw went into).
+    const latency = await page.evaluate(
       () =>
         new Promise((resolve) => {
-          const times = [];
-          const start = performance.now();
-          const tick = (now) => {
-            times.push(now);
-            if (now - start < 1500) requestAnimationFrame(tick);
-            else resolve({ times, solving: document.body.dataset.solving === 'true' });
-          };
-          requestAnimationFrame(tick);
+          const box = document.getElementById('show-edges');
+          const t = performance.now();
+          box.click();
+          requestAnimationFrame(() => requestAnimationFrame(() => resolve(performance.now() - t)));
         }),
     );
-    const gaps = frames.times.slice(1).map((t, i) => t - frames.times[i]);
-    const maxGap = Math.max(...gaps);
-    assert.ok(frames.solving, 'the solve was still running when the measurement ended');
-    // Lenient for a software rasteriser on 2 cores (a GPU paints 60 a second); a solve on the
-    // main thread would paint none.
-    assert.ok(frames.times.length >= 15, `at least 10 frames a second (${frames.times.length} in 1.5 s)`);
-    assert.ok(maxGap < 500, `no frame gap of 500 ms or more (max ${maxGap.toFixed(0)} ms)`);
-    // Input is handled at once too: a view toggle answers within 100 ms.
-    const latency = await page.evaluate(() => {
-      const box = document.getElementById('show-edges');
-      const t = performance.now();
-      box.click();
-      return performance.now() - t;
-    });
-    assert.ok(latency < 100, `a toggle is handled in ${latency.toFixed(1)} ms`);
+    // As lenient as the frame gap below: software GL on 2 busy cores takes ~300 ms per redraw.
+    assert.ok(latency < 500, `a toggle is on screen ${latency.toFixed(0)} ms after the click`);
     await screenshot(page, 'clusters-converging');
-    assert.equal(await waitForDone(page, { solves: 1, errors: Number.MAX_SAFE_INTEGER }), 1200);
+    assert.equal(await waitForDone(page, since), 1200);
+    const record = await page.evaluate(() => window.frameRecord);
+    assert.ok(record.firstProgress !== null && record.done !== null, 'the solve was seen from its first progress to its result');
+    const span = record.done - record.firstProgress;
+    const frames = record.frames.filter((t) => t >= record.firstProgress && t <= record.done);
+    const edges = [record.firstProgress, ...frames, record.done];
+    const maxGap = Math.max(...edges.slice(1).map((t, i) => t - edges[i]));
+    // Lenient for a software rasteriser on 2 busy cores (a GPU paints 60 a second); a solve on
+    // the main thread would paint none.
+    const perSecond = (frames.length / span) * 1000;
+    if (process.env.FF_FRAME_STATS) console.log(`frames: ${frames.length} in ${span.toFixed(0)} ms (${perSecond.toFixed(1)}/s), max gap ${maxGap.toFixed(0)} ms, toggle ${latency.toFixed(0)} ms`);
+    assert.ok(perSecond >= 8, `at least 8 frames a second while solving (${frames.length} in ${span.toFixed(0)} ms)`);
+    assert.ok(maxGap < 500, `no frame gap of 500 ms or more while solving (max ${maxGap.toFixed(0)} ms)`);
   }));
 
 test('screenshots of the page after a solve, in each view', () =>

@@ -5,8 +5,8 @@ import assert from 'node:assert/strict';
 import { test } from 'node:test';
 import { zlibSync } from 'fflate';
 import { decodeBase64url, encodeBase64url } from '../../build/web-tests/base64url.js';
-import { DEFAULT_PARAMS, toRemeshParams, validateParams } from '../../build/web-tests/params.js';
-import { decodeState, encodePayload, hashToState, LINK_LIMITS, MAX_HISTORY, stateToHash } from '../../build/web-tests/share.js';
+import { DEFAULT_PARAMS, LIMITS, toRemeshParams, validateParams } from '../../build/web-tests/params.js';
+import { adler32, decodeState, encodePayload, encodeState, hashToState, LINK_LIMITS, MAX_HISTORY, MAX_LINK_HASH_CHARS, MAX_SHARED_MESH_BYTES, shareHash, stateToHash } from '../../build/web-tests/share.js';
 
 const params = { ...DEFAULT_PARAMS, panels: 90, seed: 12345678901, weights: { euclidean: 1, l2: 0.5, l21: 2, boundary: 1 } };
 
@@ -85,6 +85,9 @@ test('a deflate bomb stops at the size cap', () => {
 
 test('over-long links are refused before decoding', () => {
   refused(`#v1=${'A'.repeat(4 * 1024 * 1024)}`, /too long/);
+  refused(`#v1=${'A'.repeat(MAX_LINK_HASH_CHARS)}`, /too long/);
+  refused(`#v1=${'A'.repeat(MAX_LINK_HASH_CHARS - 3)}`, /too long/); // one character over
+  refused(`#v1=${'A'.repeat(MAX_LINK_HASH_CHARS - 4)}`, /damaged/); // at the cap: decoded, and refused for what it is
 });
 
 test('wrong versions, types and ranges in the settings are refused', () => {
@@ -151,4 +154,71 @@ test('form values are validated the same way, and map onto the wasm parameters',
     singlePointNodes: false,
     optimizePlanes: true,
   });
+});
+
+test('a corrupted link is refused: the zlib checksum is checked', () => {
+  const obj = new TextEncoder().encode('v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n'.repeat(50));
+  const state = { mesh: { kind: 'file', name: 'a.obj', bytes: obj }, params, history: [] };
+  const compressed = zlibSync(encodePayload(state), { level: 0 }); // stored blocks: any byte can change
+  assert.ok(decodeState(compressed, LINK_LIMITS).ok);
+  const altered = compressed.slice();
+  altered[Math.floor(altered.length * 0.8)] ^= 0x04; // inside the mesh bytes
+  const decoded = decodeState(altered, LINK_LIMITS);
+  assert.equal(decoded.ok, false);
+  assert.match(decoded.message, /checksum/);
+  const badSum = compressed.slice();
+  badSum[badSum.length - 1] ^= 1;
+  assert.match(decodeState(badSum, LINK_LIMITS).message, /checksum/);
+});
+
+test('data after the end of the compressed stream is refused', () => {
+  const compressed = encodeState({ mesh: { kind: 'example', id: 'saddle' }, params, history: [] });
+  assert.ok(decodeState(compressed, LINK_LIMITS).ok);
+  for (const junk of [[0], [1, 2, 3, 4, 5, 6, 7, 8], Array.from(compressed.subarray(-4))]) {
+    const longer = new Uint8Array([...compressed, ...junk]);
+    const decoded = decodeState(longer, LINK_LIMITS);
+    assert.equal(decoded.ok, false, `junk ${junk}`);
+    assert.match(decoded.message, /damaged/);
+  }
+  // Junk ending in a copy of the checksum passes the checksum test and is caught by the end check.
+  const sneaky = new Uint8Array([...compressed.subarray(0, -4), 9, 9, ...compressed.subarray(-4)]);
+  assert.match(decodeState(sneaky, LINK_LIMITS).message, /after the end/);
+  const good = stateToHash({ mesh: { kind: 'example', id: 'saddle' }, params, history: [] });
+  refused(`${good}AAAA`, /damaged/);
+});
+
+test('adler32 matches the reference values', () => {
+  assert.equal(adler32(new Uint8Array(0)), 1);
+  assert.equal(adler32(new TextEncoder().encode('Wikipedia')), 0x11e60398);
+  const big = Uint8Array.from({ length: 100_000 }, (_, i) => (i * 31) % 256);
+  assert.equal(adler32(big.subarray(50_000), adler32(big.subarray(0, 50_000))), adler32(big), 'piece by piece = at once');
+});
+
+test('a link is capped by its length, the same for writing and reading', () => {
+  // Random bytes do not compress: 1.5 MB of them make a hash over the cap.
+  let x = 12345;
+  const noise = Uint8Array.from({ length: 1_500_000 }, () => ((x = (Math.imul(x, 1103515245) + 12345) >>> 0) >>> 24));
+  const large = { mesh: { kind: 'file', name: 'noise.obj', bytes: noise }, params, history: [] };
+  const refusedShare = shareHash(large);
+  assert.equal(refusedShare.ok, false);
+  assert.equal(refusedShare.message, 'the mesh is too large to travel in a link; share an example or a smaller file');
+  const hash = stateToHash(large);
+  assert.ok(hash.length > MAX_LINK_HASH_CHARS && hash.length < 2_097_152, `${hash.length} characters`);
+  refused(hash, /too long/);
+  // Just under the cap both ways.
+  const small = { mesh: { kind: 'file', name: 'noise.obj', bytes: noise.subarray(0, 1_000_000) }, params, history: [] };
+  const accepted = shareHash(small);
+  assert.ok(accepted.ok, accepted.message);
+  assert.ok(accepted.value.length <= MAX_LINK_HASH_CHARS);
+  assert.ok(hashToState(accepted.value).ok);
+  assert.equal(shareHash({ ...small, mesh: { ...small.mesh, bytes: new Uint8Array(MAX_SHARED_MESH_BYTES + 1) } }).ok, false, 'too large to try');
+});
+
+test('the form limits are the core-compatible ones, shared with links', () => {
+  assert.equal(LIMITS.panelRounds.min, 1, 'the core needs at least one panel round');
+  assert.ok(LIMITS.lloydIterations.max <= 200 && LIMITS.panelRounds.max <= 100);
+  assert.equal(LIMITS.seed.max, 2 ** 53 - 1);
+  assert.match(validateParams({ ...DEFAULT_PARAMS, panelRounds: 0 }).message, /Panel rounds must be between 1 and 100/);
+  assert.match(validateParams({ ...DEFAULT_PARAMS, lloydIterations: 201 }).message, /Lloyd iterations must be between 0 and 200/);
+  assert.ok(validateParams({ ...DEFAULT_PARAMS, seed: 2 ** 53 - 1 }).ok);
 });

@@ -1,22 +1,22 @@
-// The page's controller: opens meshes, runs solves in the worker, shows progress and results,
-// and hands out exports and share links. Holds the one copy of the design's state:
-//   mesh    the loaded surface (and what it came from, for links and the stored session)
-//   solving the solve under way, if any
-//   solved  the last finished result: what the view, the stats and the exports show
+// The page's controller: turns clicks into worker requests and worker answers into what the
+// page shows. The design's state and its rules (what may run when, warm starts, which answer
+// belongs to which request) live in designMachine.ts; downloads, links and the session note
+// in outputs.ts; this file wires them to the worker, the view and the status line.
 import type { MeshInfo } from '@flatfacet/wasm';
 import { countOutcome, element } from './dom.ts';
-import { DEFAULT_EXAMPLE_ID, EXAMPLES, findExample } from './examples.ts';
-import { designStem, downloadText } from './exports.ts';
+import { DesignMachine, type ChainLoss } from './designMachine.ts';
+import { ExamplePicker, showMeshInfo } from './examplePicker.ts';
+import { describeDesign, findExample } from './examples.ts';
 import { payloadFromExample, payloadFromFile } from './meshFiles.ts';
-import { canWarmStart, sameParams, toRemeshParams, type DesignParams } from './params.ts';
+import { Outputs } from './outputs.ts';
+import { toRemeshParams, type DesignParams } from './params.ts';
 import { ParamsForm } from './paramsForm.ts';
 import type { SolveResult, WorkerResponse } from './protocol.ts';
 import { saveSession } from './sessionStore.ts';
-import { MAX_HISTORY, MAX_SHARED_MESH_BYTES, type DesignMesh, type DesignState } from './share.ts';
-import { publishShareLink } from './shareLink.ts';
-import { SolverClient } from './solverClient.ts';
+import { MAX_HISTORY, type DesignMesh, type DesignState } from './share.ts';
+import { SolverClient, solverTestHooks, type Crash } from './solverClient.ts';
 import { renderStats } from './stats.ts';
-import { StatusView } from './statusView.ts';
+import { solvedSummary, StatusView } from './statusView.ts';
 import { guessUpAxis } from './view/upAxis.ts';
 import { Viewer } from './view/viewer.ts';
 
@@ -27,8 +27,7 @@ interface LoadedMesh {
   info: MeshInfo;
 }
 
-interface Opening {
-  job: number;
+interface OpenInfo {
   design: DesignMesh;
   label: string;
   fileName: string;
@@ -36,61 +35,37 @@ interface Opening {
   params: DesignParams;
   history: DesignParams[];
   solve: boolean;
-  note: string;
-}
-
-interface Solving {
-  job: number;
-  params: DesignParams;
-  // The solves that reproduce this result from the loaded mesh; null once a parameter change
-  // mid-solve made it depend on timing.
-  chain: DesignParams[] | null;
-}
-
-interface Solved {
-  params: DesignParams;
-  chain: DesignParams[] | null;
-  result: SolveResult;
 }
 
 export interface OpenOptions {
   solve: boolean;
   note: string; // said in the status while loading, e.g. "Opening the shared design"
+  fromLink?: boolean; // keeps the link in the address bar (it describes this design)
 }
 
+export const CRASH_MESSAGE = 'the solver ran out of memory or crashed and was restarted; the last result is kept';
+
 export class App {
-  private readonly solver = new SolverClient({ onMessage: (message) => this.onWorkerMessage(message) }, { cancelGraceMs: cancelGraceFromUrl() });
+  private readonly machine = new DesignMachine<LoadedMesh, OpenInfo, SolveResult>(MAX_HISTORY);
+  private readonly solver = new SolverClient(
+    { onMessage: (message) => this.onWorkerMessage(message), onCrash: (crash) => this.onCrash(crash) },
+    solverTestHooks(),
+  );
   private readonly viewer = new Viewer(element('viewport', HTMLElement));
   private readonly form = new ParamsForm();
   private readonly status = new StatusView();
-  private readonly exampleSelect = element('example', HTMLSelectElement);
+  private readonly outputs = new Outputs();
+  private readonly examples = new ExamplePicker((id) => void this.openExample(id));
   private readonly remeshButton = element('remesh', HTMLButtonElement);
   private readonly cancelButton = element('cancel', HTMLButtonElement);
   private readonly exportObjButton = element('export-obj', HTMLButtonElement);
   private readonly exportPartsButton = element('export-parts', HTMLButtonElement);
   private readonly shareButton = element('share', HTMLButtonElement);
-  private readonly shareRow = element('share-row', HTMLDivElement);
-  private readonly shareField = element('share-link', HTMLInputElement);
   private readonly statsBox = element('stats', HTMLDivElement);
-
-  private mesh: LoadedMesh | null = null;
-  private opening: Opening | null = null;
-  private openToken = 0;
-  private solving: Solving | null = null;
-  private solved: Solved | null = null;
-  // What the worker's session holds: a just-loaded mesh, or exactly `solved` (warm-startable).
-  private sessionPristine = false;
-  private sessionHoldsSolved = false;
-  private lastWrittenHash = '';
+  // A message to show once the mesh being opened has loaded (set only while opening).
   private pendingNotice: string | null = null;
 
   constructor() {
-    for (const example of EXAMPLES) this.exampleSelect.add(new Option(example.label, example.id));
-    this.exampleSelect.add(new Option('Your mesh', 'file'));
-    this.exampleSelect.options[this.exampleSelect.options.length - 1]!.hidden = true;
-    this.exampleSelect.addEventListener('change', () => {
-      if (this.exampleSelect.value !== 'file') void this.openExample(this.exampleSelect.value);
-    });
     this.remeshButton.addEventListener('click', () => this.remesh());
     this.cancelButton.addEventListener('click', () => this.cancel());
     this.exportObjButton.addEventListener('click', () => this.exportFile('obj'));
@@ -102,27 +77,40 @@ export class App {
   }
 
   get isSolving(): boolean {
-    return this.solving !== null;
+    return this.machine.solving !== null;
   }
 
   get currentHash(): string {
-    return this.lastWrittenHash;
+    return this.outputs.currentHash;
   }
 
   get viewerForToggles(): Viewer {
     return this.viewer;
   }
 
-  // Shown after the load that follows, so the message is what the designer reads.
+  get defaultExampleId(): string {
+    return this.examples.defaultId;
+  }
+
+  setAvailableExampleFiles(files: Set<string>): void {
+    this.examples.setAvailableFiles(files);
+  }
+
+  // A message about how the page was opened (a broken link): while a mesh is opening it waits
+  // until that mesh is shown, so it is what the designer reads; otherwise it shows at once.
   showError(message: string): void {
-    this.pendingNotice = message;
-    if (!this.opening) this.status.error(message);
+    if (this.machine.opening) this.pendingNotice = message;
+    else this.status.error(message);
+  }
+
+  noteRestoreFailure(message: string): void {
+    this.outputs.noteRestore(message);
   }
 
   // ---- opening a design
 
   async openExample(id: string, options: OpenOptions = { solve: true, note: '' }): Promise<void> {
-    const example = findExample(id) ?? findExample(DEFAULT_EXAMPLE_ID)!;
+    const example = findExample(id) ?? findExample(this.examples.defaultId)!;
     this.form.setPanels(example.panels); // each example comes with a count that suits it
     const checked = this.form.read();
     if (!checked.ok) {
@@ -142,44 +130,57 @@ export class App {
     await this.open({ kind: 'file', name: file.name, bytes }, params.value, [], { solve: true, note: '' });
   }
 
-  async openState(state: DesignState, note: string, solve = true): Promise<void> {
+  async openState(state: DesignState, note: string, fromLink: boolean): Promise<void> {
     this.form.write(state.params);
-    await this.open(state.mesh, state.params, state.history, { solve, note });
+    await this.open(state.mesh, state.params, state.history, { solve: true, note, fromLink });
   }
 
   private async open(design: DesignMesh, params: DesignParams, history: DesignParams[], options: OpenOptions): Promise<void> {
-    const token = ++this.openToken;
-    const example = design.kind === 'example' ? findExample(design.id) : undefined;
-    const label = example ? example.label : design.kind === 'file' ? design.name : design.id;
-    const fileName = example ? (example.kind === 'file' ? example.file : example.shape) : design.kind === 'file' ? design.name : 'design';
+    const { example, label, fileName, up } = describeDesign(design);
+    const token = this.machine.beginOpen({ design, label, fileName, up, params, history, solve: options.solve });
+    if (!options.fromLink) this.outputs.forgetLink();
+    this.updateButtons();
     this.status.show(`${options.note ? `${options.note}: ` : ''}loading ${label}…`);
     const payload = example ? await payloadFromExample(example) : design.kind === 'file' ? await payloadFromFile(design.name, design.bytes) : null;
-    if (token !== this.openToken) return; // a later open won
+    if (!this.machine.isCurrentOpen(token)) return; // a later open won
     if (!payload || !payload.ok) {
-      this.status.error(payload ? payload.message : 'nothing to open');
-      this.syncExampleSelect();
+      this.machine.abandonOpen(token);
+      this.failOpen(payload ? payload.message : 'nothing to open');
       return;
     }
-    if (this.solving) this.dropSolving();
-    const job = this.solver.load(payload.value);
-    this.opening = { job, design, label, fileName, up: example ? example.up : 'guess', params, history, solve: options.solve, note: options.note };
+    // The session's mesh is about to change: a solve under way is of no use any more.
+    this.dropSolve();
+    this.machine.openSent(token, this.solver.load(payload.value));
+    this.updateButtons();
   }
 
-  private onLoaded(info: MeshInfo, positions: Float32Array, indices: Uint32Array): void {
-    const opening = this.opening;
-    if (!opening) return;
-    this.opening = null;
-    this.mesh = { design: opening.design, label: opening.label, fileName: opening.fileName, info };
-    this.solved = null;
-    this.sessionPristine = true;
-    this.sessionHoldsSolved = false;
-    this.viewer.setSurface(positions, indices, opening.up === 'guess' ? guessUpAxis(positions) : opening.up);
-    this.showMeshInfo(info);
+  private failOpen(reason: string): void {
+    const notice = this.pendingNotice;
+    this.pendingNotice = null;
     this.syncExampleSelect();
+    this.status.resetProgress();
+    this.status.error(notice ? `${notice} ${reason}` : reason);
+    this.updateButtons();
+  }
+
+  private onLoaded(job: number, info: MeshInfo, positions: Float32Array, indices: Uint32Array): void {
+    const loaded = this.machine.loaded(job, (opening) => ({ design: opening.design, label: opening.label, fileName: opening.fileName, info }));
+    if (!loaded) return;
+    const opening = loaded.info;
+    this.viewer.setSurface(positions, indices, opening.up === 'guess' ? guessUpAxis(positions) : opening.up);
+    showMeshInfo(loaded.mesh.label, loaded.mesh.info);
     renderStats(this.statsBox, null);
-    void saveSession({ mesh: opening.design, params: opening.params, history: [] });
-    if (opening.solve) this.startSolve([...opening.history, opening.params], false);
-    else this.status.show(`${opening.label} is loaded. Remesh to make panels.`);
+    this.updateButtons();
+    // Overtaken by a later open: shown, since the worker holds it now, but that open goes on.
+    if (!loaded.newest) return;
+    this.syncExampleSelect();
+    this.save({ mesh: opening.design, params: opening.params, history: [] });
+    if (opening.solve) {
+      const chain = [...opening.history, opening.params];
+      this.startSolve(chain, false, chain);
+    } else {
+      this.status.show(`${opening.label} is loaded. Remesh to make panels.`);
+    }
     if (this.pendingNotice) {
       this.status.error(this.pendingNotice);
       this.pendingNotice = null;
@@ -187,28 +188,24 @@ export class App {
     this.updateButtons();
   }
 
-  private showMeshInfo(info: MeshInfo): void {
-    element('mesh-title', HTMLSpanElement).textContent = this.mesh?.label ?? '';
-    const loops = info.boundaryLoops === 1 ? '1 boundary loop' : `${info.boundaryLoops} boundary loops`;
-    element('mesh-details', HTMLSpanElement).textContent = `${info.triangles.toLocaleString('en')} triangles · ${info.vertices.toLocaleString('en')} vertices · ${loops} · genus ${info.genus}`;
-    const cleanup = element('mesh-cleanup', HTMLParagraphElement);
-    cleanup.textContent = info.cleanup.length > 0 ? `Repaired on load: ${info.cleanup.join('; ')}.` : '';
-    cleanup.hidden = info.cleanup.length === 0;
+  private syncExampleSelect(): void {
+    this.examples.sync(this.machine.mesh?.design);
   }
 
-  private syncExampleSelect(): void {
-    const design = this.mesh?.design;
-    this.exampleSelect.value = design?.kind === 'example' ? design.id : design ? 'file' : DEFAULT_EXAMPLE_ID;
-    const fileOption = this.exampleSelect.options[this.exampleSelect.options.length - 1]!;
-    fileOption.hidden = design?.kind !== 'file';
-    fileOption.text = design?.kind === 'file' ? `Your mesh: ${design.name}` : 'Your mesh';
+  private save(state: DesignState): void {
+    void saveSession(state).then((outcome) => {
+      this.outputs.noteSave(outcome.ok ? null : outcome.message);
+      if (outcome.ok) countOutcome('saves');
+    });
   }
 
   // ---- solving
 
+  // Remesh, and Enter in a parameter field. Refused while a mesh is opening (the button is
+  // disabled then too): the worker may already hold the new mesh.
   remesh(): void {
-    if (!this.mesh) {
-      this.status.error('open a mesh or pick an example first');
+    if (!this.machine.canRemesh) {
+      if (!this.machine.mesh && !this.machine.opening) this.status.error('open a mesh or pick an example first');
       return;
     }
     const checked = this.form.read();
@@ -216,83 +213,67 @@ export class App {
       this.status.error(checked.message);
       return;
     }
-    const params = checked.value;
-    if (this.solving) this.dropSolving();
-    const previous = this.solved;
-    // Warm start (DESIGN.md 2): the session holds the finished previous result and only the
-    // count, weights or iteration limits changed. Identical parameters solve afresh.
-    if (previous && this.sessionHoldsSolved && canWarmStart(previous.params, params) && !sameParams(previous.params, params)) {
-      const chain = previous.chain && previous.chain.length <= MAX_HISTORY ? [...previous.chain, params] : null;
-      this.startSolve([params], false, chain);
-    } else {
-      this.startSolve([params], !this.sessionPristine);
-    }
+    this.dropSolve();
+    const plan = this.machine.planRemesh(checked.value);
+    if (plan.kind === 'refused') return;
+    this.outputs.forgetLink();
+    this.startSolve(plan.run, plan.fresh, plan.chain, plan.lost);
   }
 
   // `run` is solved in order; `chain` is what reproduces the result from the loaded mesh.
-  private startSolve(run: DesignParams[], fresh: boolean, chain: DesignParams[] | null = run): void {
+  private startSolve(run: DesignParams[], fresh: boolean, chain: DesignParams[] | null, lost: ChainLoss | null = null): void {
     const params = run[run.length - 1]!;
     const job = this.solver.solve(fresh, run.map(toRemeshParams));
-    this.solving = { job, params, chain };
-    this.sessionPristine = false;
-    this.sessionHoldsSolved = false;
+    this.machine.startSolve(job, params, chain, lost);
     this.viewer.setSolving(true);
     this.status.show(`Solving ${params.panels} panels…`);
     this.status.resetProgress('starting');
     this.updateButtons();
   }
 
-  private dropSolving(): void {
-    if (!this.solving) return;
-    this.solver.cancel(this.solving.job);
-    this.solving = null;
-    this.sessionHoldsSolved = false;
+  private dropSolve(): boolean {
+    const job = this.machine.dropSolve();
+    if (job === null) return false;
+    this.solver.cancel(job);
     this.viewer.setSolving(false);
+    return true;
   }
 
   cancel(): void {
-    if (!this.solving) return;
-    this.dropSolving();
-    if (this.solved) this.viewer.setClusters(this.solved.result.clusterIds);
+    if (!this.dropSolve()) return;
+    const solved = this.machine.solved;
+    if (solved) this.viewer.setClusters(solved.result.clusterIds);
     this.status.resetProgress('cancelled');
-    this.status.show(this.solved ? 'Cancelled. The last finished design is shown.' : 'Cancelled.');
+    this.status.show(solved ? 'Cancelled. The last finished design is shown.' : 'Cancelled.');
     this.updateButtons();
   }
 
   // A committed change during a solve goes to the worker at once and warm-starts there.
   private parametersChanged(): void {
-    if (!this.solving) return;
+    if (!this.machine.solving) return;
     const checked = this.form.read();
     if (!checked.ok) {
       this.status.error(checked.message);
       return;
     }
-    if (sameParams(checked.value, this.solving.params)) return;
-    this.solver.update(this.solving.job, toRemeshParams(checked.value));
-    this.solving = { ...this.solving, params: checked.value, chain: null };
+    const job = this.machine.update(checked.value);
+    if (job === null) return;
+    this.solver.update(job, toRemeshParams(checked.value));
+    this.outputs.forgetLink();
   }
 
-  private onSolved(result: SolveResult): void {
-    const solving = this.solving;
-    if (!solving || !this.mesh) return;
-    this.solving = null;
-    this.solved = { params: solving.params, chain: solving.chain, result };
+  private onSolved(job: number, result: SolveResult): void {
+    const solved = this.machine.finishSolve(job, result);
+    const mesh = this.machine.mesh;
+    if (!solved || !mesh) return;
     countOutcome('solves');
-    this.sessionHoldsSolved = true;
     this.viewer.setSolving(false);
     this.viewer.setResult(result);
     renderStats(this.statsBox, result);
     this.status.finishProgress();
-    const panels = typeof result.report.panels === 'number' ? result.report.panels : result.panelOffsets.length - 1;
-    const invalid = result.problems.invalidPanels.length;
-    const unbuilt = result.problems.unbuiltClusters.length;
-    const warnings = [
-      invalid > 0 ? `${invalid} invalid panel${invalid === 1 ? '' : 's'} (shown red)` : '',
-      unbuilt > 0 ? `${unbuilt} cluster${unbuilt === 1 ? '' : 's'} could not become panels` : '',
-    ].filter((text) => text !== '');
-    const warning = warnings.length > 0 ? `${warnings.join('; ')}. ` : '';
-    this.status.show(`${warning}Done: ${panels} panels`, warning ? 'info' : 'done');
-    void saveSession({ mesh: this.mesh.design, params: solving.params, history: solving.chain ? solving.chain.slice(0, -1) : [] });
+    const summary = solvedSummary(result);
+    this.status.show(summary.text, summary.warning ? 'info' : 'done');
+    this.save({ mesh: mesh.design, params: solved.params, history: solved.chain ? solved.chain.slice(0, -1) : [] });
     this.updateButtons();
   }
 
@@ -302,26 +283,27 @@ export class App {
         document.body.dataset.solverVersion = message.version;
         return;
       case 'fatal':
-        this.solving = null;
-        this.opening = null;
+        this.machine.crashed(false);
         this.viewer.setSolving(false);
         this.status.error(message.message);
         this.updateButtons();
         return;
+      case 'crashed': // handled by the client (onCrash)
+        return;
       case 'loaded':
-        this.onLoaded(message.info, message.positions, message.indices);
+        this.onLoaded(message.job, message.info, message.positions, message.indices);
         return;
       case 'failed':
-        this.onFailed(message.message);
+        this.onFailed(message.job, message.message);
         return;
       case 'progress':
-        if (this.solving) this.status.showProgress(message.progress, message.elapsedSeconds);
+        if (this.machine.solving?.job === message.job) this.status.showProgress(message.progress, message.elapsedSeconds);
         return;
       case 'clusters':
-        if (this.solving) this.viewer.showLiveClusters(message.clusterIds);
+        if (this.machine.solving?.job === message.job) this.viewer.showLiveClusters(message.clusterIds);
         return;
       case 'solved':
-        this.onSolved(message.result);
+        this.onSolved(message.job, message.result);
         return;
       case 'cancelled':
         return;
@@ -329,65 +311,73 @@ export class App {
   }
 
   // The core refused a mesh or parameters: the previous design stays loaded and usable.
-  private onFailed(reason: string): void {
-    if (this.opening) {
-      this.opening = null;
-      this.syncExampleSelect();
+  private onFailed(job: number, reason: string): void {
+    const what = this.machine.failed(job);
+    if (what === null) return; // an answer to a request the page moved past
+    if (what === 'open') {
+      if (this.machine.opening) this.status.error(reason); // a later open goes on
+      else this.failOpen(reason);
+      return;
     }
-    if (this.solving) {
-      this.solving = null;
+    if (what === 'solve') {
       this.viewer.setSolving(false);
-      if (this.solved) this.viewer.setClusters(this.solved.result.clusterIds);
+      const solved = this.machine.solved;
+      if (solved) this.viewer.setClusters(solved.result.clusterIds);
     }
-    this.sessionHoldsSolved = false;
-    this.sessionPristine = false;
     this.status.resetProgress();
     this.status.error(reason);
+    this.updateButtons();
+  }
+
+  // The worker crashed and was replaced (with the last loaded mesh, when it could be
+  // reloaded). What was under way is lost; the last result stays on show and exportable.
+  private onCrash(crash: Crash): void {
+    console.warn(`flatfacet: the solver worker crashed: ${crash.message}`);
+    const lost = this.machine.crashed(crash.meshKept);
+    this.viewer.setSolving(false);
+    const solved = this.machine.solved;
+    if (solved) this.viewer.setClusters(solved.result.clusterIds);
+    this.pendingNotice = null;
+    this.syncExampleSelect();
+    this.status.resetProgress();
+    const parts = [crash.meshKept ? CRASH_MESSAGE : `${CRASH_MESSAGE}, but without the mesh: open it again`];
+    if (lost.lostOpening) parts.push(`${lost.lostOpening.label} was not opened`);
+    this.status.error(`${parts.join('; ')}.`);
     this.updateButtons();
   }
 
   // ---- outputs
 
   private exportFile(kind: 'obj' | 'csv'): void {
-    if (!this.solved || !this.mesh) return;
-    const stem = designStem(this.mesh.fileName);
-    if (kind === 'obj') downloadText(`${stem}-panels.obj`, this.solved.result.objText, 'model/obj');
-    else downloadText(`${stem}-parts.csv`, this.solved.result.partsCsv, 'text/csv');
+    const mesh = this.machine.mesh;
+    const solved = this.machine.solved;
+    if (mesh && solved) this.outputs.exportFile(kind, mesh.fileName, solved.result);
   }
 
   async share(): Promise<void> {
-    if (!this.mesh) return;
-    const design = this.mesh.design;
-    if (design.kind === 'file' && design.bytes.length > MAX_SHARED_MESH_BYTES) {
-      this.status.error(`${design.name} is ${(design.bytes.length / 1048576).toFixed(1)} MB; links carry meshes up to ${MAX_SHARED_MESH_BYTES / 1048576} MB. Share the file itself.`);
-      return;
-    }
+    const mesh = this.machine.mesh;
+    if (!this.machine.canShare || !mesh) return;
+    const solved = this.machine.solved;
     const formParams = this.form.read();
-    const params = this.solved?.params ?? (formParams.ok ? formParams.value : null);
+    const params = solved?.params ?? (formParams.ok ? formParams.value : null);
     if (!params) return;
-    const chain = this.solved?.chain;
     // The history replays a warm-start chain so the link gives the identical panels.
-    const state = { mesh: design, params, history: chain ? chain.slice(0, -1) : [] };
-    const published = await publishShareLink(state, this.shareField, this.shareRow);
-    this.lastWrittenHash = published.hash;
-    const caveat = this.solved && !chain ? ' Parameters changed during that solve, so the link solves afresh and the panels may differ slightly.' : '';
-    this.status.show(published.copied ? `Share link copied to the clipboard.${caveat}` : `The clipboard is not available: copy the share link from the field below.${caveat}`);
+    const state = { mesh: mesh.design, params, history: solved?.chain ? solved.chain.slice(0, -1) : [] };
+    const shared = await this.outputs.share(state, solved && !solved.chain ? solved.lost : null);
+    if (shared.ok) this.status.show(shared.text);
+    else this.status.error(shared.message);
   }
 
   private updateButtons(): void {
-    const solving = this.solving !== null;
-    this.remeshButton.disabled = !this.mesh;
+    const solving = this.machine.solving !== null;
+    this.remeshButton.disabled = !this.machine.canRemesh;
     this.cancelButton.disabled = !solving;
-    this.exportObjButton.disabled = !this.solved;
-    this.exportPartsButton.disabled = !this.solved;
-    this.shareButton.disabled = !this.mesh;
+    this.exportObjButton.disabled = !this.machine.canExport;
+    this.exportPartsButton.disabled = !this.machine.canExport;
+    this.shareButton.disabled = !this.machine.canShare;
     document.body.dataset.solving = String(solving);
+    const opening = this.machine.opening;
+    document.body.dataset.opening = opening === null ? 'false' : opening.job === null ? 'reading' : 'loading';
   }
 }
 
-// ?cancelGrace=0 makes every cancel replace the worker (the path a long step takes); tests use it.
-function cancelGraceFromUrl(): number | undefined {
-  const value = new URLSearchParams(location.search).get('cancelGrace');
-  const ms = value === null ? Number.NaN : Number(value);
-  return Number.isInteger(ms) && ms >= 0 && ms <= 10_000 ? ms : undefined;
-}

@@ -35,7 +35,17 @@ export const EXAMPLES: readonly Example[] = [
 ];
 
 export const DEFAULT_EXAMPLE_ID = 'hyperboloid_s4';
+// The default when the site was built without ../shared/meshes (no file examples).
+export const FALLBACK_EXAMPLE_ID = 'freeform_roof';
 
 export function findExample(id: string): Example | undefined {
   return EXAMPLES.find((example) => example.id === id);
+}
+
+// What the page calls a design's mesh, the file name its exports are named after, and which
+// way is up (a file the designer opened: guessed from its shape).
+export function describeDesign(design: { kind: 'example'; id: string } | { kind: 'file'; name: string }): { example: Example | undefined; label: string; fileName: string; up: 'y' | 'z' | 'guess' } {
+  const example = design.kind === 'example' ? findExample(design.id) : undefined;
+  if (example) return { example, label: example.label, fileName: example.kind === 'file' ? example.file : example.shape, up: example.up };
+  return design.kind === 'file' ? { example, label: design.name, fileName: design.name, up: 'guess' } : { example, label: design.id, fileName: 'design', up: 'guess' };
 }

@@ -2,7 +2,7 @@
 // link in the URL, else the last session kept in this browser, else the default example.
 import { App } from './app.ts';
 import { element } from './dom.ts';
-import { DEFAULT_EXAMPLE_ID } from './examples.ts';
+import { availableExampleFiles } from './meshFiles.ts';
 import { loadSession } from './sessionStore.ts';
 import { hashToState, isShareHash } from './share.ts';
 import type { Viewer } from './view/viewer.ts';
@@ -62,10 +62,10 @@ function bindViewToggles(viewer: Viewer): void {
 async function openFromHash(hash: string, atStart: boolean): Promise<void> {
   const decoded = hashToState(hash);
   if (decoded.ok) {
-    await app.openState(decoded.value, 'Opening the shared design');
+    await app.openState(decoded.value, 'Opening the shared design', true);
     return;
   }
-  if (atStart) await app.openExample(DEFAULT_EXAMPLE_ID, { solve: false, note: '' });
+  if (atStart) await app.openExample(app.defaultExampleId, { solve: false, note: '' });
   app.showError(`this share link cannot be opened: ${decoded.message}.`);
 }
 
@@ -92,13 +92,18 @@ async function start(): Promise<void> {
   window.addEventListener('hashchange', () => {
     if (isShareHash(location.hash) && location.hash !== app.currentHash) void openFromHash(location.hash, false);
   });
+  app.setAvailableExampleFiles(await availableExampleFiles());
   if (isShareHash(location.hash)) {
     await openFromHash(location.hash, true);
     return;
   }
   const stored = await loadSession();
-  if (stored) await app.openState(stored, 'Restoring your last session');
-  else await app.openExample(DEFAULT_EXAMPLE_ID);
+  if (stored.kind === 'ok') {
+    await app.openState(stored.state, 'Restoring your last session', false);
+    return;
+  }
+  if (stored.kind === 'error') app.noteRestoreFailure(stored.message);
+  await app.openExample(app.defaultExampleId);
 }
 
 void start();

@@ -1,7 +1,7 @@
 // Turns what the designer opens into something the worker loads. OBJ, OFF, STL and PLY go to
 // the core's own readers as bytes (so the page and the command line read a file identically);
 // glTF/GLB goes through three.js and arrives as one triangle soup in world coordinates.
-import { Mesh, Vector3, type BufferGeometry, type Object3D } from 'three';
+import { LoadingManager, Mesh, Vector3, type BufferGeometry, type Object3D } from 'three';
 import type { Example } from './examples.ts';
 import { failure, type Checked } from './params.ts';
 import type { MeshPayload } from './protocol.ts';
@@ -31,6 +31,21 @@ export async function fetchExampleBytes(file: string): Promise<Checked<Uint8Arra
   }
 }
 
+// The example files this site ships (examples/index.json, written by
+// web/scripts/copy_examples.mjs at build time). Without it, or without the shared meshes at
+// build time, none: the page then offers only the generated examples.
+export async function availableExampleFiles(): Promise<Set<string>> {
+  try {
+    const response = await fetch(new URL('examples/index.json', document.baseURI));
+    if (!response.ok) return new Set();
+    const list: unknown = await response.json();
+    const files = typeof list === 'object' && list !== null && 'files' in list ? (list as { files: unknown }).files : null;
+    return new Set(Array.isArray(files) ? files.filter((file): file is string => typeof file === 'string') : []);
+  } catch {
+    return new Set();
+  }
+}
+
 export async function payloadFromExample(example: Example): Promise<Checked<MeshPayload>> {
   if (example.kind === 'shape') return { ok: true, value: { kind: 'shape', name: example.shape, triangles: example.triangles } };
   const bytes = await fetchExampleBytes(example.file);
@@ -38,16 +53,95 @@ export async function payloadFromExample(example: Example): Promise<Checked<Mesh
   return { ok: true, value: { kind: 'bytes', name: example.file, bytes: bytes.value } };
 }
 
+function isRecord(value: unknown): value is Record<string, unknown> {
+  return typeof value === 'object' && value !== null && !Array.isArray(value);
+}
+
+const GLB_MAGIC = 0x46546c67; // "glTF"
+const CHUNK_JSON = 0x4e4f534a;
+
+// A glTF from a file, a share link or the stored session must not make the page fetch
+// anything: three.js's loader resolves every `uri` (relative, or absolute https), so the JSON
+// is checked and cut down before the loader sees it. Buffers must be embedded (`data:` URIs,
+// or the GLB's own binary chunk); materials, textures, images and samplers are dropped, since
+// only the geometry is used. Returns what the loader may parse, or why not.
+export function selfContainedGltf(name: string, bytes: Uint8Array): Checked<ArrayBuffer | string> {
+  const view = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
+  const binary = bytes.length >= 20 && view.getUint32(0, true) === GLB_MAGIC;
+  let jsonText: string;
+  let rest: Uint8Array = new Uint8Array(0);
+  try {
+    if (binary) {
+      const jsonLength = view.getUint32(12, true);
+      if (view.getUint32(16, true) !== CHUNK_JSON || 20 + jsonLength > bytes.length) return failure(`${name}: not a readable glTF file (its JSON chunk is damaged)`);
+      jsonText = new TextDecoder('utf-8', { fatal: true }).decode(bytes.subarray(20, 20 + jsonLength));
+      rest = bytes.subarray(20 + jsonLength);
+    } else {
+      jsonText = new TextDecoder('utf-8', { fatal: true }).decode(bytes);
+    }
+  } catch {
+    return failure(`${name}: not a readable glTF file (its JSON is not UTF-8 text)`);
+  }
+  let json: unknown;
+  try {
+    json = JSON.parse(jsonText);
+  } catch {
+    return failure(`${name}: not a readable glTF file (its JSON cannot be parsed)`);
+  }
+  if (!isRecord(json)) return failure(`${name}: not a readable glTF file (no JSON object)`);
+  const buffers = Array.isArray(json.buffers) ? (json.buffers as unknown[]) : [];
+  for (const buffer of buffers) {
+    const uri = isRecord(buffer) ? buffer.uri : undefined;
+    if (uri === undefined) continue;
+    if (typeof uri !== 'string' || !uri.startsWith('data:')) {
+      const shown = String(uri).slice(0, 60).replace(/[\u0000-\u001f]/g, '');
+      return failure(`${name} refers to a separate file ("${shown}"), which this page does not fetch: export a .glb, or a .gltf with its data embedded`);
+    }
+  }
+  for (const key of ['materials', 'textures', 'images', 'samplers']) delete json[key];
+  if (Array.isArray(json.meshes)) {
+    for (const mesh of json.meshes as unknown[]) {
+      if (!isRecord(mesh) || !Array.isArray(mesh.primitives)) continue;
+      for (const primitive of mesh.primitives as unknown[]) if (isRecord(primitive)) delete primitive.material;
+    }
+  }
+  const cleanJson = JSON.stringify(json);
+  if (!binary) return { ok: true, value: cleanJson };
+  // The GLB again, with the cleaned JSON chunk (padded with spaces to 4 bytes) and the other
+  // chunks as they were.
+  let jsonBytes = new TextEncoder().encode(cleanJson);
+  const padded = new Uint8Array(Math.ceil(jsonBytes.length / 4) * 4).fill(0x20);
+  padded.set(jsonBytes);
+  jsonBytes = padded;
+  const out = new Uint8Array(20 + jsonBytes.length + rest.length);
+  const outView = new DataView(out.buffer);
+  outView.setUint32(0, GLB_MAGIC, true);
+  outView.setUint32(4, view.getUint32(4, true), true);
+  outView.setUint32(8, out.length, true);
+  outView.setUint32(12, jsonBytes.length, true);
+  outView.setUint32(16, CHUNK_JSON, true);
+  out.set(jsonBytes, 20);
+  out.set(rest, 20 + jsonBytes.length);
+  return { ok: true, value: out.buffer };
+}
+
 async function gltfPayload(name: string, bytes: Uint8Array): Promise<Checked<MeshPayload>> {
+  const input = selfContainedGltf(name, bytes);
+  if (!input.ok) return input;
   // Loaded on demand: most designers never open glTF, and the loader is large.
   const { GLTFLoader } = await import('three/examples/jsm/loaders/GLTFLoader.js');
+  // Belt and braces: whatever the check above missed still cannot leave the page.
+  const manager = new LoadingManager();
+  manager.setURLModifier((url) => {
+    if (!url.startsWith('data:')) throw new Error('a glTF may not refer to separate files');
+    return url;
+  });
   let scene: Object3D;
   try {
-    const buffer = bytes.buffer.slice(bytes.byteOffset, bytes.byteOffset + bytes.byteLength) as ArrayBuffer;
-    scene = (await new GLTFLoader().parseAsync(buffer, '')).scene;
+    scene = (await new GLTFLoader(manager).parseAsync(input.value, '')).scene;
   } catch (error) {
     const reason = error instanceof Error ? error.message : String(error);
-    return failure(`${name}: not a readable glTF file (${reason.slice(0, 160)}); a .gltf that refers to separate files cannot be opened, export a .glb instead`);
+    return failure(`${name}: not a readable glTF file (${reason.replace(/^THREE\.GLTFLoader: /, '').slice(0, 160)})`);
   }
   scene.updateMatrixWorld(true);
   const positions: number[] = [];

@@ -37,12 +37,17 @@ export const DEFAULT_PARAMS: DesignParams = {
   optimizePlanes: true,
 };
 
+// The one set of limits: the form's inputs take their min/max from here (paramsForm.ts), and
+// links and the stored session are checked against them. Each range lies inside the core's
+// (core/remesh_params_json.cpp: panels 1..1e7, iterations 0..1e5 with at least one panel
+// round, seed 0..2^53-1, weights 0..1e6); the iteration caps are lower so that no link can
+// start a solve of hours (a chain of MAX_HISTORY + 1 solves of at most 200 + 100 steps).
 export const LIMITS = {
   panels: { min: 1, max: 100_000 },
   seed: { min: 0, max: Number.MAX_SAFE_INTEGER },
   weight: { min: 0, max: 1000 },
-  lloydIterations: { min: 0, max: 1000 },
-  panelRounds: { min: 0, max: 1000 },
+  lloydIterations: { min: 0, max: 200 },
+  panelRounds: { min: 1, max: 100 },
 } as const;
 
 export const WEIGHT_NAMES: readonly (keyof MetricWeights)[] = ['euclidean', 'l2', 'l21', 'boundary'];

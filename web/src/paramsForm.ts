@@ -1,7 +1,7 @@
 // The parameter inputs of the side panel <-> DesignParams. Reading validates through
 // params.ts, so the form, links and stored sessions share one set of rules.
 import { element } from './dom.ts';
-import { validateParams, type Checked, type DesignParams } from './params.ts';
+import { LIMITS, validateParams, type Checked, type DesignParams } from './params.ts';
 
 export class ParamsForm {
   private readonly panels = element('panels', HTMLInputElement);
@@ -16,6 +16,28 @@ export class ParamsForm {
   private readonly teleport = element('teleport', HTMLInputElement);
   private readonly singlePointNodes = element('single-point-nodes', HTMLInputElement);
   private readonly optimizePlanes = element('optimize-planes', HTMLInputElement);
+
+  constructor() {
+    // The inputs' ranges come from LIMITS (params.ts), the same rules links are checked by.
+    const ranges: [HTMLInputElement, { min: number; max: number }][] = [
+      [this.panels, LIMITS.panels],
+      [this.seed, LIMITS.seed],
+      [this.euclidean, LIMITS.weight],
+      [this.l2, LIMITS.weight],
+      [this.l21, LIMITS.weight],
+      [this.boundary, LIMITS.weight],
+      [this.lloydIterations, LIMITS.lloydIterations],
+      [this.panelRounds, LIMITS.panelRounds],
+    ];
+    for (const [input, range] of ranges) {
+      input.min = String(range.min);
+      input.max = String(range.max);
+    }
+    this.seed.title = `a whole number from ${LIMITS.seed.min} to 2^53 − 1 (${LIMITS.seed.max}); the same seed gives the same panels`;
+    this.lloydIterations.title = `clustering iterations, ${LIMITS.lloydIterations.min} to ${LIMITS.lloydIterations.max}`;
+    this.panelRounds.title = `panel rounds, ${LIMITS.panelRounds.min} to ${LIMITS.panelRounds.max}`;
+    this.panels.title = `${LIMITS.panels.min} to ${LIMITS.panels.max.toLocaleString('en')} panels (at most one per triangle)`;
+  }
 
   private get numberInputs(): HTMLInputElement[] {
     return [this.panels, this.seed, this.euclidean, this.l2, this.l21, this.boundary, this.lloydIterations, this.panelRounds];

@@ -13,12 +13,16 @@ export type MeshPayload =
 export type WorkerRequest =
   // quiet: reload after a worker restart; answer without the display arrays.
   | { type: 'load'; job: number; mesh: MeshPayload; quiet: boolean }
-  // fresh: start from the loaded mesh (a new Session), else warm-start the current one.
+  // fresh: start cold from the loaded mesh (Session.resetSolve), else warm-start from what the
+  // session holds.
   // chain: parameter sets solved one after the other (a share link replays a warm-start chain).
   | { type: 'solve'; job: number; fresh: boolean; chain: RemeshParams[] }
   // A parameter change during a solve: applied before the next step (warm start).
   | { type: 'update'; job: number; params: RemeshParams }
-  | { type: 'cancel'; job: number };
+  | { type: 'cancel'; job: number }
+  // Test hook (?crashAfterSteps=N): N steps into its second solve the worker makes a wasm call
+  // that throws a non-Status error, as running out of memory would.
+  | { type: 'test'; job: 0; crashAfterSteps: number };
 
 // The report's keys as DESIGN.md 4 names them; read defensively (the core may add keys).
 export type QualityReport = Record<string, unknown>;
@@ -44,7 +48,11 @@ export interface SolveResult {
 
 export type WorkerResponse =
   | { type: 'ready'; version: string }
+  // The solver could not start at all.
   | { type: 'fatal'; message: string }
+  // A wasm call threw something that is not a Status (out of memory, a trap, a bug): the
+  // module's state is unknown, so the page replaces this worker.
+  | { type: 'crashed'; message: string }
   | { type: 'loaded'; job: number; info: MeshInfo; positions: Float32Array; indices: Uint32Array }
   // A load or solve the core refused; the worker's previous mesh and result are intact.
   | { type: 'failed'; job: number; message: string }
@@ -53,8 +61,9 @@ export type WorkerResponse =
   | { type: 'solved'; job: number; result: SolveResult }
   | { type: 'cancelled'; job: number };
 
-// The buffers a message can hand over instead of copying (each a fresh copy, never a view of
-// the wasm heap: see docs on typed_memory_view in shared/notes/toolchain.md, note 7).
+// The buffers a message can hand over instead of copying. Each is the fresh array an Embind
+// getter returns (wasm/bindings.cpp copies out of the heap), never a view of the wasm heap
+// (shared/notes/toolchain.md, note 7), so the worker transfers it without another copy.
 export function transferablesOf(message: WorkerResponse): Transferable[] {
   switch (message.type) {
     case 'loaded':

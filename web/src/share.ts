@@ -4,16 +4,24 @@
 //
 // JSON: { v: 1, mesh: { example } | { file, size }, params, history }. `history` lists the
 // earlier solves of a warm-start chain; replaying history then params from the loaded mesh
-// gives the identical panels. An uploaded mesh travels as its file bytes (under 2 MiB).
-// Decoding treats the link as hostile: sizes capped before and during inflation, every field
-// checked by hand, nothing evaluated. No DOM: unit-tested in Node.
+// gives the identical panels. An uploaded mesh travels as its file bytes, as long as the whole
+// hash stays under MAX_LINK_HASH_CHARS (Chromium refuses URLs over 2 MiB characters).
+// Decoding treats the link as hostile: its length capped, inflation capped as it goes, the
+// zlib checksum and the stream's end checked, every field checked by hand, nothing evaluated.
+// No DOM: unit-tested in Node.
 import { Unzlib, zlibSync } from 'fflate';
 import { decodeBase64url, encodeBase64url } from './base64url.ts';
 import { findExample } from './examples.ts';
 import { failure, validateParams, type Checked, type DesignParams } from './params.ts';
 
 export const SHARE_VERSION = 1;
-export const MAX_SHARED_MESH_BYTES = 2 * 1024 * 1024;
+// The hash, "#v1=" included: Chromium's URL limit is 2,097,152 characters, and the page's own
+// address comes in front of the hash.
+export const MAX_LINK_HASH_CHARS = 1_900_000;
+// What a link can unpack to: a hash of MAX_LINK_HASH_CHARS holds ~1.4 MB compressed, and mesh
+// files compress 3-6x; beyond this a mesh cannot travel in a link, so it is not even tried.
+export const MAX_SHARED_MESH_BYTES = 8 * 1024 * 1024;
+export const LINK_TOO_LARGE = 'the mesh is too large to travel in a link; share an example or a smaller file';
 export const MAX_HISTORY = 8;
 const MAX_JSON_BYTES = 64 * 1024;
 const MAX_FILE_NAME = 200;
@@ -38,7 +46,7 @@ function isRecord(value: unknown): value is Record<string, unknown> {
 }
 
 // File names come back into the page as text only; still keep them plain and short.
-function checkFileName(value: unknown): Checked<string> {
+export function checkFileName(value: unknown): Checked<string> {
   if (typeof value !== 'string' || value.length === 0 || value.length > MAX_FILE_NAME) return failure('the mesh file name is missing or too long');
   if (/[\u0000-\u001f\u007f/\\]/.test(value)) return failure('the mesh file name has characters a file name cannot have');
   return { ok: true, value };
@@ -60,16 +68,29 @@ export function encodeState(state: DesignState): Uint8Array {
   return zlibSync(encodePayload(state), { level: 9 });
 }
 
-// Inflates in small pieces and stops as soon as the output passes `cap`: a deflate bomb
-// costs at most one piece beyond the cap (deflate expands at most ~1032x).
-export function inflateCapped(compressed: Uint8Array, cap: number): Checked<Uint8Array> {
-  const pieces: Uint8Array[] = [];
+// Adler-32 (RFC 1950), updated piece by piece; fflate's streaming Unzlib does not check it.
+export function adler32(data: Uint8Array, previous = 1): number {
+  let a = previous & 0xffff;
+  let b = previous >>> 16;
+  for (let i = 0; i < data.length; ) {
+    const end = Math.min(i + 5552, data.length); // the most bytes before the sums can overflow
+    for (; i < end; i++) {
+      a += data[i]!;
+      b += a;
+    }
+    a %= 65521;
+    b %= 65521;
+  }
+  return ((b << 16) | a) >>> 0;
+}
+
+function runInflater(compressed: Uint8Array, cap: number, onPiece: (piece: Uint8Array) => void): 'ok' | 'over' | 'damaged' {
   let total = 0;
   let overCap = false;
   const inflater = new Unzlib((piece) => {
     total += piece.length;
     if (total > cap) overCap = true;
-    else pieces.push(piece);
+    else onPiece(piece);
   });
   const step = 4096;
   try {
@@ -78,10 +99,35 @@ export function inflateCapped(compressed: Uint8Array, cap: number): Checked<Uint
       inflater.push(compressed.subarray(i, end), end === compressed.length);
     }
   } catch {
-    return failure('the link is damaged (its compressed data is not valid)');
+    return 'damaged';
   }
-  if (overCap) return failure(`the link unpacks to more than ${Math.round(cap / 1024)} KiB, more than any design needs`);
+  return overCap ? 'over' : 'ok';
+}
+
+// Inflates a zlib stream in small pieces and stops as soon as the output passes `cap`: a
+// deflate bomb costs at most one piece beyond the cap (deflate expands at most ~1032x). Then
+// checks what fflate does not: the Adler-32 of the output against the stream's last four
+// bytes, and that the deflate data ends exactly before them (no bytes after the stream's end).
+export function inflateCapped(compressed: Uint8Array, cap: number): Checked<Uint8Array> {
   if (compressed.length === 0) return failure('the link is empty');
+  const damaged = failure<Uint8Array>('the link is damaged (its compressed data is not valid)');
+  const pieces: Uint8Array[] = [];
+  let total = 0;
+  let checksum = 1;
+  const outcome = runInflater(compressed, cap, (piece) => {
+    pieces.push(piece);
+    total += piece.length;
+    checksum = adler32(piece, checksum);
+  });
+  if (outcome === 'over') return failure(`the link unpacks to more than ${Math.round(cap / 1024)} KiB, more than any design needs`);
+  if (outcome === 'damaged' || compressed.length < 6) return damaged;
+  const n = compressed.length;
+  const stored = ((compressed[n - 4]! << 24) | (compressed[n - 3]! << 16) | (compressed[n - 2]! << 8) | compressed[n - 1]!) >>> 0;
+  if (stored !== checksum) return failure('the link is damaged (its checksum does not match: it was cut or altered)');
+  // The deflate stream's last byte always holds bits of its final block, so without that byte
+  // a stream that ends where it should cannot be read. If it still can, data follows the
+  // stream (the checksum test above passes only if that data ends with a copy of it).
+  if (runInflater(compressed.subarray(0, n - 1), cap, () => {}) !== 'damaged') return failure('the link is damaged (data after the end of its compressed stream)');
   const out = new Uint8Array(total);
   let offset = 0;
   for (const piece of pieces) {
@@ -125,17 +171,24 @@ export function decodePayload(payload: Uint8Array, limits: DecodeLimits): Checke
   } else {
     return failure('the link names no mesh');
   }
-  const params = validateParams(parsed.params, 'parameters');
-  if (!params.ok) return failure(`in the link, ${params.message}`);
-  const historyValue = parsed.history ?? [];
-  if (!Array.isArray(historyValue) || historyValue.length > MAX_HISTORY) return failure('the link is damaged (bad solve history)');
+  const checked = checkParamsAndHistory(parsed.params, parsed.history, 'the link');
+  if (!checked.ok) return checked;
+  return { ok: true, value: { mesh, ...checked.value } };
+}
+
+// The parameters and the warm-start history of a link or a stored session.
+export function checkParamsAndHistory(paramsValue: unknown, historyValue: unknown, where: string): Checked<{ params: DesignParams; history: DesignParams[] }> {
+  const params = validateParams(paramsValue, 'parameters');
+  if (!params.ok) return failure(`in ${where}, ${params.message}`);
+  const list = historyValue ?? [];
+  if (!Array.isArray(list) || list.length > MAX_HISTORY) return failure(`${where} is damaged (bad solve history)`);
   const history: DesignParams[] = [];
-  for (const entry of historyValue) {
+  for (const entry of list) {
     const checked = validateParams(entry, 'history');
-    if (!checked.ok) return failure(`in the link's history, ${checked.message}`);
+    if (!checked.ok) return failure(`in ${where}'s history, ${checked.message}`);
     history.push(checked.value);
   }
-  return { ok: true, value: { mesh, params: params.value, history } };
+  return { ok: true, value: { params: params.value, history } };
 }
 
 export function decodeState(compressed: Uint8Array, limits: DecodeLimits): Checked<DesignState> {
@@ -148,6 +201,14 @@ export function stateToHash(state: DesignState): string {
   return `#${HASH_PREFIX}${encodeBase64url(encodeState(state))}`;
 }
 
+// The hash of a design, or why it cannot travel in a link. The mesh size is checked before
+// compressing (a large upload is not compressed for nothing), the hash length after.
+export function shareHash(state: DesignState): Checked<string> {
+  if (state.mesh.kind === 'file' && state.mesh.bytes.length > MAX_SHARED_MESH_BYTES) return failure(LINK_TOO_LARGE);
+  const hash = stateToHash(state);
+  return hash.length > MAX_LINK_HASH_CHARS ? failure(LINK_TOO_LARGE) : { ok: true, value: hash };
+}
+
 // Whether the hash is meant as a share link at all (an empty hash or "#" is not).
 export function isShareHash(hash: string): boolean {
   return hash.replace(/^#/, '').length > 0;
@@ -158,9 +219,9 @@ export function hashToState(hash: string): Checked<DesignState> {
   const version = /^v(\d{1,6})=/.exec(body);
   if (!version) return failure('this is not a Flatfacet share link (it should start with #v1=)');
   if (version[1] !== String(SHARE_VERSION)) return failure(`the link has format version ${version[1]}; this page reads version ${SHARE_VERSION}`);
+  // The same cap as for links this page writes.
+  if (body.length + 1 > MAX_LINK_HASH_CHARS) return failure('the link is too long'); // "#" + body
   const encoded = body.slice(version[0].length);
-  // base64 of the largest valid payload, compressed at worst 1:1, plus slack.
-  if (encoded.length > ((LINK_LIMITS.maxMeshBytes + MAX_JSON_BYTES) * 4) / 3 + 1024) return failure('the link is too long');
   const compressed = decodeBase64url(encoded);
   if (!compressed) return failure('the link is damaged (it has characters a share link never has)');
   return decodeState(compressed, LINK_LIMITS);

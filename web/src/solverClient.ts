@@ -1,6 +1,8 @@
 // The page's side of the solver worker: numbers the jobs, drops answers to jobs the page has
 // moved past, and makes Cancel answer at once. A worker stuck in a long step cannot read the
-// cancel message, so after a short grace it is terminated and a new one reloads the mesh.
+// cancel message, so after a short grace it is terminated and a new one reloads the mesh. A
+// worker that crashed (an error event, or a wasm call that threw something other than a
+// Status) is replaced the same way, and the page is told so.
 import type { RemeshParams } from '@flatfacet/wasm';
 import type { MeshPayload, WorkerRequest, WorkerResponse } from './protocol.ts';
 
@@ -10,11 +12,22 @@ export interface SolverOptions {
   // How long a cancel waits for the worker before replacing it (tests set 0 to exercise the
   // replacement path deterministically).
   cancelGraceMs?: number;
+  // Test hook: the first worker crashes this many steps into its second solve.
+  crashAfterSteps?: number;
+}
+
+export interface Crash {
+  message: string;
+  // Whether the new worker got the last loaded mesh back (false: none was loaded, or the
+  // worker crashed again while reloading it).
+  meshKept: boolean;
 }
 
 export interface SolverEvents {
-  // Answers to the current job only (and 'ready' / 'fatal').
+  // Answers to the current job, to every load (and 'ready' / 'fatal').
   onMessage(message: WorkerResponse): void;
+  // The worker crashed and was replaced; every job up to now is dropped.
+  onCrash(crash: Crash): void;
 }
 
 export class SolverClient {
@@ -23,39 +36,54 @@ export class SolverClient {
   private quietJob = 0;
   private readonly quietJobs = new Set<number>();
   private loadedMesh: MeshPayload | null = null;
-  private pendingMesh: { job: number; mesh: MeshPayload } | null = null;
+  // Loads sent and not yet answered: every answer to one is passed on (the page shows the
+  // mesh the worker holds, even one a later open overtook), and a loaded one is what a new
+  // worker gets back.
+  private readonly pendingMeshes = new Map<number, MeshPayload>();
   // Requests made while a cancel waits for its answer: sent once the worker is known to be free.
   private held: WorkerRequest[] | null = null;
-
   private readonly cancelGraceMs: number;
 
   constructor(private readonly events: SolverEvents, options: SolverOptions = {}) {
     this.cancelGraceMs = options.cancelGraceMs ?? CANCEL_GRACE_MS;
     this.worker = this.startWorker();
+    if (options.crashAfterSteps !== undefined) this.worker.postMessage({ type: 'test', job: 0, crashAfterSteps: options.crashAfterSteps } satisfies WorkerRequest);
   }
 
   private startWorker(): Worker {
     const worker = new Worker(new URL('./worker.ts', import.meta.url), { type: 'module', name: 'flatfacet-solver' });
-    worker.onmessage = (event: MessageEvent<WorkerResponse>) => this.receive(event.data);
+    worker.onmessage = (event: MessageEvent<WorkerResponse>) => {
+      if (worker === this.worker) this.receive(event.data);
+    };
     worker.onerror = (event) => {
       event.preventDefault();
-      this.events.onMessage({ type: 'fatal', message: `the solver stopped: ${event.message || 'worker error'}` });
+      if (worker === this.worker) this.recover(event.message || 'worker error');
     };
     return worker;
   }
 
   private receive(message: WorkerResponse): void {
+    if (message.type === 'crashed') {
+      this.recover(message.message);
+      return;
+    }
     if (message.type === 'ready' || message.type === 'fatal') {
       this.events.onMessage(message);
       return;
     }
-    if (message.type === 'loaded' && this.pendingMesh?.job === message.job) {
-      this.loadedMesh = this.pendingMesh.mesh;
-      this.pendingMesh = null;
+    const pendingMesh = this.pendingMeshes.get(message.job);
+    if (pendingMesh && (message.type === 'loaded' || message.type === 'failed')) {
+      this.pendingMeshes.delete(message.job);
+      if (message.type === 'loaded') this.loadedMesh = pendingMesh;
+      this.events.onMessage(message);
+      return;
     }
     if (this.quietJobs.has(message.job)) {
       this.quietJobs.delete(message.job);
-      if (message.type === 'failed') this.events.onMessage({ type: 'fatal', message: `the solver could not reload the mesh: ${message.message}` });
+      if (message.type === 'failed') {
+        this.loadedMesh = null;
+        this.events.onCrash({ message: `the solver could not reload the mesh: ${message.message}`, meshKept: false });
+      }
       return;
     }
     if (message.job !== this.job) return;
@@ -76,7 +104,7 @@ export class SolverClient {
   // The mesh bytes are copied, not transferred: the page keeps them for links and restarts.
   load(mesh: MeshPayload): number {
     this.job += 1;
-    this.pendingMesh = { job: this.job, mesh };
+    this.pendingMeshes.set(this.job, mesh);
     this.send({ type: 'load', job: this.job, mesh, quiet: false });
     return this.job;
   }
@@ -94,36 +122,73 @@ export class SolverClient {
   // Stops the job at once as far as the page is concerned (its answers are dropped from now
   // on); the worker stops within one step, or is replaced if it does not answer in time.
   cancel(job: number): void {
-    if (job !== this.job || this.held) return;
+    if (job !== this.job) return;
     this.job += 1;
+    if (this.held) {
+      // An earlier cancel is still waiting for the worker, which has not seen this job's
+      // requests yet: dropping them is the whole cancel.
+      this.held = this.held.filter((request) => request.job !== job);
+      return;
+    }
     const worker = this.worker;
     worker.postMessage({ type: 'cancel', job } satisfies WorkerRequest);
     this.held = [];
     const listener = (event: MessageEvent<WorkerResponse>): void => {
       const message = event.data;
-      if (message.type === 'ready' || message.type === 'fatal' || message.job !== job) return;
+      if (message.type === 'ready' || message.type === 'fatal' || message.type === 'crashed' || message.job !== job) return;
       if (this.cancelGraceMs > 0 && (message.type === 'cancelled' || message.type === 'solved' || message.type === 'failed')) finish(false);
     };
     const timer = setTimeout(() => finish(true), this.cancelGraceMs);
     const finish = (restart: boolean): void => {
       clearTimeout(timer);
       worker.removeEventListener('message', listener);
-      if (worker !== this.worker) return;
-      if (restart) this.restart();
+      if (worker !== this.worker) return; // replaced meanwhile (a crash): nothing is held any more
+      if (restart) this.restart(true);
       this.release();
     };
     worker.addEventListener('message', listener);
   }
 
-  private restart(): void {
+  // A new worker with the last loaded mesh (loaded quietly: the page already shows it).
+  private restart(reload: boolean): boolean {
     this.worker.terminate();
     this.worker = this.startWorker();
+    this.quietJobs.clear();
+    if (!reload || !this.loadedMesh) return false;
     // A load still in the held queue is sent after this one and wins, as it should.
-    if (this.loadedMesh) {
-      // Negative numbers: never confused with the page's jobs, which may already be held.
-      this.quietJob -= 1;
-      this.quietJobs.add(this.quietJob);
-      this.worker.postMessage({ type: 'load', job: this.quietJob, mesh: this.loadedMesh, quiet: true } satisfies WorkerRequest);
-    }
+    // Negative numbers: never confused with the page's jobs, which may already be held.
+    this.quietJob -= 1;
+    this.quietJobs.add(this.quietJob);
+    this.worker.postMessage({ type: 'load', job: this.quietJob, mesh: this.loadedMesh, quiet: true } satisfies WorkerRequest);
+    return true;
   }
+
+  // The worker crashed: every job so far is dropped (held requests too), a new worker reloads
+  // the last mesh, unless it was that reload which crashed (no crash loop).
+  private recover(reason: string): void {
+    const crashedWhileReloading = this.quietJobs.size > 0;
+    this.job += 1;
+    this.held = null;
+    this.pendingMeshes.clear();
+    if (crashedWhileReloading) this.loadedMesh = null;
+    const meshKept = this.restart(!crashedWhileReloading);
+    this.events.onCrash({ message: reason, meshKept });
+  }
+}
+
+// Test hooks from the page's address: ?cancelGrace=0 makes every cancel replace the worker
+// (the path a long step takes); ?crashAfterSteps=N makes the first worker crash N steps into
+// its second solve.
+export function solverTestHooks(): SolverOptions {
+  const numberFromUrl = (name: string, max: number): number | undefined => {
+    const value = new URLSearchParams(location.search).get(name);
+    const n = value === null ? Number.NaN : Number(value);
+    return Number.isInteger(n) && n >= 0 && n <= max ? n : undefined;
+  };
+  const options: SolverOptions = {};
+  const cancelGraceMs = numberFromUrl('cancelGrace', 10_000);
+  const crashAfterSteps = numberFromUrl('crashAfterSteps', 1_000_000);
+  if (cancelGraceMs !== undefined) options.cancelGraceMs = cancelGraceMs;
+  if (crashAfterSteps !== undefined) options.crashAfterSteps = crashAfterSteps;
+  return options;
 }

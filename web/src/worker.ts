@@ -1,7 +1,12 @@
 // The solver worker: owns the wasm Session and drives it step by step. Between steps it yields
 // to the event loop, so a cancel or a parameter change arrives within one step; the page
 // stays free because none of this runs on its thread.
-import createFlatfacet, { type FlatfacetModule, type MeshInfo, type Progress, type Session, type Status } from '@flatfacet/wasm';
+//
+// Two kinds of failure: a Status the core returns (`ok: false`: bad mesh, bad parameters; the
+// session is intact) is posted as `failed`; anything else a wasm call throws (out of memory,
+// a trap, a deleted object) leaves the module in an unknown state, so the worker posts
+// `crashed`, stops answering, and the page replaces it.
+import createFlatfacet, { type FlatfacetModule, type MeshInfo, type Problems, type Progress, type Session, type Status } from '@flatfacet/wasm';
 import wasmUrl from '@flatfacet/wasm-binary?url';
 import { transferablesOf, type MeshPayload, type QualityReport, type SolveResult, type WorkerRequest, type WorkerResponse } from './protocol.ts';
 
@@ -21,8 +26,13 @@ interface Run {
 
 let flatfacet: FlatfacetModule | null = null;
 let session: Session | null = null;
-let loadedMesh: MeshPayload | null = null; // the last mesh the core accepted
 let currentRun: Run | null = null;
+let crashed = false;
+let crashAfterSteps: number | null = null; // test hook: counts down in the second solve
+let solvesFinished = 0;
+
+// A Status with ok false: the request failed, the session kept its mesh and result.
+class StatusError extends Error {}
 
 function post(message: WorkerResponse): void {
   scope.postMessage(message, transferablesOf(message));
@@ -39,18 +49,30 @@ function yieldToEventLoop(): Promise<void> {
   });
 }
 
-function parseJson<T>(text: string): T {
-  return JSON.parse(text) as T;
+// A JSON answer that must be a Status-shaped object with `ok: true`; ok false throws a
+// StatusError with the core's message; anything else (not JSON, no `ok`) is a crash.
+function checked<T extends Status>(text: string, what: string): T {
+  const parsed = JSON.parse(text) as unknown;
+  if (typeof parsed !== 'object' || parsed === null || typeof (parsed as Status).ok !== 'boolean') throw new Error(`${what}: the core answered something that is not a status`);
+  const status = parsed as T;
+  if (!status.ok) throw new StatusError(status.message || `${what} failed`);
+  return status;
+}
+
+// objText() and partsCsv() return a Status JSON on failure; an OBJ or CSV never starts with '{'.
+function checkedText(text: string, what: string): string {
+  if (text.startsWith('{')) checked<Status>(text, what);
+  return text;
 }
 
 function loadInto(target: Session, mesh: MeshPayload): MeshInfo {
   switch (mesh.kind) {
     case 'bytes':
-      return parseJson<MeshInfo>(target.loadMesh(mesh.name, mesh.bytes));
+      return checked<MeshInfo>(target.loadMesh(mesh.name, mesh.bytes), 'reading the mesh');
     case 'arrays':
-      return parseJson<MeshInfo>(target.loadArrays(mesh.name, mesh.positions, mesh.indices));
+      return checked<MeshInfo>(target.loadArrays(mesh.name, mesh.positions, mesh.indices), 'reading the mesh');
     case 'shape':
-      return parseJson<MeshInfo>(target.loadShape(mesh.name, mesh.triangles));
+      return checked<MeshInfo>(target.loadShape(mesh.name, mesh.triangles), 'making the example');
   }
 }
 
@@ -63,109 +85,95 @@ function handleLoad(job: number, mesh: MeshPayload, quiet: boolean): void {
   if (currentRun) currentRun.cancelled = true;
   const target = requireSession();
   const info = loadInto(target, mesh);
-  if (!info.ok) {
-    post({ type: 'failed', job, message: info.message });
-    return;
-  }
-  loadedMesh = mesh;
-  post({
-    type: 'loaded',
-    job,
-    info,
-    positions: quiet ? new Float32Array(0) : target.inputPositions().slice(),
-    indices: quiet ? new Uint32Array(0) : target.inputIndices().slice(),
-  });
-}
-
-// A new Session with the loaded mesh: a cold start that does not depend on what ran before.
-function freshSession(): Status {
-  if (!flatfacet || !loadedMesh) return { ok: false, message: 'no mesh is loaded' };
-  const next = new flatfacet.Session();
-  const info = loadInto(next, loadedMesh);
-  if (!info.ok) {
-    next.delete();
-    return info;
-  }
-  session?.delete();
-  session = next;
-  return { ok: true, message: '' };
+  // Embind's getters return fresh arrays (wasm/bindings.cpp), transferred as they are.
+  const positions = quiet ? new Float32Array(0) : target.inputPositions();
+  const indices = quiet ? new Uint32Array(0) : target.inputIndices();
+  post({ type: 'loaded', job, info, positions, indices });
 }
 
 function collectResult(target: Session, solveSeconds: number, steps: number): SolveResult {
+  const report: QualityReport = checked<Status>(target.reportJson(), 'the quality report') as unknown as QualityReport;
+  delete report.ok;
+  delete report.message;
+  const problems = checked<Problems>(target.problems(), 'the problem list');
   return {
-    clusterIds: target.clusterIds().slice(),
-    panelPositions: target.panelPositions().slice(),
-    panelOffsets: target.panelOffsets().slice(),
-    panelIndices: target.panelIndices().slice(),
-    panelTriangles: target.panelTriangles().slice(),
-    panelTriangleIds: target.panelTriangleIds().slice(),
-    cornerPositions: target.cornerPositions().slice(),
-    cornerPlanarity: target.cornerPlanarity().slice(),
-    problems: parseJson(target.problems()),
-    report: parseJson<QualityReport>(target.reportJson()),
-    objText: target.objText(),
-    partsCsv: target.partsCsv(),
+    clusterIds: target.clusterIds(),
+    panelPositions: target.panelPositions(),
+    panelOffsets: target.panelOffsets(),
+    panelIndices: target.panelIndices(),
+    panelTriangles: target.panelTriangles(),
+    panelTriangleIds: target.panelTriangleIds(),
+    cornerPositions: target.cornerPositions(),
+    cornerPlanarity: target.cornerPlanarity(),
+    problems,
+    report,
+    objText: checkedText(target.objText(), 'the panels OBJ'),
+    partsCsv: checkedText(target.partsCsv(), 'the parts list'),
     solveSeconds,
     steps,
   };
 }
 
-async function handleSolve(job: number, fresh: boolean, chain: string[]): Promise<void> {
-  if (currentRun) currentRun.cancelled = true;
-  const run: Run = { job, cancelled: false, pendingParams: null };
-  currentRun = run;
-  if (fresh) {
-    const status = freshSession();
-    if (!status.ok) {
-      post({ type: 'failed', job, message: status.message });
-      currentRun = null;
-      return;
-    }
-  }
-  const started = performance.now(); // the solve itself, not the reload of a fresh start
+// The test hook (?crashAfterSteps=N): N steps into the worker's second solve (so that a
+// result exists to keep), a wasm getter on a deleted Session throws Embind's BindingError, a
+// real non-Status exception out of the module.
+function maybeCrashForTest(): void {
+  if (crashAfterSteps === null || !flatfacet || solvesFinished === 0) return;
+  crashAfterSteps -= 1;
+  if (crashAfterSteps > 0) return;
+  crashAfterSteps = null;
+  const doomed = new flatfacet.Session();
+  doomed.delete();
+  doomed.clusterIds();
+}
+
+async function handleSolve(run: Run, fresh: boolean, chain: string[]): Promise<void> {
   const target = requireSession();
+  // A cold start from the loaded mesh, the same result as a new Session with it.
+  if (fresh) target.resetSolve();
+  const started = performance.now();
   let steps = 0;
   let lastClusterView = started;
   for (const paramsJson of chain) {
-    const set = parseJson<Status>(target.setParams(paramsJson));
-    if (!set.ok) {
-      post({ type: 'failed', job, message: set.message });
-      if (currentRun === run) currentRun = null;
-      return;
-    }
+    checked(target.setParams(paramsJson), 'the parameters');
     while (!target.done()) {
       await yieldToEventLoop();
+      if (crashed) return;
       if (run.cancelled) {
-        post({ type: 'cancelled', job });
+        post({ type: 'cancelled', job: run.job });
         return;
       }
       if (run.pendingParams !== null) {
-        const update = parseJson<Status>(target.setParams(run.pendingParams));
+        const update = run.pendingParams;
         run.pendingParams = null;
-        if (!update.ok) {
-          post({ type: 'failed', job, message: update.message });
-          if (currentRun === run) currentRun = null;
-          return;
-        }
+        checked(target.setParams(update), 'the parameters');
       }
-      const progress = parseJson<Progress>(target.step());
+      const progress = checked<Progress>(target.step(), 'the solve');
       steps += 1;
-      if (!progress.ok) {
-        post({ type: 'failed', job, message: progress.message });
-        if (currentRun === run) currentRun = null;
-        return;
-      }
+      maybeCrashForTest();
       const now = performance.now();
-      post({ type: 'progress', job, progress, elapsedSeconds: (now - started) / 1000 });
+      post({ type: 'progress', job: run.job, progress, elapsedSeconds: (now - started) / 1000 });
       if (now - lastClusterView >= CLUSTER_VIEW_INTERVAL_MS && !progress.done) {
         lastClusterView = now;
-        post({ type: 'clusters', job, clusterIds: target.clusterIds().slice() });
+        post({ type: 'clusters', job: run.job, clusterIds: target.clusterIds() });
       }
     }
   }
   const result = collectResult(target, (performance.now() - started) / 1000, steps);
-  if (currentRun === run) currentRun = null;
-  post({ type: 'solved', job, result });
+  solvesFinished += 1;
+  post({ type: 'solved', job: run.job, result });
+}
+
+function failWith(job: number, error: unknown): void {
+  if (crashed) return;
+  if (error instanceof StatusError) {
+    post({ type: 'failed', job, message: error.message });
+    return;
+  }
+  crashed = true;
+  currentRun = null;
+  const reason = error instanceof Error ? `${error.name}: ${error.message}` : String(error);
+  post({ type: 'crashed', message: reason.slice(0, 300) });
 }
 
 function handle(request: WorkerRequest): void {
@@ -173,19 +181,27 @@ function handle(request: WorkerRequest): void {
     case 'load':
       handleLoad(request.job, request.mesh, request.quiet);
       return;
-    case 'solve':
-      void handleSolve(
-        request.job,
-        request.fresh,
-        request.chain.map((params) => JSON.stringify(params)),
-      ).catch((error: unknown) => post({ type: 'failed', job: request.job, message: `internal error: ${String(error)}` }));
+    case 'solve': {
+      if (currentRun) currentRun.cancelled = true;
+      const run: Run = { job: request.job, cancelled: false, pendingParams: null };
+      currentRun = run;
+      const chain = request.chain.map((params) => JSON.stringify(params));
+      void handleSolve(run, request.fresh, chain)
+        .catch((error: unknown) => failWith(request.job, error))
+        .finally(() => {
+          if (currentRun === run) currentRun = null;
+        });
       return;
+    }
     case 'update':
       if (currentRun && currentRun.job === request.job) currentRun.pendingParams = JSON.stringify(request.params);
       return;
     case 'cancel':
       if (currentRun && currentRun.job === request.job) currentRun.cancelled = true;
       else post({ type: 'cancelled', job: request.job });
+      return;
+    case 'test':
+      crashAfterSteps = request.crashAfterSteps;
       return;
   }
 }
@@ -205,11 +221,11 @@ const ready = createFlatfacet({ locateFile: (path) => (path.endsWith('.wasm') ? 
 
 scope.onmessage = (event) => {
   void ready.then((ok) => {
-    if (!ok) return;
+    if (!ok || crashed) return;
     try {
       handle(event.data);
     } catch (error) {
-      post({ type: 'failed', job: event.data.job, message: `internal error: ${String(error)}` });
+      failWith(event.data.job, error);
     }
   });
 };

@@ -51,9 +51,4 @@ export class ProblemLayer {
   setResolution(width: number, height: number): void {
     this.lineMaterial.resolution.set(width, height);
   }
-
-  count(problems: Problems | null): number {
-    if (!problems) return 0;
-    return problems.spikes.length / 3 + problems.flippedEdges.length / 6 + problems.invalidPanels.length;
-  }
 }

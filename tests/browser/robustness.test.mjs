@@ -1,0 +1,324 @@
+// The page under races, crashes and hostile input, in headless Chromium against the built
+// site: Remesh while a mesh opens, a cancel during an earlier cancel, a crashing worker, glTF
+// files that point elsewhere, links too large to travel, stale link messages and hashes, the
+// stored session, and a site built without the shared example meshes.
+import assert from 'node:assert/strict';
+import { after, before, test } from 'node:test';
+import {
+  download,
+  errorAfter,
+  launchBrowser,
+  openPage,
+  outcomes,
+  remesh,
+  selectExample,
+  setPanels,
+  solveAfter,
+  startServer,
+  statusText,
+  waitForDone,
+  waitForProgress,
+  waitForSaved,
+  waitForStatus,
+} from './harness.mjs';
+
+let server;
+let browser;
+before(async () => {
+  server = await startServer();
+  browser = await launchBrowser();
+});
+after(async () => {
+  await browser?.close();
+  await server?.close();
+});
+
+async function withPage(url, run, { allowed = [] } = {}) {
+  const { context, page, errors } = await openPage(browser, url);
+  try {
+    await run(page, context);
+    assert.deepEqual(errors.filter((error) => !allowed.some((pattern) => pattern.test(error))), [], 'no page or console errors');
+  } finally {
+    await context.close();
+  }
+}
+
+test('Remesh, Enter and Share are refused while a mesh opens; the new mesh solves under its own name', () =>
+  withPage(server.url, async (page) => {
+    await waitForDone(page);
+    const since = await outcomes(page);
+    // In one task: pick another example, then at once press Remesh, Enter and Copy share link.
+    const buttons = await page.evaluate(() => {
+      const select = document.getElementById('example');
+      select.value = 'helicoid';
+      select.dispatchEvent(new Event('change'));
+      const state = {
+        remesh: document.getElementById('remesh').disabled,
+        share: document.getElementById('share').disabled,
+      };
+      document.getElementById('remesh').click();
+      document.getElementById('share').click();
+      document.getElementById('panels').dispatchEvent(new KeyboardEvent('keydown', { key: 'Enter', bubbles: true }));
+      return state;
+    });
+    assert.deepEqual(buttons, { remesh: true, share: true }, 'disabled while opening');
+    assert.equal(await waitForDone(page, since), 120);
+    assert.equal((await outcomes(page)).solves, since.solves + 1, 'one solve: the one the open starts');
+    assert.match(await page.locator('#mesh-title').textContent(), /Helicoid/);
+    assert.equal(await page.evaluate(() => location.hash), '', 'no link was published');
+    const obj = await download(page, 'Export OBJ');
+    assert.equal(obj.name, 'helicoid-panels.obj');
+    assert.equal(await page.getByRole('button', { name: 'Remesh' }).isEnabled(), true);
+  }));
+
+test('a load overtaken by an open that fails: the page shows, and solves, the mesh the worker holds', () =>
+  withPage(server.url, async (page) => {
+    await waitForDone(page);
+    await solveAfter(page, () => selectExample(page, 'saddle'));
+    await setPanels(page, 6);
+    const since = await outcomes(page);
+    // A large OFF goes to the worker; while it loads there, a GLB that fails on the page.
+    const drop = (name, text) =>
+      page.evaluate(
+        ([name, text]) => {
+          const transfer = new DataTransfer();
+          transfer.items.add(new File([text], name));
+          document.getElementById('viewport').dispatchEvent(new DragEvent('drop', { dataTransfer: transfer, bubbles: true, cancelable: true }));
+        },
+        [name, text],
+      );
+    const n = 160;
+    const lines = [];
+    for (let j = 0; j <= n; j++) for (let i = 0; i <= n; i++) lines.push(`${i} ${j} ${(((i - n / 2) ** 2 - (j - n / 2) ** 2) / (n * 10)).toFixed(4)}`);
+    const faces = [];
+    for (let j = 0; j < n; j++) for (let i = 0; i < n; i++) faces.push(`4 ${j * (n + 1) + i} ${j * (n + 1) + i + 1} ${(j + 1) * (n + 1) + i + 1} ${(j + 1) * (n + 1) + i}`);
+    await drop('pringle.off', `OFF\n${lines.length} ${faces.length} 0\n${lines.join('\n')}\n${faces.join('\n')}\n`);
+    await page.waitForFunction(() => document.body.dataset.opening === 'loading', null, { timeout: 30_000, polling: 'raf' });
+    await drop('broken.glb', 'glTF not really');
+    // Which finishes first is up to the browser; wait until both have, and any solve too.
+    await page.waitForFunction(
+      (since) => Number(document.body.dataset.errors ?? 0) > since.errors && document.body.dataset.opening === 'false' && document.body.dataset.solving === 'false',
+      since,
+      { timeout: 30_000, polling: 20 },
+    );
+    const title = (await page.locator('#mesh-title').textContent()).trim();
+    assert.ok(['Saddle (generated)', 'pringle.off'].includes(title), title);
+    assert.equal(await solveAfter(page, () => remesh(page)), 6);
+    const obj = await download(page, 'Export OBJ');
+    const input = /^# input: (.*)$/m.exec(obj.text)?.[1];
+    assert.equal(input, title === 'pringle.off' ? 'pringle.off' : 'saddle', 'the worker solved the mesh the page shows');
+    assert.equal(obj.name, title === 'pringle.off' ? 'pringle-panels.obj' : 'saddle-panels.obj');
+  }));
+
+test('a fresh solve in the same worker (resetSolve) gives the panels of the first solve', () =>
+  withPage(server.url, async (page) => {
+    await waitForDone(page);
+    await solveAfter(page, () => selectExample(page, 'groin_vault'));
+    const first = (await download(page, 'Export OBJ')).text;
+    await setPanels(page, 90);
+    assert.equal(await solveAfter(page, () => remesh(page)), 90); // a warm start
+    await setPanels(page, 120);
+    assert.equal(await solveAfter(page, () => remesh(page)), 120); // warm again: other panels
+    assert.notEqual((await download(page, 'Export OBJ')).text, first);
+    assert.equal(await solveAfter(page, () => remesh(page)), 120); // same parameters: from scratch
+    assert.equal((await download(page, 'Export OBJ')).text, first, 'identical to the cold solve after the load');
+  }));
+
+test('a cancel during an earlier cancel still cancels', () =>
+  withPage(server.url, async (page) => {
+    await waitForDone(page);
+    await setPanels(page, 500);
+    await remesh(page);
+    await waitForProgress(page);
+    const before = await outcomes(page);
+    // Cancel, Remesh and Cancel again before the worker can confirm the first cancel.
+    await page.evaluate(() => {
+      document.getElementById('cancel').click();
+      document.getElementById('remesh').click();
+      document.getElementById('cancel').click();
+    });
+    await waitForStatus(page, /Cancelled/, 2000);
+    assert.equal(await page.getByRole('button', { name: 'Cancel' }).isDisabled(), true);
+    await setPanels(page, 90);
+    assert.equal(await solveAfter(page, () => remesh(page)), 90);
+    assert.equal((await outcomes(page)).solves, before.solves + 1, 'neither cancelled solve finished on the page');
+  }));
+
+test('a worker that crashes is replaced: the last result is kept and the page solves again', () =>
+  withPage(`${server.url}?crashAfterSteps=3`, async (page) => {
+    assert.equal(await waitForDone(page), 300);
+    const first = (await download(page, 'Export OBJ')).text;
+    const crashed = page.workers()[0];
+    const closed = new Promise((resolve) => crashed.once('close', resolve));
+    const replacement = page.waitForEvent('worker', { timeout: 30_000 });
+    await setPanels(page, 200);
+    const message = await errorAfter(page, () => remesh(page), 60_000);
+    assert.match(message, /the solver ran out of memory or crashed and was restarted; the last result is kept/);
+    await Promise.all([closed, replacement]);
+    assert.equal(page.workers().length, 1, 'one solver worker, the new one');
+    assert.equal(await page.getByRole('button', { name: 'Cancel' }).isDisabled(), true);
+    assert.match(await page.locator('#stats').textContent(), /Panels\s*300/, 'the last result is still shown');
+    assert.equal((await download(page, 'Export OBJ')).text, first, 'and still exported');
+    // The new worker has the mesh: a cold solve gives the panels of before the crash.
+    await setPanels(page, 300);
+    assert.equal(await solveAfter(page, () => remesh(page)), 300);
+    assert.equal((await download(page, 'Export OBJ')).text, first, 'the same panels as before the crash');
+    await setPanels(page, 200);
+    assert.equal(await solveAfter(page, () => remesh(page)), 200);
+  }));
+
+function gltf(json) {
+  return Buffer.from(JSON.stringify({ asset: { version: '2.0' }, ...json }));
+}
+
+// A 2 x 2 quad grid as an embedded glTF (data: buffer), with a texture from elsewhere.
+function quadGltf(extra = {}) {
+  const positions = new Float32Array([0, 0, 0, 1, 0, 0, 2, 0, 0, 0, 1, 0, 1, 1, 0.2, 2, 1, 0, 0, 2, 0, 1, 2, 0, 2, 2, 0]);
+  const indices = new Uint32Array([0, 1, 4, 0, 4, 3, 1, 2, 5, 1, 5, 4, 3, 4, 7, 3, 7, 6, 4, 5, 8, 4, 8, 7]);
+  const bin = Buffer.concat([Buffer.from(positions.buffer), Buffer.from(indices.buffer)]);
+  return gltf({
+    scene: 0,
+    scenes: [{ nodes: [0] }],
+    nodes: [{ mesh: 0 }],
+    meshes: [{ primitives: [{ attributes: { POSITION: 0 }, indices: 1, material: 0 }] }],
+    materials: [{ pbrMetallicRoughness: { baseColorTexture: { index: 0 } } }],
+    textures: [{ source: 0 }],
+    images: [{ uri: 'https://example.invalid/texture.png' }],
+    buffers: [{ uri: `data:application/octet-stream;base64,${bin.toString('base64')}`, byteLength: bin.length }],
+    bufferViews: [
+      { buffer: 0, byteOffset: 0, byteLength: positions.byteLength },
+      { buffer: 0, byteOffset: positions.byteLength, byteLength: indices.byteLength },
+    ],
+    accessors: [
+      { bufferView: 0, componentType: 5126, count: 9, type: 'VEC3', min: [0, 0, 0], max: [2, 2, 0.2] },
+      { bufferView: 1, componentType: 5125, count: indices.length, type: 'SCALAR' },
+    ],
+    ...extra,
+  });
+}
+
+test('a glTF never makes the page fetch: external URIs are refused, textures skipped', () =>
+  withPage(server.url, async (page) => {
+    await waitForDone(page);
+    const requests = [];
+    page.on('request', (request) => requests.push(request.url()));
+    const outside = (url) => !url.startsWith(server.url) && !url.startsWith('data:') && !url.startsWith('blob:');
+    const open = (name, buffer) => page.getByLabel('Open mesh').setInputFiles({ name, mimeType: 'model/gltf+json', buffer });
+    for (const uri of ['https://example.invalid/mesh.bin', 'mesh.bin']) {
+      const message = await errorAfter(page, () => open('canopy.gltf', gltf({ buffers: [{ uri, byteLength: 96 }] })));
+      assert.match(message, /^Error: canopy\.gltf refers to a separate file .*does not fetch/);
+    }
+    await setPanels(page, 4);
+    assert.equal(await solveAfter(page, () => open('grid.gltf', quadGltf())), 4, 'embedded data opens; its texture is not fetched');
+    assert.match(await page.locator('#mesh-details').textContent(), /8 triangles/);
+    assert.deepEqual(requests.filter(outside), [], 'no request left the page');
+    assert.deepEqual(requests.filter((url) => /mesh\.bin|texture\.png/.test(url)), [], 'not even to its own server');
+  }));
+
+test('a mesh too large for a link gets a clear message and no link', () =>
+  withPage(server.url, async (page) => {
+    await waitForDone(page);
+    // A small grid with 2.5 MB of noise in a comment: it loads, but cannot travel in a link.
+    let x = 2463534242;
+    const next = () => {
+      x ^= x << 13;
+      x ^= x >>> 17;
+      x ^= x << 5;
+      return (x >>> 0) & 63;
+    };
+    const alphabet = 'ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/';
+    const lines = ['# ' + Array.from({ length: 2_500_000 }, () => alphabet[next()]).join('')];
+    for (let j = 0; j < 4; j++) for (let i = 0; i < 4; i++) lines.push(`v ${i} ${j} ${((i * j) % 3) * 0.1}`);
+    for (let j = 0; j < 3; j++) for (let i = 0; i < 3; i++) lines.push(`f ${j * 4 + i + 1} ${j * 4 + i + 2} ${j * 4 + i + 6} ${j * 4 + i + 5}`);
+    await setPanels(page, 3);
+    await solveAfter(page, () => page.getByLabel('Open mesh').setInputFiles({ name: 'noisy.obj', mimeType: 'text/plain', buffer: Buffer.from(lines.join('\n')) }));
+    const message = await errorAfter(page, () => page.getByRole('button', { name: 'Copy share link' }).click());
+    assert.match(message, /the mesh is too large to travel in a link; share an example or a smaller file/);
+    assert.equal(await page.evaluate(() => location.hash), '', 'nothing in the address bar');
+    assert.equal(await page.locator('#share-row').isHidden(), true);
+  }));
+
+test('a bad link opened later says so once: the next design does not repeat it', () =>
+  withPage(server.url, async (page) => {
+    await waitForDone(page);
+    const message = await errorAfter(page, () => page.evaluate(() => (location.hash = '#v1=!!broken')));
+    assert.match(message, /this share link cannot be opened/);
+    const since = await outcomes(page);
+    assert.equal(await solveAfter(page, () => selectExample(page, 'saddle')), 120);
+    assert.match(await statusText(page), /^Done: 120 panels$/);
+    assert.equal((await outcomes(page)).errors, since.errors, 'no error shown again');
+  }));
+
+test('after Copy share link, a changed design is what a reload restores', () =>
+  withPage(server.url, async (page) => {
+    await waitForDone(page);
+    await solveAfter(page, () => selectExample(page, 'barrel_vault'));
+    await page.getByRole('button', { name: 'Copy share link' }).click();
+    await page.waitForFunction(() => location.hash.startsWith('#v1='));
+    await setPanels(page, 70);
+    const since = await outcomes(page);
+    assert.equal(await solveAfter(page, () => remesh(page)), 70);
+    assert.equal(await page.evaluate(() => location.hash), '', 'the stale link left the address bar');
+    await waitForSaved(page, since);
+    await page.reload();
+    assert.equal(await waitForDone(page), 70, 'the last design, not the older link');
+    assert.equal(await page.getByLabel('Example', { exact: true }).inputValue(), 'barrel_vault');
+  }));
+
+test('the stored session keeps the mesh once; one that cannot be restored says so', () =>
+  withPage(server.url, async (page) => {
+    await waitForDone(page);
+    const cells = 8;
+    const lines = [];
+    for (let j = 0; j <= cells; j++) for (let i = 0; i <= cells; i++) lines.push(`v ${i} ${j} ${(Math.sin(i) * Math.cos(j) * 0.3).toFixed(4)}`);
+    for (let j = 0; j < cells; j++) for (let i = 0; i < cells; i++) lines.push(`f ${j * 9 + i + 1} ${j * 9 + i + 2} ${j * 9 + i + 11} ${j * 9 + i + 10}`);
+    await setPanels(page, 10);
+    await solveAfter(page, () => page.getByLabel('Open mesh').setInputFiles({ name: 'sheet.obj', mimeType: 'text/plain', buffer: Buffer.from(lines.join('\n')) }));
+    await setPanels(page, 8);
+    const since = await outcomes(page);
+    assert.equal(await solveAfter(page, () => remesh(page)), 8);
+    await waitForSaved(page, since);
+    const stored = await page.evaluate(
+      () =>
+        new Promise((resolve, reject) => {
+          const open = indexedDB.open('flatfacet');
+          open.onerror = () => reject(open.error);
+          open.onsuccess = () => {
+            const tx = open.result.transaction(['sessions', 'meshes']);
+            const meshes = tx.objectStore('meshes').getAllKeys();
+            const session = tx.objectStore('sessions').get('last');
+            tx.oncomplete = () => resolve({ meshKeys: meshes.result, session: session.result });
+          };
+        }),
+    );
+    assert.equal(stored.meshKeys.length, 1, 'one mesh kept');
+    assert.match(stored.meshKeys[0], /^sheet\.obj:\d+:[0-9a-f]{8}$/);
+    assert.equal(stored.session.mesh.key, stored.meshKeys[0], 'the session refers to it');
+    assert.equal(stored.session.params.panels, 8);
+    // A stored session this page cannot use: a note says so, and the default example opens.
+    await page.evaluate(
+      () =>
+        new Promise((resolve) => {
+          const open = indexedDB.open('flatfacet');
+          open.onsuccess = () => {
+            const tx = open.result.transaction(['sessions'], 'readwrite');
+            tx.objectStore('sessions').put({ v: 2, mesh: { example: 'eiffel_tower' }, params: {}, history: [] }, 'last');
+            tx.oncomplete = resolve;
+          };
+        }),
+    );
+    await page.reload();
+    await waitForDone(page);
+    assert.equal(await page.locator('#session-note').isVisible(), true);
+    assert.match(await page.locator('#session-note').textContent(), /cannot be restored: .*unknown example/);
+  }));
+
+test('without the shared example meshes the page starts on a generated example', () =>
+  withPage(server.url, async (page, context) => {
+    await context.route('**/examples/index.json', (route) => route.fulfill({ status: 404, body: 'not found' }));
+    await page.reload();
+    assert.equal(await waitForDone(page), 120);
+    assert.equal(await page.getByLabel('Example', { exact: true }).inputValue(), 'freeform_roof');
+    assert.equal(await page.locator('#example option[value="hyperboloid_s4"]').evaluate((option) => option.hidden), true);
+    assert.equal(await page.locator('#example option[value="saddle"]').evaluate((option) => option.hidden), false);
+  }, { allowed: [/404/] }));

@@ -1,0 +1,170 @@
+// Unit tests of the page's design state machine (web/src/designMachine.ts, compiled to
+// build/web-tests by `npm run test:web`): what may run while a mesh opens, which worker answer
+// belongs to which request, warm starts, and what a crash leaves.
+import assert from 'node:assert/strict';
+import { test } from 'node:test';
+import { DesignMachine } from '../../build/web-tests/designMachine.js';
+import { DEFAULT_PARAMS } from '../../build/web-tests/params.js';
+
+const params = (changes = {}) => ({ ...DEFAULT_PARAMS, ...changes });
+
+// A machine with mesh "a" loaded (job 1) and, if `solved`, one finished solve (job 2).
+function loadedMachine({ solved = false } = {}) {
+  const machine = new DesignMachine(8);
+  const token = machine.beginOpen({ name: 'a' });
+  assert.equal(machine.openSent(token, 1), true);
+  assert.deepEqual(machine.loaded(1, (info) => info.name), { info: { name: 'a' }, mesh: 'a', newest: true });
+  if (solved) {
+    const plan = machine.planRemesh(params());
+    machine.startSolve(2, params(), plan.chain, plan.lost);
+    assert.ok(machine.finishSolve(2, 'result a'));
+  }
+  return machine;
+}
+
+test('nothing can be remeshed or shared before a mesh is loaded', () => {
+  const machine = new DesignMachine(8);
+  assert.equal(machine.canRemesh, false);
+  assert.equal(machine.canShare, false);
+  assert.deepEqual(machine.planRemesh(params()), { kind: 'refused', reason: 'no-mesh' });
+});
+
+test('while a new mesh opens, Remesh and Share are refused, and the old mesh stays until it loads', () => {
+  const machine = loadedMachine({ solved: true });
+  const token = machine.beginOpen({ name: 'b' });
+  assert.equal(machine.canRemesh, false, 'refused while the payload is prepared');
+  assert.equal(machine.canShare, false);
+  assert.deepEqual(machine.planRemesh(params({ panels: 50 })), { kind: 'refused', reason: 'opening' });
+  machine.openSent(token, 3);
+  assert.equal(machine.canRemesh, false, 'refused while the worker loads it');
+  assert.equal(machine.mesh, 'a', 'the old mesh is still the design');
+  assert.equal(machine.canExport, true, 'the old result can still be exported');
+  assert.equal(machine.loaded(99, () => 'x'), null, 'an answer to another job changes nothing');
+  assert.deepEqual(machine.loaded(3, (info) => info.name).mesh, 'b');
+  assert.equal(machine.mesh, 'b');
+  assert.equal(machine.solved, null, 'the old result belongs to the old mesh');
+  assert.equal(machine.canRemesh, true);
+  assert.equal(machine.sessionPristine, true);
+});
+
+test('a later open wins over an earlier one; an open that fails on the page leaves the mesh', () => {
+  const machine = loadedMachine();
+  const first = machine.beginOpen({ name: 'b' });
+  const second = machine.beginOpen({ name: 'c' });
+  assert.equal(machine.isCurrentOpen(first), false);
+  assert.equal(machine.openSent(first, 5), false, 'the earlier open is not sent');
+  assert.equal(machine.abandonOpen(second), true);
+  assert.equal(machine.opening, null);
+  assert.equal(machine.mesh, 'a');
+  assert.equal(machine.canRemesh, true);
+});
+
+test('a load a later open overtook still becomes the mesh: the page shows what the worker holds', () => {
+  const machine = loadedMachine({ solved: true });
+  const b = machine.beginOpen({ name: 'b' });
+  machine.openSent(b, 3);
+  const c = machine.beginOpen({ name: 'c' }); // read on the page while the worker loads b
+  assert.deepEqual(machine.loaded(3, (info) => info.name), { info: { name: 'b' }, mesh: 'b', newest: false });
+  assert.equal(machine.canRemesh, false, 'c is still opening');
+  machine.abandonOpen(c); // c cannot be read
+  assert.equal(machine.mesh, 'b', 'b, which the worker holds, not a');
+  assert.equal(machine.canRemesh, true);
+  // Two loads in the worker: the first loads, the second is refused; the first stays.
+  const d = machine.beginOpen({ name: 'd' });
+  machine.openSent(d, 4);
+  const e = machine.beginOpen({ name: 'e' });
+  machine.openSent(e, 5);
+  assert.equal(machine.loaded(4, (info) => info.name).newest, false);
+  assert.equal(machine.failed(5), 'open');
+  assert.equal(machine.opening, null);
+  assert.equal(machine.mesh, 'd');
+  // An answer for a load the worker skipped past clears it too (answers come in order).
+  const f = machine.beginOpen({ name: 'f' });
+  machine.openSent(f, 6);
+  const g = machine.beginOpen({ name: 'g' });
+  machine.openSent(g, 7);
+  assert.equal(machine.loaded(7, (info) => info.name).newest, true);
+  assert.equal(machine.opening, null);
+  assert.equal(machine.loaded(6, () => 'late'), null);
+});
+
+test('warm start only from the finished result with the same seed, and the chain that reproduces it', () => {
+  const machine = loadedMachine({ solved: true });
+  assert.equal(machine.sessionHoldsSolved, true);
+  const warm = machine.planRemesh(params({ panels: 90 }));
+  assert.deepEqual(warm, { kind: 'solve', run: [params({ panels: 90 })], fresh: false, chain: [params(), params({ panels: 90 })], lost: null });
+  const same = machine.planRemesh(params());
+  assert.equal(same.fresh, true, 'identical parameters solve afresh');
+  const reseeded = machine.planRemesh(params({ seed: 2 }));
+  assert.equal(reseeded.fresh, true, 'a new seed starts over');
+  assert.deepEqual(reseeded.chain, [params({ seed: 2 })]);
+});
+
+test('a chain longer than a link carries is lost, and so is one changed mid-solve', () => {
+  const machine = loadedMachine({ solved: true });
+  let job = 10;
+  for (let panels = 100; panels > 100 - 9; panels--) {
+    const plan = machine.planRemesh(params({ panels }));
+    machine.startSolve(++job, params({ panels }), plan.chain, plan.lost);
+    machine.finishSolve(job, 'r');
+  }
+  assert.equal(machine.solved.chain, null);
+  assert.equal(machine.solved.lost, 'long-chain');
+  const plan = machine.planRemesh(params({ panels: 40 }));
+  machine.startSolve(++job, params({ panels: 40 }), plan.chain, plan.lost);
+  assert.equal(machine.update(params({ panels: 40 })), null, 'no change, no update');
+  assert.equal(machine.update(params({ panels: 30 })), job);
+  machine.finishSolve(job, 'r');
+  assert.equal(machine.solved.params.panels, 30);
+  assert.equal(machine.solved.lost, 'changed-mid-solve');
+});
+
+test('answers to dropped solves change nothing', () => {
+  const machine = loadedMachine({ solved: true });
+  machine.startSolve(7, params({ panels: 60 }), [params({ panels: 60 })], null);
+  assert.equal(machine.dropSolve(), 7);
+  assert.equal(machine.dropSolve(), null);
+  assert.equal(machine.finishSolve(7, 'late'), null);
+  assert.equal(machine.failed(7), null);
+  assert.equal(machine.solved.result, 'result a');
+  assert.equal(machine.sessionHoldsSolved, false, 'the session no longer holds the shown result');
+});
+
+test('a refused solve or mesh leaves the design; the next solve is a cold one', () => {
+  const machine = loadedMachine({ solved: true });
+  machine.startSolve(7, params({ panels: 60 }), [params({ panels: 60 })], null);
+  assert.equal(machine.failed(7), 'solve');
+  assert.equal(machine.solving, null);
+  assert.equal(machine.solved.result, 'result a');
+  const token = machine.beginOpen({ name: 'bad' });
+  machine.openSent(token, 8);
+  assert.equal(machine.failed(8), 'open');
+  assert.equal(machine.mesh, 'a');
+  assert.equal(machine.planRemesh(params({ panels: 70 })).fresh, true);
+});
+
+test('a crash drops what was under way, keeps the last result, and loses the mesh only if it was not reloaded', () => {
+  const machine = loadedMachine({ solved: true });
+  machine.startSolve(7, params({ panels: 60 }), [params({ panels: 60 })], null);
+  assert.deepEqual(machine.crashed(true), { lostOpening: null, lostSolve: true });
+  assert.equal(machine.solving, null);
+  assert.equal(machine.solved.result, 'result a');
+  assert.equal(machine.sessionHoldsSolved, false);
+  assert.equal(machine.canRemesh, true);
+  assert.equal(machine.planRemesh(params({ panels: 60 })).fresh, true, 'the solve after a crash is a cold one');
+  const token = machine.beginOpen({ name: 'b' });
+  machine.openSent(token, 9);
+  assert.deepEqual(machine.crashed(false), { lostOpening: { name: 'b' }, lostSolve: false });
+  assert.equal(machine.opening, null);
+  assert.equal(machine.mesh, null);
+  assert.equal(machine.canRemesh, false);
+  assert.equal(machine.canExport, false);
+});
+
+test('an open still being prepared on the page survives a crash', () => {
+  const machine = loadedMachine();
+  const token = machine.beginOpen({ name: 'b' });
+  machine.crashed(true);
+  assert.equal(machine.isCurrentOpen(token), true);
+  assert.equal(machine.openSent(token, 4), true);
+});
