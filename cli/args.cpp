@@ -9,8 +9,6 @@
 
 namespace ff::cli {
 
-namespace {
-
 double parse_double(const std::string& text, const std::string& what) {
   if (text.empty()) throw UsageError(what + ": expected a number, got nothing");
   char* end = nullptr;
@@ -20,8 +18,6 @@ double parse_double(const std::string& text, const std::string& what) {
     throw UsageError(what + ": '" + text + "' is not a finite number");
   return v;
 }
-
-}  // namespace
 
 std::string Args::get(const std::string& name, const std::string& fallback) const {
   const auto it = options.find(name);

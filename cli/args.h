@@ -33,6 +33,9 @@ struct Args {
 // Strict whole-number parsing of `text` within [lo, hi]; `what` names it in the UsageError.
 long long parse_int(const std::string& text, const std::string& what, long long lo, long long hi);
 
+// Strict floating-point parsing: the whole text must be a finite number.
+double parse_double(const std::string& text, const std::string& what);
+
 // `with_value`: options that take a value; `switches`: flags without one.
 Args parse_args(const std::vector<std::string>& argv, const std::set<std::string>& with_value,
                 const std::set<std::string>& switches);

@@ -2,6 +2,7 @@
 // writing the panels OBJ and the report JSON (DESIGN.md 4).
 #include <chrono>
 #include <cstdio>
+#include <set>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -9,10 +10,10 @@
 
 #include "cli/args.h"
 #include "cli/commands.h"
+#include "cli/fabrication_options.h"
 #include "cli/input.h"
 #include "cli/output.h"
 #include "cli/remesh_report.h"
-#include "core/fabricate/parts_list.h"
 #include "core/mesh/mesh_io.h"
 #include "core/panels/panel_export.h"
 #include "core/quality/report.h"
@@ -30,10 +31,9 @@ double seconds_since(Clock::time_point t0) { return std::chrono::duration<double
 constexpr long long kMaxIterations = 100000;  // the Remesher's own limit for k1
 
 // Options DESIGN.md 4 names that belong to later releases: refused by name, so nobody takes
-// a silently ignored --thickness for a thickness-aware result.
+// a silently ignored --glass for a glass-ready result.
 void refuse_later_options(const std::vector<std::string>& argv) {
   const std::pair<const char*, const char*> later[] = {
-      {"thickness", "fabrication comes in a later release"},
       {"glass", "glass mode comes in a later release"},
       {"min-angle", "minimum corner angles come with glass mode in a later release"},
   };
@@ -59,15 +59,16 @@ std::pair<int, int> parse_iterations(const std::string& text) {
 
 struct Options {
   RemeshParams params;
-  std::string input, seeding, out, report, parts;
+  std::string input, seeding, out, report;
+  FabricationRequest fabrication;
   std::string density;  // a file, read once the mesh is loaded (its length is checked against it)
 };
 
 Options parse_options(const std::vector<std::string>& argv) {
   refuse_later_options(argv);
-  const Args args =
-      parse_args(argv, {"panels", "seed", "weights", "density", "iterations", "out", "report", "parts", "seeding"},
-                 {"single-point-nodes", "no-optimize", "no-teleport"});
+  std::set<std::string> with_value = {"panels", "seed", "weights", "density", "iterations", "out", "report", "seeding"};
+  with_value.insert(fabrication_option_names().begin(), fabrication_option_names().end());
+  const Args args = parse_args(argv, with_value, {"single-point-nodes", "no-optimize", "no-teleport"});
   if (args.positional.size() != 1) throw UsageError("expected exactly one INPUT mesh (see flatfacet --help)");
   if (!args.has("panels")) throw UsageError("--panels N is required");
   Options o;
@@ -90,13 +91,13 @@ Options parse_options(const std::vector<std::string>& argv) {
   o.report = args.get("report");
   if (args.has("out") && o.out.empty()) throw UsageError("--out: empty file name");
   if (args.has("report") && o.report.empty()) throw UsageError("--report: empty file name");
-  o.parts = args.get("parts");
-  if (args.has("parts") && o.parts.empty()) throw UsageError("--parts: empty file name");
-  const std::string* names[] = {&o.out, &o.report, &o.parts};
-  for (int a = 0; a < 3; ++a)
-    for (int b = a + 1; b < 3; ++b)
+  o.fabrication = parse_fabrication(args);
+  const FabricationRequest& f = o.fabrication;
+  const std::string* names[] = {&o.out, &o.report, &f.parts, &f.sheets, &f.solid};
+  for (int a = 0; a < 5; ++a)
+    for (int b = a + 1; b < 5; ++b)
       if (!names[a]->empty() && *names[a] == *names[b])
-        throw UsageError("--out, --report and --parts name the same file '" + *names[a] + "'");
+        throw UsageError("--out, --report, --parts, --sheets and --solid name the same file '" + *names[a] + "'");
   if (args.has("density")) {
     o.density = args.get("density");
     if (o.density.empty()) throw UsageError("--density: empty file name");
@@ -138,7 +139,7 @@ int run_remesh(const std::vector<std::string>& argv) {
     outputs.push_back({o.out, panels_obj(remesher.panels(), panels_obj_comment(run))});
   }
   if (!o.report.empty()) outputs.push_back({o.report, remesh_report_json(run)});
-  if (!o.parts.empty()) outputs.push_back({o.parts, parts_list_csv(remesher.panels())});
+  for (OutputFile& file : fabrication_outputs(o.fabrication, remesher.panels())) outputs.push_back(std::move(file));
   if (outputs.empty())
     std::fputs(remesh_summary_line(run).c_str(), stdout);
   else

@@ -228,6 +228,43 @@ total = sum(float(r["area"]) for r in rows[:-1])
 assert abs(total - float(rows[-1]["area"])) <= 1e-9 * total and all(float(r["area"]) > 0 for r in rows[:-1])
 PY
 
+# Fabrication: thickness in mm on a metre mesh, parts as JSON, cut sheets, solid panels.
+"$bin" remesh "$meshes/epcot.off" --panels 30 --out "$tmp/fab.obj" --parts "$tmp/fab.json" --thickness 20 \
+  --units mm --sheets "$tmp/fab.svg" --solid "$tmp/fab.solid.obj" 2>/dev/null
+code=$?
+"$bin" remesh "$meshes/epcot.off" --panels 30 --parts "$tmp/fab_m.csv" 2>/dev/null
+[ "$code" = 0 ] || [ "$code" = 3 ] && python3 - "$tmp/fab.obj" "$tmp/fab.json" "$tmp/fab_m.csv" "$tmp/fab.solid.obj" <<'PY' && ok || bad "remesh fabrication outputs (exit $code)"
+import collections, csv, json, math, sys
+obj, parts, csv_m, solid = sys.argv[1:]
+faces = sum(1 for line in open(obj) if line.startswith("f "))
+d = json.load(open(parts))
+assert d["units"] == "mm" and d["mesh_units"] == "m" and d["thickness"] == 20 and d["side"] == "inside"
+assert d["totals"]["panels"] == faces == len(d["panels"])
+assert abs(sum(p["area"] for p in d["panels"]) - d["totals"]["area"]) <= 1e-9 * d["totals"]["area"]
+rows = list(csv.DictReader(open(csv_m)))
+assert rows[-1]["label"] == "total" and int(rows[-1]["panel"]) == faces and rows[0]["units"] == "m"
+# The same panels in metres (m^2) and millimetres (mm^2).
+assert abs(float(rows[-1]["area"]) * 1e6 - d["totals"]["area"]) <= 1e-6 * d["totals"]["area"]
+for p in d["panels"]:
+    assert len(p["edges"]) == p["sides"] == len(p["outer"]) == len(p["inner"]) == len(p["corner_angles_deg"])
+    shoelace = 0.5 * sum(a[0] * b[1] - b[0] * a[1] for a, b in zip(p["outer"], p["outer"][1:] + p["outer"][:1]))
+    assert abs(shoelace - p["area"]) <= 1e-6 * p["area"], (p["label"], shoelace, p["area"])
+    for e in p["edges"]:
+        assert 0 <= e["chamfer_deg"] < 90 and (e["neighbour"] is None) == (e["chamfer_deg"] == 0)
+labels = {p["label"] for p in d["panels"]}
+assert all(e["neighbour"] in labels for p in d["panels"] for e in p["edges"] if e["neighbour"])
+# Each solid panel is closed: every directed edge once, its reverse once.
+objects = []
+for line in open(solid):
+    if line.startswith("o "): objects.append(collections.Counter())
+    elif line.startswith("f "):
+        f = [int(x) for x in line.split()[1:]]
+        for i in range(len(f)): objects[-1][(f[i], f[(i + 1) % len(f)])] += 1
+assert len(objects) == faces
+assert all(n == 1 and c[(b, a)] == 1 for c in objects for (a, b), n in c.items())
+PY
+grep -q "<svg" "$tmp/fab.svg" && ok || bad "remesh --sheets wrote no SVG"
+
 # Neither --out nor --report: one summary line on stdout and nothing written.
 mkdir -p "$tmp/quiet"
 (cd "$tmp/quiet" && "$bin" remesh "$meshes/epcot.off" --panels 30 >"$tmp/stdout.txt" 2>"$tmp/err.txt")
@@ -249,7 +286,18 @@ expect_error 2 "iterations.*'a'.*whole number" remesh "$e" --panels 10 --iterati
 expect_error 2 "iterations.*-1.*range" remesh "$e" --panels 10 --iterations -1,2 "${o[@]}"
 expect_error 2 "iterations.*K1,K2" remesh "$e" --panels 10 --iterations 1,2,3 "${o[@]}"
 expect_error 2 "unknown option --frobnicate" remesh "$e" --panels 10 --frobnicate "${o[@]}"
-expect_error 2 "thickness.*not supported yet" remesh "$e" --panels 10 --thickness 0.02 "${o[@]}"
+expect_error 2 "thickness.*positive" remesh "$e" --panels 10 --thickness 0 --parts "$tmp/never.csv"
+expect_error 2 "thickness.*finite" remesh "$e" --panels 10 --thickness abc --parts "$tmp/never.csv"
+expect_error 2 "thickness.*nothing to use" remesh "$e" --panels 10 --thickness 0.02 "${o[@]}"
+expect_error 2 "side.*inside or outside" remesh "$e" --panels 10 --side up --parts "$tmp/never.csv"
+expect_error 2 "units.*mm, cm, m, in or ft" remesh "$e" --panels 10 --units yd --parts "$tmp/never.csv"
+expect_error 2 "mesh-units.*mm, cm, m, in or ft" remesh "$e" --panels 10 --mesh-units km --parts "$tmp/never.csv"
+expect_error 2 "sheets.*svg or .dxf" remesh "$e" --panels 10 --sheets "$tmp/never.pdf"
+expect_error 2 "sheet-size.*W,H" remesh "$e" --panels 10 --sheets "$tmp/never.svg" --sheet-size 100
+expect_error 2 "sheet-size needs --sheets" remesh "$e" --panels 10 --sheet-size 100,50 "${o[@]}"
+expect_error 2 "solid needs --thickness" remesh "$e" --panels 10 --solid "$tmp/never.obj"
+expect_error 2 "fits no" remesh "$e" --panels 10 --sheets "$tmp/never.svg" --sheet-size 0.3,0.3
+expect_error 2 "same file" remesh "$e" --panels 10 --parts "$tmp/never.svg" --sheets "$tmp/never.svg"
 expect_error 2 "glass.*not supported yet" remesh "$e" --panels 10 --glass "${o[@]}"
 expect_error 2 "min-angle.*not supported yet" remesh "$e" --panels 10 --min-angle=15 "${o[@]}"
 expect_error 2 "same file" remesh "$e" --panels 10 --out "$tmp/never.x" --parts "$tmp/never.x"

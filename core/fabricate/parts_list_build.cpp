@@ -1,0 +1,98 @@
+// make_parts_list: the fabrication data per panel, laid out in each panel's own frame.
+#include <cmath>
+#include <string>
+
+#include "core/fabricate/parts_list.h"
+#include "core/util/error.h"
+
+namespace ff {
+
+namespace {
+
+constexpr double kDeg = 180.0 / 3.14159265358979323846;
+
+// Interior angle at each corner of a counter-clockwise polygon, in (0, 360).
+std::vector<double> corner_angles(const std::vector<Vec2>& poly) {
+  std::vector<double> angles;
+  const size_t k = poly.size();
+  for (size_t i = 0; i < k; ++i) {
+    const Vec2 in = poly[i] - poly[(i + k - 1) % k], out = poly[(i + 1) % k] - poly[i];
+    // The turn from the incoming to the outgoing edge; a left turn makes a convex corner.
+    const double turn = std::atan2(in.x() * out.y() - in.y() * out.x(), in.dot(out)) * kDeg;
+    angles.push_back(180.0 - turn);
+  }
+  return angles;
+}
+
+}  // namespace
+
+PartsList make_parts_list(const PanelMesh& pm, const FabricationOptions& options) {
+  if (!(options.thickness >= 0.0) || !std::isfinite(options.thickness))
+    throw InputError("thickness: expected a positive number, got " + std::to_string(options.thickness));
+  PartsList list;
+  list.options = options;
+  const double scale = unit_scale(options.mesh_units, options.units);  // mesh -> designer
+  const PanelEdges edges = panel_edges(pm);
+  const std::vector<std::vector<EdgeChamfer>> chamfers = edge_chamfers(pm, edges);
+  ThickPanels thick;
+  const bool has_thickness = options.thickness > 0.0;
+  if (has_thickness) {
+    thick = thicken_panels(pm, edges, options.thickness / scale, options.side);
+    list.max_node_spread = thick.max_spread * scale;
+    list.straight_corners = thick.straight_corners;
+    list.projected_corners = thick.projected_corners;
+  }
+  const std::vector<PanelPart> basic = panel_parts(pm);
+  if (has_thickness) {
+    for (size_t v = 0; v < pm.vertices.size(); ++v) {
+      if (!(thick.node_spread[v] > 1e-9 * thick.thickness)) continue;
+      NodeSpread node;
+      node.vertex = static_cast<int>(v);
+      node.position = pm.vertices[v] * scale;
+      node.spread = thick.node_spread[v] * scale;
+      for (const int p : edges.vertex_panels[v]) node.panels.push_back(basic[static_cast<size_t>(p)].label);
+      list.spread_nodes.push_back(node);
+    }
+  }
+  for (size_t p = 0; p < pm.panels.size(); ++p) {
+    PartRow row;
+    row.part = basic[p];
+    row.part.area *= scale * scale;
+    row.part.perimeter *= scale;
+    row.part.offset *= scale;
+    row.chamfers = chamfers[p];
+    PanelOutline& o = row.outline;
+    o.panel = row.part.panel;
+    o.label = row.part.label;
+    o.thickness = has_thickness ? options.thickness : 0.0;
+    const std::vector<int>& poly = pm.panels[p];
+    // The frame sits at the first corner, its normal the panel's: counter-clockwise panels
+    // stay counter-clockwise in 2D (PlaneFrame is right-handed).
+    const PlaneFrame frame = make_plane_frame(pm.vertices[static_cast<size_t>(poly[0])], pm.plane_normals[p]);
+    for (const int v : poly) o.outer.push_back(frame.to_2d(pm.vertices[static_cast<size_t>(v)]) * scale);
+    // The inner face is parallel to the outer one: seen through the panel, it is its
+    // projection onto the panel's plane.
+    if (has_thickness)
+      for (const Vec3& x : thick.inner[p]) o.inner.push_back(frame.to_2d(x) * scale);
+    for (size_t i = 0; i < poly.size(); ++i) {
+      OutlineEdge e;
+      e.length = (o.outer[(i + 1) % poly.size()] - o.outer[i]).norm();
+      e.chamfer_deg = row.chamfers[i].chamfer_deg;
+      if (row.chamfers[i].neighbour >= 0) e.neighbour = basic[static_cast<size_t>(row.chamfers[i].neighbour)].label;
+      o.edges.push_back(e);
+    }
+    row.corner_angles_deg = corner_angles(o.outer);
+    list.total_area += row.part.area;
+    list.total_perimeter += row.part.perimeter;
+    list.rows.push_back(std::move(row));
+  }
+  return list;
+}
+
+std::vector<PanelOutline> panel_outlines(const PartsList& list) {
+  std::vector<PanelOutline> outlines;
+  for (const PartRow& row : list.rows) outlines.push_back(row.outline);
+  return outlines;
+}
+
+}  // namespace ff
