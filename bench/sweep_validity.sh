@@ -4,6 +4,7 @@
 # runs at a time. Prints one line per run and the share that exited 0 (every panel valid).
 # The tests pin two counts per mesh that pass; this shows what happens in between.
 # Usage: bench/sweep_validity.sh [path/to/flatfacet]   (default build/release/cli/flatfacet)
+# FF_SWEEP_ARGS: extra remesh options for every run, e.g. "--glass --min-angle 10".
 set -u
 here="$(cd "$(dirname "$0")/.." && pwd)"
 flatfacet="${1:-$here/build/release/cli/flatfacet}"
@@ -23,14 +24,14 @@ for entry in "inspired_mesh.obj 4288" "YasIsland.off 1952" "epcot.off 1536" "Moo
 done
 run_one() {
   local file="$1" n="$2"
-  "$flatfacet" remesh "$meshes/$file" --panels "$n" --report "$out/$file.$n.json" > /dev/null 2>&1
+  "$flatfacet" remesh "$meshes/$file" --panels "$n" --report "$out/$file.$n.json" ${FF_SWEEP_ARGS:-} > /dev/null 2>&1
   local rc=$?
   local invalid
   invalid=$(python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['invalid_panels'])" "$out/$file.$n.json" 2> /dev/null)
   echo "$file $n exit=$rc invalid=${invalid:-?}"
 }
 export -f run_one
-export flatfacet meshes out
+export flatfacet meshes out FF_SWEEP_ARGS
 printf '%s\n' "${cases[@]}" | xargs -P 2 -L 1 bash -c 'run_one $0 $1' | sort > "$out/results.txt"
 cat "$out/results.txt"
 valid=$(grep -c "exit=0" "$out/results.txt")

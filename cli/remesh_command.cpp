@@ -30,22 +30,6 @@ double seconds_since(Clock::time_point t0) { return std::chrono::duration<double
 
 constexpr long long kMaxIterations = 100000;  // the Remesher's own limit for k1
 
-// Options DESIGN.md 4 names that belong to later releases: refused by name, so nobody takes
-// a silently ignored --glass for a glass-ready result.
-void refuse_later_options(const std::vector<std::string>& argv) {
-  const std::pair<const char*, const char*> later[] = {
-      {"glass", "glass mode comes in a later release"},
-      {"min-angle", "minimum corner angles come with glass mode in a later release"},
-  };
-  for (const std::string& a : argv) {
-    if (a.compare(0, 2, "--") != 0) continue;
-    const std::string name = a.substr(2, a.find('=') == std::string::npos ? std::string::npos : a.find('=') - 2);
-    for (const auto& [option, why] : later) {
-      if (name == option) throw UsageError("--" + name + ": not supported yet (" + why + ")");
-    }
-  }
-}
-
 // "K1,K2": at most K1 Lloyd iterations, at most K2 panel rounds.
 std::pair<int, int> parse_iterations(const std::string& text) {
   const size_t comma = text.find(',');
@@ -65,10 +49,10 @@ struct Options {
 };
 
 Options parse_options(const std::vector<std::string>& argv) {
-  refuse_later_options(argv);
-  std::set<std::string> with_value = {"panels", "seed", "weights", "density", "iterations", "out", "report", "seeding"};
+  std::set<std::string> with_value = {"panels", "seed",   "weights", "density",  "iterations",
+                                      "out",    "report", "seeding", "min-angle"};
   with_value.insert(fabrication_option_names().begin(), fabrication_option_names().end());
-  const Args args = parse_args(argv, with_value, {"single-point-nodes", "no-optimize", "no-teleport"});
+  const Args args = parse_args(argv, with_value, {"single-point-nodes", "no-optimize", "no-teleport", "glass"});
   if (args.positional.size() != 1) throw UsageError("expected exactly one INPUT mesh (see flatfacet --help)");
   if (!args.has("panels")) throw UsageError("--panels N is required");
   Options o;
@@ -87,6 +71,13 @@ Options parse_options(const std::vector<std::string>& argv) {
   p.single_point_nodes = args.flags.count("single-point-nodes") != 0;
   p.optimize_planes = args.flags.count("no-optimize") == 0;
   p.make_panels = true;
+  p.glass = args.flags.count("glass") != 0;
+  if (args.has("min-angle")) {
+    p.min_corner_angle_deg = parse_double(args.get("min-angle"), "--min-angle");
+    // Above 60 no triangle qualifies, so no mesh could pass.
+    if (!(p.min_corner_angle_deg >= 0.0 && p.min_corner_angle_deg <= 60.0))
+      throw UsageError("--min-angle: expected degrees between 0 and 60, got '" + args.get("min-angle") + "'");
+  }
   o.out = args.get("out");
   o.report = args.get("report");
   if (args.has("out") && o.out.empty()) throw UsageError("--out: empty file name");
@@ -128,7 +119,11 @@ int run_remesh(const std::vector<std::string>& argv) {
   }
 
   const auto t_quality = Clock::now();
-  const QualityReport quality = measure_quality(remesher.mesh(), remesher.topology(), remesher.panels());
+  QualityOptions quality_options;
+  quality_options.glass = o.params.glass;
+  quality_options.min_corner_angle_deg = o.params.min_corner_angle_deg;
+  const QualityReport quality =
+      measure_quality(remesher.mesh(), remesher.topology(), remesher.panels(), quality_options);
   timings.quality = seconds_since(t_quality);
   timings.total = seconds_since(t_start);
 

@@ -7,6 +7,7 @@
 #include "core/cluster/lloyd.h"
 #include "core/cluster/teleport.h"
 #include "core/panels/boundary_term.h"
+#include "core/panels/glass_split.h"
 #include "core/panels/plane_fit.h"
 #include "core/util/error.h"
 
@@ -51,6 +52,8 @@ void Remesher::validate(const RemeshParams& p) const {
   if (p.teleport_interval < 0 || p.teleport_moves < 0) throw InputError("teleport interval and moves must be >= 0");
   if (p.panel_rounds < 0 || p.panel_rounds > kMaxIterations)
     throw InputError("panel rounds must be between 0 and " + std::to_string(kMaxIterations));
+  if (!(p.min_corner_angle_deg >= 0.0 && p.min_corner_angle_deg <= 60.0))
+    throw InputError("the minimum corner angle must be between 0 and 60 degrees");
   seeds_per_component(faces_, topology_, p.panels);  // throws on too many / too few panels
 }
 
@@ -92,6 +95,8 @@ void panel_lloyd_iteration(const Metric& metric, const MeshTopology& topology, C
 void Remesher::panel_round() {
   PanelAttemptOptions options;
   options.layout.diameter = metric_.diameter();
+  options.layout.min_corner_angle_deg = params_.min_corner_angle_deg;
+  options.layout.glass = params_.glass;
   options.fixed = settled_;
   options.fixed_planes = settled_planes_;
   auto attempt = std::make_unique<PanelAttempt>(mesh_, topology_, local_positions_, faces_, clustering_, options);
@@ -123,7 +128,10 @@ void Remesher::fix_panels(const PanelAttempt& attempt) {
   // When the invalid panels stop going away, split near one of them.
   const bool stalled = stalled_rounds_ >= 3;
   if (stalled) stalled_rounds_ = 0;
-  const std::vector<std::pair<int, int>> requests = split_requests(mesh_, topology_, attempt, stalled ? 1 : 0);
+  // Acute corners do not move with the boundary term (it shifts faces, not where clusters
+  // meet), so with a minimum angle a stall splits at up to three of them at once.
+  const int splits = stalled ? (params_.min_corner_angle_deg > 0.0 ? 3 : 1) : 0;
+  const std::vector<std::pair<int, int>> requests = split_requests(mesh_, topology_, attempt, splits);
   // Merges happen away from the splits; a settled pair may merge (then it is unsettled below).
   const std::vector<int> seeds_before = clustering_.seeds;
   const std::vector<Proxy> proxies_before = clustering_.proxies;
@@ -164,6 +172,13 @@ void Remesher::finish_panels() {
   const bool optimize = (params_.optimize_planes || params_.single_point_nodes) && panels_.num_invalid() == 0;
   progress_.stage = optimize ? Stage::Optimize : Stage::Done;
   if (optimize) progress_ = Progress{Stage::Optimize, 0, 1, progress_.energy, 0};
+  if (!optimize) cut_glass();
+}
+
+void Remesher::cut_glass() {
+  if (!params_.glass) return;
+  split_concave_panels(panels_, mesh_, params_.min_corner_angle_deg);
+  progress_.invalid_panels = panels_.num_invalid();
 }
 
 void Remesher::optimize_planes() {
@@ -179,6 +194,7 @@ void Remesher::optimize_planes() {
   progress_.iteration = 1;
   progress_.invalid_panels = panels_.num_invalid();
   progress_.stage = Stage::Done;
+  cut_glass();
 }
 
 Progress Remesher::step() {

@@ -38,6 +38,12 @@ struct RemeshParams {
   // joined by short edges; true makes all of them pass through one point (paper 2.2).
   bool single_point_nodes = false;
   bool optimize_planes = true;  // beyond the paper: fit the planes to the surface at the end
+  // Glass mode (DESIGN.md 3): after the solve, concave panels are cut at their reflex corners
+  // into coplanar convex pieces (glass_split.h).
+  bool glass = false;
+  // The designer's smallest corner angle in degrees (0 = off, at most 60): a panel corner
+  // below it is a problem the panel rounds fix like the others; what remains is reported.
+  double min_corner_angle_deg = 0.0;
 };
 
 enum class Stage { Seeding, Lloyd, Panels, Optimize, Done };
@@ -97,6 +103,7 @@ class Remesher {
   void fix_panels(const PanelAttempt& attempt);
   void optimize_planes();
   void finish_panels();
+  void cut_glass();  // glass mode, last: the pieces of concave panels (glass_split.h)
 
   TriMesh mesh_;
   MeshTopology topology_;

@@ -14,15 +14,38 @@ std::string number(double v) {
   return buf;
 }
 
+// "P12" for a whole panel; glass pieces of panel 12 are "P12a", "P12b", ... (they are
+// consecutive), numbered after the panel they were cut from, so the labels match the design.
+std::vector<std::string> panel_labels(const PanelMesh& pm) {
+  const size_t n = pm.panels.size();
+  std::vector<std::string> labels(n);
+  if (pm.panel_source.size() != n) {
+    for (size_t p = 0; p < n; ++p) labels[p] = "P" + std::to_string(p + 1);
+    return labels;
+  }
+  for (size_t p = 0; p < n;) {
+    size_t end = p + 1;
+    while (end < n && pm.panel_source[end] == pm.panel_source[p]) ++end;
+    const std::string base = "P" + std::to_string(pm.panel_source[p] + 1);
+    for (size_t k = p; k < end; ++k) {
+      const size_t i = k - p;  // a..z, then za, zb, ... (a panel rarely has many pieces)
+      labels[k] = end - p == 1 ? base : base + std::string(i / 26, 'z') + static_cast<char>('a' + i % 26);
+    }
+    p = end;
+  }
+  return labels;
+}
+
 }  // namespace
 
 std::vector<PanelPart> panel_parts(const PanelMesh& pm) {
   std::vector<PanelPart> parts;
+  const std::vector<std::string> labels = panel_labels(pm);
   for (size_t p = 0; p < pm.panels.size(); ++p) {
     const std::vector<int>& panel = pm.panels[p];
     PanelPart part;
     part.panel = static_cast<int>(p);
-    part.label = "P" + std::to_string(p + 1);
+    part.label = labels[p];
     part.sides = static_cast<int>(panel.size());
     std::vector<Vec3> points;
     for (const int v : panel) points.push_back(pm.vertices[static_cast<size_t>(v)]);

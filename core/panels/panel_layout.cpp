@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "core/panels/border_vertices.h"
+#include "core/panels/glass_split.h"
 #include "core/panels/panel_check.h"
 #include "core/panels/vertex_rule.h"
 
@@ -297,7 +298,8 @@ void PanelLayout::build_panel(int c) {
   }
   int inexact = 0;
   for (int node : poly.node) inexact += node >= 0 && !node_exact_[static_cast<size_t>(node)] ? 1 : 0;
-  issues = check_panel(poly.points, poly.reference, plane, options_.spike_distance, options_.tolerance);
+  issues = check_panel(poly.points, poly.reference, plane, options_.spike_distance, options_.tolerance,
+                       options_.min_corner_angle_deg, options_.glass);
   issues.spike_vertices = std::max(issues.spike_vertices, inexact);
 }
 
@@ -317,6 +319,15 @@ std::vector<int> PanelLayout::problem_corners(int c) const {
   for (size_t i = 0; i < poly.points.size(); ++i) {
     const bool spike = !((poly.points[i] - poly.reference[i]).norm() <= options_.spike_distance);
     if (spike || issues.flipped || issues.not_star || issues.not_simple) out.push_back(poly.corner[i]);
+  }
+  // An acute corner only (the panel otherwise fine): split next to that corner.
+  if (out.empty() && issues.acute_corner) {
+    const Plane& plane = planes_.plane_of(c);
+    const PlaneFrame frame = make_plane_frame(plane.offset * plane.normal, plane.normal);
+    std::vector<Vec2> polygon;
+    for (const Vec3& p : poly.points) polygon.push_back(frame.to_2d(p));
+    for (int i : acute_corners_after_split(polygon, options_.min_corner_angle_deg, options_.glass))
+      out.push_back(poly.corner[static_cast<size_t>(i)]);
   }
   return out;
 }

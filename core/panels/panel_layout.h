@@ -21,10 +21,12 @@
 namespace ff {
 
 struct LayoutOptions {
-  double diameter = 1.0;           // D = sqrt(area / n), the metric's length unit (local frame)
-  double spike_distance = 0.2;     // a vertex farther than this from where it belongs is a spike
-  double border_tolerance = 0.02;  // extra border vertices until the border is this * D close
-  double tolerance = 1e-9;         // lengths below this count as zero in the panel checks
+  double diameter = 1.0;              // D = sqrt(area / n), the metric's length unit (local frame)
+  double spike_distance = 0.2;        // a vertex farther than this from where it belongs is a spike
+  double border_tolerance = 0.02;     // extra border vertices until the border is this * D close
+  double tolerance = 1e-9;            // lengths below this count as zero in the panel checks
+  double min_corner_angle_deg = 0.0;  // a convex corner below this is a problem; 0 = off
+  bool glass = false;                 // judge the corners of the convex pieces (glass_split.h)
 };
 
 // A panel's polygon: its vertices (local frame) in counter-clockwise order.

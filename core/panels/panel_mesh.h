@@ -17,9 +17,11 @@ struct PanelIssues {
   int spike_vertices = 0;         // vertices farther than 0.2 D from their mesh corner (paper 2.3)
   bool too_few_vertices = false;  // fewer than 3 vertices
   bool not_disk = false;          // its cluster has a hole, is enclosed, pinches or touches a neighbour twice
+  bool acute_corner = false;      // a corner below the designer's minimum angle (glass mode, DESIGN.md 3)
 
   bool valid() const {
-    return !not_simple && !flipped && !not_star && spike_vertices == 0 && !too_few_vertices && !not_disk;
+    return !not_simple && !flipped && !not_star && spike_vertices == 0 && !too_few_vertices && !not_disk &&
+           !acute_corner;
   }
 };
 
@@ -32,6 +34,9 @@ struct PanelMesh {
   std::vector<Vec3> plane_normals;
   std::vector<double> plane_offsets;
   std::vector<int> panel_cluster;
+  // Per panel: the panel it was cut from by the glass split (glass_split.h), in the numbering
+  // before the split; empty when nothing was split (each panel is its own source).
+  std::vector<int> panel_source;
   std::vector<PanelIssues> issues;
   // Per vertex: the mesh vertex (corner) it was placed for, and how many distinct planes
   // define it (3: a node, 2: on a boundary or a coplanar seam, 1: an extra border vertex).

@@ -7,6 +7,7 @@
 #include <string>
 #include <tuple>
 
+#include "core/panels/panel_check.h"
 #include "core/panels/polygon2d.h"
 #include "core/quality/hausdorff.h"
 #include "core/quality/planarity.h"
@@ -257,8 +258,16 @@ QualityReport measure_quality(const TriMesh& input, const MeshTopology& input_to
     const std::vector<int> flipped_starts = flipped_edges(poly2d, reference);
     const int flipped = static_cast<int>(flipped_starts.size());
     for (const int i : flipped_starts)
-      r.flipped_edge_vertices.push_back({poly[static_cast<size_t>(i)], poly[(static_cast<size_t>(i) + 1) % poly.size()]});
+      r.flipped_edge_vertices.push_back(
+          {poly[static_cast<size_t>(i)], poly[(static_cast<size_t>(i) + 1) % poly.size()]});
     min_angle = std::min(min_angle, min_interior_angle_deg(poly2d));
+    // Glass: judged on the counter-clockwise outline (a clockwise one is flipped anyway).
+    const bool concave = signed_area(poly2d) > 0.0 && !reflex_corners(poly2d).empty();
+    const int acute = options.min_corner_angle_deg > 0.0
+                          ? static_cast<int>(acute_corners(poly2d, options.min_corner_angle_deg).size())
+                          : 0;
+    r.concave_panels += concave;
+    r.acute_corners += acute;
 
     bool has_spike = false;
     for (int v : poly) has_spike = has_spike || spike[static_cast<size_t>(v)];
@@ -273,12 +282,14 @@ QualityReport measure_quality(const TriMesh& input, const MeshTopology& input_to
     r.non_star_panels += kernel.empty();
     r.flipped_edges += flipped;
     const bool producer_invalid = !panels.issues.empty() && !panels.issues[static_cast<size_t>(p)].valid();
-    if (producer_invalid || !simple || kernel.empty() || flipped > 0 || has_spike || misoriented) {
+    const bool glass_invalid = (options.glass && concave) || acute > 0;
+    if (producer_invalid || !simple || kernel.empty() || flipped > 0 || has_spike || misoriented || glass_invalid) {
       r.invalid_panel_ids.push_back(p);
     }
   }
   r.invalid_panels = static_cast<int>(r.invalid_panel_ids.size());
   r.min_corner_angle_deg = min_angle;
+  r.min_corner_angle_target_deg = options.min_corner_angle_deg;
   return r;
 }
 

@@ -20,6 +20,10 @@ struct QualityOptions {
   double spike_factor = 0.2;
   // Polygon checks (simple, kernel) use tolerance * bbox_diagonal(input) as their length.
   double tolerance = 1e-9;
+  // Glass mode (DESIGN.md 3): a concave panel is invalid, and so is a panel with a corner
+  // below min_corner_angle_deg (0 = no minimum).
+  bool glass = false;
+  double min_corner_angle_deg = 0.0;
 };
 
 struct QualityReport {
@@ -66,6 +70,11 @@ struct QualityReport {
   double valence3_share = 1.0;  // share of interior vertices with valence 3; 1 when none
   // Smallest interior corner angle over all panels, in each panel's plane; 0 without panels.
   double min_corner_angle_deg = 0.0;
+  // Panels with a reflex corner (invalid in glass mode), corners below the minimum angle of
+  // the options (each an invalid panel's problem), and that minimum.
+  int concave_panels = 0;
+  int acute_corners = 0;
+  double min_corner_angle_target_deg = 0.0;
 };
 
 // input_topology = build_topology(input). D = sqrt(total_area(input) / panels). Throws

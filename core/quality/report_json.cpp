@@ -21,6 +21,7 @@ std::vector<std::string> panel_problems(const PanelIssues& issues) {
   if (issues.spike_vertices > 0) problems.push_back("spike");
   if (issues.too_few_vertices) problems.push_back("too_few_vertices");
   if (issues.not_disk) problems.push_back("not_disk");
+  if (issues.acute_corner) problems.push_back("acute_corner");
   return problems;
 }
 
@@ -49,6 +50,9 @@ void write_quality_fields(JsonWriter& j, const QualityReport& q) {
   j.end_object();
   j.value("valence3_share", q.valence3_share);
   j.value("min_corner_angle_deg", q.min_corner_angle_deg);
+  j.value("min_corner_angle_target_deg", q.min_corner_angle_target_deg);
+  j.value("acute_corners", q.acute_corners);
+  j.value("concave_panels", q.concave_panels);
 }
 
 void write_invalid_panels(JsonWriter& j, const PanelMesh& pm, const QualityReport& q) {

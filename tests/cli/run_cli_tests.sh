@@ -298,13 +298,42 @@ expect_error 2 "sheet-size needs --sheets" remesh "$e" --panels 10 --sheet-size 
 expect_error 2 "solid needs --thickness" remesh "$e" --panels 10 --solid "$tmp/never.obj"
 expect_error 2 "fits no" remesh "$e" --panels 10 --sheets "$tmp/never.svg" --sheet-size 0.3,0.3
 expect_error 2 "same file" remesh "$e" --panels 10 --parts "$tmp/never.svg" --sheets "$tmp/never.svg"
-expect_error 2 "glass.*not supported yet" remesh "$e" --panels 10 --glass "${o[@]}"
-expect_error 2 "min-angle.*not supported yet" remesh "$e" --panels 10 --min-angle=15 "${o[@]}"
+expect_error 2 "min-angle.*between 0 and 60" remesh "$e" --panels 10 --glass --min-angle=61 "${o[@]}"
+expect_error 2 "min-angle.*between 0 and 60" remesh "$e" --panels 10 --min-angle -1 "${o[@]}"
+expect_error 2 "min-angle.*not a finite number" remesh "$e" --panels 10 --min-angle ten "${o[@]}"
 expect_error 2 "same file" remesh "$e" --panels 10 --out "$tmp/never.x" --parts "$tmp/never.x"
 expect_error 2 "seeding" remesh "$e" --panels 10 --seeding spiral "${o[@]}"
 expect_error 2 "weights" remesh "$e" --panels 10 --weights boundary=x "${o[@]}"
 expect_error 2 "same file" remesh "$e" --panels 10 --out "$tmp/never.x" --report "$tmp/never.x"
 expect_error 2 "panels.*triangles|triangles.*panels" remesh "$e" --panels 99999 "${o[@]}"
+# Glass mode: epcot at 38 is valid with a 10-degree minimum (exit 0): no concave panel, no
+# corner below 10, the report says so, and the parts list labels pieces after their panel.
+"$bin" remesh "$e" --panels 38 --glass --min-angle 10 --report "$tmp/glass.json" --parts "$tmp/glass.csv" \
+  --out "$tmp/glass.obj" 2>"$tmp/err.txt"
+rc=$?
+[ "$rc" = 0 ] && ok || bad "glass epcot 38: exit $rc $(cat "$tmp/err.txt")"
+python3 - "$tmp/glass.json" "$tmp/glass.csv" <<'PY' && ok || bad "glass report/parts check"
+import csv, json, re, sys
+r = json.load(open(sys.argv[1]))
+assert r["glass"] is True and r["min_angle_deg"] == 10, r
+assert r["concave_panels"] == 0 and r["acute_corners"] == 0 and r["invalid_panels"] == 0, r
+assert r["min_corner_angle_deg"] >= 10 and r["min_corner_angle_target_deg"] == 10, r
+assert r["topology_preserved"] and r["max_planarity"] <= 1e-9, r
+rows = [row for row in csv.DictReader(open(sys.argv[2])) if row["panel"] != "total" and row["label"] != "total"]
+assert len(rows) == r["panels"] >= 38, len(rows)
+assert all(re.fullmatch(r"P[0-9]+[a-z]*", row["label"]) for row in rows)
+assert len({row["label"] for row in rows}) == len(rows)
+PY
+# A minimum YasIsland cannot meet at 20 panels leaves acute corners: written, exit 3, listed.
+"$bin" remesh "$meshes/YasIsland.off" --panels 20 --iterations 20,2 --min-angle 60 --report "$tmp/acute.json" 2>"$tmp/err.txt"
+rc=$?
+[ "$rc" = 3 ] && ok || bad "min-angle 60: exit $rc (want 3) $(cat "$tmp/err.txt")"
+python3 -c "
+import json, sys
+r = json.load(open(sys.argv[1]))
+assert r['acute_corners'] > 0 and r['invalid_panels'] > 0
+assert any('acute_corner' in i['problems'] for i in r['invalid'])
+" "$tmp/acute.json" && ok || bad "acute corners not reported"
 # Input errors: exit 2, one line naming the problem, nothing written.
 expect_error 2 "cannot open" remesh "$tmp/missing.obj" --panels 10 "${o[@]}"
 expect_error 2 "OBJ" remesh "$tmp/garbage.obj" --panels 10 "${o[@]}"
