@@ -3,7 +3,7 @@
 # page's ES module where Vite picks it up (web/src/generated/, not committed).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-jobs=$(nproc 2>/dev/null || echo 2)
+jobs=${FF_JOBS:-2}
 # Emscripten's JS optimiser needs acorn, which this Node only finds here (toolchain.md 1).
 export NODE_PATH=/usr/share/nodejs
 # Eigen is header-only: the host's copy serves the wasm build too.

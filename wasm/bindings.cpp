@@ -72,5 +72,14 @@ EMSCRIPTEN_BINDINGS(flatfacet) {
       .function("problems", &Session::problems)
       .function("reportJson", &Session::report_json)
       .function("objText", &Session::obj_text)
-      .function("partsCsv", &Session::parts_csv);
+      .function("setFabrication", &Session::set_fabrication)
+      .function("partsCsv", &Session::parts_csv)
+      .function("partsJson", &Session::parts_json)
+      .function("sheetsSvg", &Session::sheets_svg)
+      .function("sheetsDxf", &Session::sheets_dxf)
+      .function("sheetStats", &Session::sheet_stats)
+      .function("solidObj", &Session::solid_obj)
+      .function(
+          "innerPositions", +[](const Session& s) { return to_typed_array(s.inner_positions(), "Float64Array"); })
+      .function("spreadNodes", &Session::spread_nodes);
 }

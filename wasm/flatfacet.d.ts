@@ -35,6 +35,33 @@ export interface RemeshParams {
   optimizePlanes?: boolean; // default true
 }
 
+export type LengthUnitName = 'mm' | 'cm' | 'm' | 'in' | 'ft';
+
+// Fabrication settings; missing fields keep the defaults (core/fabricate/fabrication_params_json.h):
+// meshUnits 'm', units = meshUnits, thickness 0 (no inner faces), side 'inside', a
+// 2440 x 1220 mm sheet. Lengths in `units`.
+export interface FabricationParams {
+  thickness?: number; // >= 0
+  side?: 'inside' | 'outside'; // where the material lies relative to the designed surface
+  units?: LengthUnitName; // of the outputs and of thickness / sheet size
+  meshUnits?: LengthUnitName; // what one mesh coordinate is
+  sheetWidth?: number; // > 0
+  sheetHeight?: number; // > 0
+}
+
+export interface SheetStats extends Status {
+  sheets: number;
+  materialUse: number; // outline area / (sheets * sheet area), 0..1
+}
+
+export interface SpreadNodes extends Status {
+  units: LengthUnitName;
+  thickness: number;
+  maxSpread: number; // designer's units
+  // Nodes whose panels' inner vertices miss one point (the extra chamfering they need).
+  nodes: { vertex: number; position: [number, number, number]; spread: number; panels: string[] }[];
+}
+
 export type StageName = 'Seeding' | 'Lloyd' | 'Panels' | 'Optimize' | 'Done'; // capitalised for display
 
 export interface Progress extends Status {
@@ -94,14 +121,36 @@ export interface Session {
   cornerPlanarity(): Float64Array;
   problems(): string; // Problems JSON (ok true) or a Status (ok false)
   // The quality report (DESIGN.md 4 keys plus "ok": true) of the current panels; only
+  // Also "panel_area": the panels' total area in mesh units squared.
   // {"ok": true, "message": ""} without panels; a Status (ok false) on failure.
   reportJson(): string;
   // Panels OBJ as `flatfacet remesh --out` writes it (the comment's input line names the file
   // instead of a path); "" when there are no panels yet; a Status JSON on failure (it starts
   // with '{', which an OBJ never does).
   objText(): string;
-  // Parts list CSV: header row, one row per panel, a total row; a Status JSON on failure.
+  // Fabrication settings (JSON of FabricationParams). Status JSON; on failure the previous
+  // settings stay. They apply to every fabrication output below.
+  setFabrication(fabricationJson: string): string;
+  // The parts list (core/fabricate/parts_list.h) CSV: header row (the nine basic columns, then
+  // units, thickness, edge lengths, chamfers, neighbours, dihedrals, corner angles, outer_2d,
+  // inner_2d), one row per panel, a total row; in the designer's units. A Status JSON on failure.
   partsCsv(): string;
+  // The same as JSON ({"units", "mesh_units", "thickness", "side", "totals": {"panels", "area",
+  // "perimeter"}, "max_node_spread", ..., "panels": [...], "spread_nodes": [...]}), or a Status
+  // JSON (ok false) on failure.
+  partsJson(): string;
+  // Cut sheets (outlines packed onto sheets of sheetWidth x sheetHeight) as SVG / DXF (R12);
+  // a Status JSON on failure (a part larger than the sheet names itself).
+  sheetsSvg(): string;
+  sheetsDxf(): string;
+  sheetStats(): string; // SheetStats JSON or a Status
+  // Solid panels OBJ (a closed prism per panel, mesh coordinates); a Status JSON without a
+  // thickness or without panels.
+  solidObj(): string;
+  // Inner-face corners (mesh units), xyz per panel corner in panelIndices order: panel i's are
+  // corners panelOffsets[i] .. panelOffsets[i+1]. Empty without panels or thickness.
+  innerPositions(): Float64Array;
+  spreadNodes(): string; // SpreadNodes JSON or a Status
   delete(): void;
 }
 

@@ -1,5 +1,6 @@
 #include "wasm/session.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <new>
 
@@ -13,6 +14,7 @@
 #include "core/shapes/example_shapes.h"
 #include "core/util/error.h"
 #include "core/util/json_writer.h"
+#include "wasm/guarded.h"
 
 namespace ff::wasm {
 
@@ -22,26 +24,18 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-std::string status_json(bool ok, const std::string& message) {
-  JsonWriter j;
-  j.begin_object().value("ok", ok).value("message", message).end_object();
-  return j.str();
-}
-
-// Runs `f`, turning every exception into a Status JSON: nothing crosses into JavaScript.
-template <typename F>
-std::string guarded(F&& f) {
-  try {
-    return f();
-  } catch (const InputError& e) {
-    return status_json(false, e.what());
-  } catch (const std::bad_alloc&) {
-    return status_json(false, "out of memory: the mesh or the panel count is too large for this browser tab");
-  } catch (const std::exception& e) {
-    return status_json(false, std::string("internal error: ") + e.what());
-  } catch (...) {
-    return status_json(false, "internal error");
+// Total area of the panel polygons (Newell), in mesh units squared: what the parts list's
+// total must equal, computed here independently of it.
+double total_panel_area(const PanelMesh& pm) {
+  double total = 0.0;
+  for (const std::vector<int>& panel : pm.panels) {
+    Vec3 twice = Vec3::Zero();
+    for (size_t i = 0; i < panel.size(); ++i)
+      twice += pm.vertices[static_cast<size_t>(panel[i])].cross(
+          pm.vertices[static_cast<size_t>(panel[(i + 1) % panel.size()])]);
+    total += 0.5 * twice.norm();
   }
+  return total;
 }
 
 // The page's stage names (wasm/flatfacet.d.ts, StageName).
@@ -327,6 +321,7 @@ std::string Session::report_json() {
     j.value("status", panels_status(pm, *q));
     j.value("done", r.done());
     j.value("requested_panels", p.panels).value("panels", q->panels).value("vertices", q->vertices);
+    j.value("panel_area", total_panel_area(pm));
     write_quality_fields(j, *q);
     j.value("invalid_panels_flagged", pm.num_invalid());
     write_invalid_panels(j, pm, *q);
@@ -360,10 +355,6 @@ std::string Session::obj_text() {
                                                    remesher_->params().seed, q->invalid_panels);
     return panels_obj(remesher_->panels(), comment);
   });
-}
-
-std::string Session::parts_csv() const {
-  return guarded([&] { return parts_list_csv(remesher_ ? remesher_->panels() : PanelMesh{}); });
 }
 
 void Session::reset_solve() {

@@ -16,6 +16,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/fabricate/fabrication_params_json.h"
 #include "core/mesh/topology.h"
 #include "core/mesh/tri_mesh.h"
 #include "core/quality/report.h"
@@ -56,8 +57,26 @@ class Session {
   std::vector<double> corner_planarity() const;
   std::string problems();
   std::string report_json();
-  std::string obj_text();         // empty without panels
-  std::string parts_csv() const;  // a Status JSON on failure
+  std::string obj_text();  // empty without panels
+
+  // Fabrication (wasm/session_fabrication.cpp; wasm/flatfacet.d.ts, FabricationParams):
+  // Status JSON; the settings stay as they were on failure.
+  std::string set_fabrication(const std::string& json);
+  // Texts (a Status JSON on failure: it starts with '{', which CSV, SVG, DXF and OBJ never do;
+  // partsJson's failure has "ok": false). Empty parts lists without panels.
+  std::string parts_csv() const;
+  std::string parts_json() const;
+  std::string sheets_svg() const;
+  std::string sheets_dxf() const;
+  std::string solid_obj() const;  // needs a thickness
+  // {"ok", "message", "sheets", "materialUse"}: the cut-sheet packing's numbers.
+  std::string sheet_stats() const;
+  // Inner-face corners, xyz per panel corner in the order of panelIndices (so panelOffsets
+  // applies), in mesh units; empty without panels or thickness.
+  std::vector<double> inner_positions() const;
+  // {"ok", "message", "units", "thickness", "maxSpread", "nodes": [{"vertex", "position"
+  // (mesh units), "spread" (designer's units), "panels"}]}.
+  std::string spread_nodes() const;
 
  private:
   struct Timings {
@@ -72,6 +91,7 @@ class Session {
   MeshTopology topology_;
   std::vector<std::string> cleanup_;
   RemeshParams params_;
+  FabricationSettings fabrication_;
   std::unique_ptr<Remesher> remesher_;
   std::optional<QualityReport> quality_;  // of the current panels, measured on demand
   Timings timings_;                       // of the solve since the last load or parameter change

@@ -96,7 +96,9 @@ test('the parts list has a header, one row per panel and totals equal to the pan
   s.setParams(JSON.stringify({ panels: 40 }));
   solve(s);
   const rows = s.partsCsv().trim().split('\n');
-  assert.equal(rows[0], 'panel,label,sides,area,perimeter,normal_x,normal_y,normal_z,offset');
+  // The full parts list (core/fabricate/parts_list.h): the nine basic columns first, then the
+  // fabrication ones; by default in the mesh's units (metres) without thickness.
+  assert.ok(rows[0].startsWith('panel,label,sides,area,perimeter,normal_x,normal_y,normal_z,offset,units,thickness,'), rows[0]);
   assert.equal(rows.length, 1 + 40 + 1);
   const areas = rows.slice(1, -1).map((r) => Number(r.split(',')[3]));
   assert.ok(areas.every((a) => a > 0));

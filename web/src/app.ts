@@ -6,6 +6,8 @@ import type { MeshInfo } from '@flatfacet/wasm';
 import { countOutcome, element } from './dom.ts';
 import { DesignMachine, type ChainLoss } from './designMachine.ts';
 import { ExamplePicker, showMeshInfo } from './examplePicker.ts';
+import { designStem } from './exports.ts';
+import { FabricationPanel } from './fabricationPanel.ts';
 import { describeDesign, findExample } from './examples.ts';
 import { payloadFromExample, payloadFromFile } from './meshFiles.ts';
 import { Outputs } from './outputs.ts';
@@ -59,9 +61,15 @@ export class App {
   private readonly remeshButton = element('remesh', HTMLButtonElement);
   private readonly cancelButton = element('cancel', HTMLButtonElement);
   private readonly exportObjButton = element('export-obj', HTMLButtonElement);
-  private readonly exportPartsButton = element('export-parts', HTMLButtonElement);
   private readonly shareButton = element('share', HTMLButtonElement);
   private readonly statsBox = element('stats', HTMLDivElement);
+  private readonly fabrication = new FabricationPanel({
+    solver: this.solver,
+    viewer: this.viewer,
+    stem: () => designStem(this.machine.mesh?.fileName ?? 'design'),
+    error: (message) => this.status.error(message),
+    settingsChanged: () => this.fabricationChanged(),
+  });
   // A message to show once the mesh being opened has loaded (set only while opening).
   private pendingNotice: string | null = null;
 
@@ -69,7 +77,6 @@ export class App {
     this.remeshButton.addEventListener('click', () => this.remesh());
     this.cancelButton.addEventListener('click', () => this.cancel());
     this.exportObjButton.addEventListener('click', () => this.exportFile('obj'));
-    this.exportPartsButton.addEventListener('click', () => this.exportFile('csv'));
     this.shareButton.addEventListener('click', () => void this.share());
     this.form.onChange(() => this.parametersChanged());
     renderStats(this.statsBox, null);
@@ -132,6 +139,7 @@ export class App {
 
   async openState(state: DesignState, note: string, fromLink: boolean): Promise<void> {
     this.form.write(state.params);
+    if (state.fabrication) this.fabrication.write(state.fabrication);
     await this.open(state.mesh, state.params, state.history, { solve: true, note, fromLink });
   }
 
@@ -170,11 +178,12 @@ export class App {
     this.viewer.setSurface(positions, indices, opening.up === 'guess' ? guessUpAxis(positions) : opening.up);
     showMeshInfo(loaded.mesh.label, loaded.mesh.info);
     renderStats(this.statsBox, null);
+    this.fabrication.panelsChanged(false);
     this.updateButtons();
     // Overtaken by a later open: shown, since the worker holds it now, but that open goes on.
     if (!loaded.newest) return;
     this.syncExampleSelect();
-    this.save({ mesh: opening.design, params: opening.params, history: [] });
+    this.save({ mesh: opening.design, params: opening.params, history: [], fabrication: this.fabrication.current });
     if (opening.solve) {
       const chain = [...opening.history, opening.params];
       this.startSolve(chain, false, chain);
@@ -273,7 +282,8 @@ export class App {
     this.status.finishProgress();
     const summary = solvedSummary(result);
     this.status.show(summary.text, summary.warning ? 'info' : 'done');
-    this.save({ mesh: mesh.design, params: solved.params, history: solved.chain ? solved.chain.slice(0, -1) : [] });
+    this.fabrication.panelsChanged(result.panelTriangles.length > 0);
+    this.save({ mesh: mesh.design, params: solved.params, history: solved.chain ? solved.chain.slice(0, -1) : [], fabrication: this.fabrication.current });
     this.updateButtons();
   }
 
@@ -307,6 +317,12 @@ export class App {
         return;
       case 'cancelled':
         return;
+      case 'fabricated':
+        this.fabrication.onFabricated(message.job, message.result);
+        return;
+      case 'fabricationFailed':
+        this.fabrication.onFailed(message.job, message.message);
+        return;
     }
   }
 
@@ -338,6 +354,7 @@ export class App {
     const solved = this.machine.solved;
     if (solved) this.viewer.setClusters(solved.result.clusterIds);
     this.pendingNotice = null;
+    this.fabrication.workerLost();
     this.syncExampleSelect();
     this.status.resetProgress();
     const parts = [crash.meshKept ? CRASH_MESSAGE : `${CRASH_MESSAGE}, but without the mesh: open it again`];
@@ -347,6 +364,18 @@ export class App {
   }
 
   // ---- outputs
+
+  // A fabrication setting changed: the stored session follows, a link no longer describes it.
+  private fabricationChanged(): void {
+    this.outputs.forgetLink();
+    const mesh = this.machine.mesh;
+    if (!mesh || this.machine.opening) return;
+    const solved = this.machine.solved;
+    const formParams = this.form.read();
+    const params = solved?.params ?? (formParams.ok ? formParams.value : null);
+    if (!params) return;
+    this.save({ mesh: mesh.design, params, history: solved?.chain ? solved.chain.slice(0, -1) : [], fabrication: this.fabrication.current });
+  }
 
   private exportFile(kind: 'obj' | 'csv'): void {
     const mesh = this.machine.mesh;
@@ -362,7 +391,7 @@ export class App {
     const params = solved?.params ?? (formParams.ok ? formParams.value : null);
     if (!params) return;
     // The history replays a warm-start chain so the link gives the identical panels.
-    const state = { mesh: mesh.design, params, history: solved?.chain ? solved.chain.slice(0, -1) : [] };
+    const state = { mesh: mesh.design, params, history: solved?.chain ? solved.chain.slice(0, -1) : [], fabrication: this.fabrication.current };
     const shared = await this.outputs.share(state, solved && !solved.chain ? solved.lost : null);
     if (shared.ok) this.status.show(shared.text);
     else this.status.error(shared.message);
@@ -373,7 +402,6 @@ export class App {
     this.remeshButton.disabled = !this.machine.canRemesh;
     this.cancelButton.disabled = !solving;
     this.exportObjButton.disabled = !this.machine.canExport;
-    this.exportPartsButton.disabled = !this.machine.canExport;
     this.shareButton.disabled = !this.machine.canShare;
     document.body.dataset.solving = String(solving);
     const opening = this.machine.opening;

@@ -41,7 +41,7 @@ function bindDrop(): void {
 }
 
 function bindViewToggles(viewer: Viewer): void {
-  const ids = { clusters: 'show-clusters', panels: 'show-panels', edges: 'show-edges', problems: 'show-problems', beforeFix: 'show-before-fix' } as const;
+  const ids = { clusters: 'show-clusters', panels: 'show-panels', edges: 'show-edges', problems: 'show-problems', beforeFix: 'show-before-fix', thick: 'show-thick' } as const;
   const read = (): void => {
     const beforeFix = element(ids.beforeFix, HTMLInputElement).checked;
     viewer.setToggles({
@@ -50,6 +50,7 @@ function bindViewToggles(viewer: Viewer): void {
       edges: element(ids.edges, HTMLInputElement).checked,
       problems: element(ids.problems, HTMLInputElement).checked,
       beforeFix,
+      thick: element(ids.thick, HTMLInputElement).checked,
     });
     element('view-legend', HTMLDivElement).hidden = !beforeFix;
   };

@@ -48,6 +48,9 @@ export const LIMITS = {
   weight: { min: 0, max: 1000 },
   lloydIterations: { min: 0, max: 200 },
   panelRounds: { min: 1, max: 100 },
+  // Fabrication (fabricationParams.ts), in the designer's units; inside the core's 0..1e9.
+  thickness: { min: 0, max: 100_000 },
+  sheetSize: { min: 0.001, max: 1_000_000 },
 } as const;
 
 export const WEIGHT_NAMES: readonly (keyof MetricWeights)[] = ['euclidean', 'l2', 'l21', 'boundary'];
@@ -58,7 +61,7 @@ export function failure<T>(message: string): Checked<T> {
   return { ok: false, message };
 }
 
-function isRecord(value: unknown): value is Record<string, unknown> {
+export function isRecord(value: unknown): value is Record<string, unknown> {
   return typeof value === 'object' && value !== null && !Array.isArray(value);
 }
 
@@ -68,7 +71,7 @@ function checkInteger(value: unknown, what: string, range: { min: number; max: n
   return { ok: true, value };
 }
 
-function checkNumber(value: unknown, what: string, range: { min: number; max: number }): Checked<number> {
+export function checkNumber(value: unknown, what: string, range: { min: number; max: number }): Checked<number> {
   if (typeof value !== 'number' || !Number.isFinite(value)) return failure(`${what} must be a number`);
   if (value < range.min || value > range.max) return failure(`${what} must be between ${range.min} and ${range.max}`);
   return { ok: true, value };

@@ -1,7 +1,7 @@
 // The messages between the page and the solver worker. The worker owns the wasm Session; the
 // page only ever sees copies. Every request carries a job number and every answer repeats
 // it, so the page drops answers to jobs it has moved past (a cancelled solve, a replaced mesh).
-import type { MeshInfo, Problems, Progress, RemeshParams } from '@flatfacet/wasm';
+import type { FabricationParams, MeshInfo, Problems, Progress, RemeshParams, SheetStats, SpreadNodes } from '@flatfacet/wasm';
 
 // What the worker loads: file bytes for the core's readers (OBJ, OFF, STL, PLY), a triangle
 // soup from three.js (glTF/GLB), or a generated surface.
@@ -20,6 +20,9 @@ export type WorkerRequest =
   // A parameter change during a solve: applied before the next step (warm start).
   | { type: 'update'; job: number; params: RemeshParams }
   | { type: 'cancel'; job: number }
+  // The fabrication outputs of the session's current panels with these settings. Its own job
+  // numbers (SolverClient.fabricate), so it never disturbs a solve's.
+  | { type: 'fabricate'; job: number; settings: FabricationParams }
   // Test hook (?crashAfterSteps=N): N steps into its second solve the worker makes a wasm call
   // that throws a non-Status error, as running out of memory would.
   | { type: 'test'; job: 0; crashAfterSteps: number };
@@ -46,6 +49,17 @@ export interface SolveResult {
   steps: number;
 }
 
+// What the Fabrication section shows and exports. The cut sheets fail on their own (a part
+// larger than the sheet) without taking the rest with them.
+export interface FabricationResult {
+  partsCsv: string;
+  partsJson: string;
+  sheets: { ok: true; svg: string; dxf: string; stats: SheetStats } | { ok: false; message: string };
+  solidObj: string | null; // null without a thickness
+  innerPositions: Float64Array; // per panel corner, panelIndices order; empty without thickness
+  spread: SpreadNodes;
+}
+
 export type WorkerResponse =
   | { type: 'ready'; version: string }
   // The solver could not start at all.
@@ -59,7 +73,9 @@ export type WorkerResponse =
   | { type: 'progress'; job: number; progress: Progress; elapsedSeconds: number }
   | { type: 'clusters'; job: number; clusterIds: Int32Array }
   | { type: 'solved'; job: number; result: SolveResult }
-  | { type: 'cancelled'; job: number };
+  | { type: 'cancelled'; job: number }
+  | { type: 'fabricated'; job: number; result: FabricationResult }
+  | { type: 'fabricationFailed'; job: number; message: string };
 
 // The buffers a message can hand over instead of copying. Each is the fresh array an Embind
 // getter returns (wasm/bindings.cpp copies out of the heap), never a view of the wasm heap
@@ -74,6 +90,8 @@ export function transferablesOf(message: WorkerResponse): Transferable[] {
       const r = message.result;
       return [r.clusterIds, r.panelPositions, r.panelOffsets, r.panelIndices, r.panelTriangles, r.panelTriangleIds, r.cornerPositions, r.cornerPlanarity].map((a) => a.buffer);
     }
+    case 'fabricated':
+      return [message.result.innerPositions.buffer];
     default:
       return [];
   }

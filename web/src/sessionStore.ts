@@ -5,7 +5,7 @@
 // back is checked like a share link (same validators), just with room for larger meshes.
 import { findExample } from './examples.ts';
 import { failure, type Checked } from './params.ts';
-import { checkFileName, checkParamsAndHistory, decodePayload, type DesignMesh, type DesignState } from './share.ts';
+import { checkFileName, checkParamsAndHistory, decodePayload, optionalFabrication, type DesignMesh, type DesignState } from './share.ts';
 
 const DB_NAME = 'flatfacet';
 const DB_VERSION = 2;
@@ -21,6 +21,7 @@ interface SessionRecord {
   mesh: { example: string } | { file: string; size: number; key: string };
   params: unknown;
   history: unknown;
+  fabrication?: unknown; // absent in sessions stored before fabrication came to the page
 }
 
 export type SaveOutcome = { ok: true } | { ok: false; message: string };
@@ -112,6 +113,7 @@ export async function saveSession(state: DesignState): Promise<SaveOutcome> {
     mesh: mesh.kind === 'example' ? { example: mesh.id } : { file: mesh.name, size: mesh.bytes.length, key: key! },
     params: state.params,
     history: state.history,
+    ...(state.fabrication ? { fabrication: state.fabrication } : {}),
   };
   try {
     await transaction<boolean>('readwrite', (sessions, meshes, done) => {
@@ -157,7 +159,9 @@ function checkRecord(record: unknown, meshBytes: unknown): Checked<DesignState> 
   }
   const checked = checkParamsAndHistory(record.params, record.history, 'the stored session');
   if (!checked.ok) return checked;
-  return { ok: true, value: { mesh, ...checked.value } };
+  const fabrication = optionalFabrication(record.fabrication, 'the stored session');
+  if (!fabrication.ok) return fabrication;
+  return { ok: true, value: { mesh, ...checked.value, ...fabrication.value } };
 }
 
 export async function loadSession(): Promise<Restored> {

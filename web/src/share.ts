@@ -12,6 +12,7 @@
 import { Unzlib, zlibSync } from 'fflate';
 import { decodeBase64url, encodeBase64url } from './base64url.ts';
 import { findExample } from './examples.ts';
+import { fabricationOrDefault, type FabricationSettings } from './fabricationParams.ts';
 import { failure, validateParams, type Checked, type DesignParams } from './params.ts';
 
 export const SHARE_VERSION = 1;
@@ -33,6 +34,8 @@ export interface DesignState {
   mesh: DesignMesh;
   params: DesignParams;
   history: DesignParams[];
+  // Absent in links and stored sessions made before fabrication came to the page: the defaults.
+  fabrication?: FabricationSettings;
 }
 
 export interface DecodeLimits {
@@ -55,7 +58,7 @@ export function checkFileName(value: unknown): Checked<string> {
 // The binary payload (before compression).
 export function encodePayload(state: DesignState): Uint8Array {
   const meshJson = state.mesh.kind === 'example' ? { example: state.mesh.id } : { file: state.mesh.name, size: state.mesh.bytes.length };
-  const json = new TextEncoder().encode(JSON.stringify({ v: SHARE_VERSION, mesh: meshJson, params: state.params, history: state.history }));
+  const json = new TextEncoder().encode(JSON.stringify({ v: SHARE_VERSION, mesh: meshJson, params: state.params, history: state.history, ...(state.fabrication ? { fabrication: state.fabrication } : {}) }));
   const fileBytes = state.mesh.kind === 'file' ? state.mesh.bytes : new Uint8Array(0);
   const out = new Uint8Array(4 + json.length + fileBytes.length);
   new DataView(out.buffer).setUint32(0, json.length, true);
@@ -173,7 +176,9 @@ export function decodePayload(payload: Uint8Array, limits: DecodeLimits): Checke
   }
   const checked = checkParamsAndHistory(parsed.params, parsed.history, 'the link');
   if (!checked.ok) return checked;
-  return { ok: true, value: { mesh, ...checked.value } };
+  const fabrication = optionalFabrication(parsed.fabrication, 'the link');
+  if (!fabrication.ok) return fabrication;
+  return { ok: true, value: { mesh, ...checked.value, ...fabrication.value } };
 }
 
 // The parameters and the warm-start history of a link or a stored session.
@@ -189,6 +194,14 @@ export function checkParamsAndHistory(paramsValue: unknown, historyValue: unknow
     history.push(checked.value);
   }
   return { ok: true, value: { params: params.value, history } };
+}
+
+// The fabrication settings of a link or stored session, when it has them (checked; none in
+// older ones, which still open with the defaults).
+export function optionalFabrication(value: unknown, where: string): Checked<{ fabrication?: FabricationSettings }> {
+  if (value === undefined) return { ok: true, value: {} };
+  const checked = fabricationOrDefault(value, where);
+  return checked.ok ? { ok: true, value: { fabrication: checked.value } } : checked;
 }
 
 export function decodeState(compressed: Uint8Array, limits: DecodeLimits): Checked<DesignState> {

@@ -3,7 +3,7 @@
 // cancel message, so after a short grace it is terminated and a new one reloads the mesh. A
 // worker that crashed (an error event, or a wasm call that threw something other than a
 // Status) is replaced the same way, and the page is told so.
-import type { RemeshParams } from '@flatfacet/wasm';
+import type { FabricationParams, RemeshParams } from '@flatfacet/wasm';
 import type { MeshPayload, WorkerRequest, WorkerResponse } from './protocol.ts';
 
 const CANCEL_GRACE_MS = 250;
@@ -33,6 +33,7 @@ export interface SolverEvents {
 export class SolverClient {
   private worker: Worker;
   private job = 0;
+  private fabricateJob = 0;
   private quietJob = 0;
   private readonly quietJobs = new Set<number>();
   private loadedMesh: MeshPayload | null = null;
@@ -69,6 +70,10 @@ export class SolverClient {
     }
     if (message.type === 'ready' || message.type === 'fatal') {
       this.events.onMessage(message);
+      return;
+    }
+    if (message.type === 'fabricated' || message.type === 'fabricationFailed') {
+      if (message.job === this.fabricateJob) this.events.onMessage(message);
       return;
     }
     const pendingMesh = this.pendingMeshes.get(message.job);
@@ -115,6 +120,13 @@ export class SolverClient {
     return this.job;
   }
 
+  // Fabrication outputs of the worker's current panels; numbered apart from loads and solves.
+  fabricate(settings: FabricationParams): number {
+    this.fabricateJob += 1;
+    this.send({ type: 'fabricate', job: this.fabricateJob, settings });
+    return this.fabricateJob;
+  }
+
   update(job: number, params: RemeshParams): void {
     if (job === this.job) this.send({ type: 'update', job, params });
   }
@@ -127,7 +139,7 @@ export class SolverClient {
     if (this.held) {
       // An earlier cancel is still waiting for the worker, which has not seen this job's
       // requests yet: dropping them is the whole cancel.
-      this.held = this.held.filter((request) => request.job !== job);
+      this.held = this.held.filter((request) => request.type === 'fabricate' || request.job !== job);
       return;
     }
     const worker = this.worker;

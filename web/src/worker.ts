@@ -8,6 +8,7 @@
 // `crashed`, stops answering, and the page replaces it.
 import createFlatfacet, { type FlatfacetModule, type MeshInfo, type Problems, type Progress, type Session, type Status } from '@flatfacet/wasm';
 import wasmUrl from '@flatfacet/wasm-binary?url';
+import { fabricationOf } from './workerFabrication.ts';
 import { transferablesOf, type MeshPayload, type QualityReport, type SolveResult, type WorkerRequest, type WorkerResponse } from './protocol.ts';
 
 // The DOM lib types `self` as a Window; in a dedicated worker postMessage takes a transfer list.
@@ -200,6 +201,11 @@ function handle(request: WorkerRequest): void {
       if (currentRun && currentRun.job === request.job) currentRun.cancelled = true;
       else post({ type: 'cancelled', job: request.job });
       return;
+    case 'fabricate': {
+      const outcome = fabricationOf(requireSession(), JSON.stringify(request.settings));
+      post(outcome.ok ? { type: 'fabricated', job: request.job, result: outcome.value } : { type: 'fabricationFailed', job: request.job, message: outcome.message });
+      return;
+    }
     case 'test':
       crashAfterSteps = request.crashAfterSteps;
       return;

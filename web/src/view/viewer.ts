@@ -3,11 +3,13 @@
 // CPU.
 import * as THREE from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
+import type { SpreadNodes } from '@flatfacet/wasm';
 import type { SolveResult } from '../protocol.ts';
 import { isSoftwareRenderer } from './gpu.ts';
 import { InputLayer } from './inputLayer.ts';
 import { PanelLayer } from './panelLayer.ts';
 import { ProblemLayer } from './problemLayer.ts';
+import { ThickLayer } from './thickLayer.ts';
 
 export interface ViewToggles {
   clusters: boolean;
@@ -15,6 +17,7 @@ export interface ViewToggles {
   edges: boolean;
   problems: boolean;
   beforeFix: boolean; // the polygons through their mesh corners, coloured by planarity
+  thick: boolean; // the panels' inner faces and side walls (needs a thickness)
 }
 
 export class Viewer {
@@ -25,8 +28,9 @@ export class Viewer {
   private readonly input = new InputLayer();
   private readonly panels = new PanelLayer();
   private readonly problems = new ProblemLayer();
+  private readonly thick = new ThickLayer();
   private readonly origin = new THREE.Vector3();
-  private toggles: ViewToggles = { clusters: false, panels: true, edges: true, problems: true, beforeFix: false };
+  private toggles: ViewToggles = { clusters: false, panels: true, edges: true, problems: true, beforeFix: false, thick: false };
   private result: SolveResult | null = null;
   private hasPanels = false;
   private solving = false;
@@ -53,7 +57,7 @@ export class Viewer {
     headlight.position.set(0.4, 0.8, 1);
     this.camera.add(headlight); // lights what the camera sees, from any side
     this.scene.add(this.camera);
-    this.scene.add(this.input.mesh, this.panels.faces, this.panels.edges, this.problems.group);
+    this.scene.add(this.input.mesh, this.panels.faces, this.panels.edges, this.problems.group, this.thick.solid, this.thick.markers);
 
     this.controls = new OrbitControls(this.camera, this.renderer.domElement);
     this.controls.addEventListener('change', () => this.requestRender());
@@ -139,9 +143,18 @@ export class Viewer {
     this.result = result;
     this.panels.set(result, this.origin, this.toggles.beforeFix);
     this.problems.set(result?.problems ?? null, this.origin);
+    this.thick.set(null, null, null, this.origin); // until the fabrication of these panels arrives
     this.hasPanels = result !== null && result.panelTriangles.length > 0;
     if (result) this.setClusters(result.clusterIds);
     this.applyVisibility();
+  }
+
+  // The thick panels and the nodes needing extra chamfer, for the result on show (ignored
+  // when they do not match it). Returns how many nodes are marked.
+  setFabrication(inner: Float64Array | null, spread: SpreadNodes | null): number {
+    const marked = this.thick.set(this.result, inner, spread, this.origin);
+    this.applyVisibility();
+    return marked;
   }
 
   // While solving, the clusters converging on the input are the view (paper fig. 5 b-c).
@@ -169,6 +182,8 @@ export class Viewer {
     this.panels.faces.visible = showPanels && this.toggles.panels;
     this.panels.edges.visible = showPanels && this.toggles.edges;
     this.problems.group.visible = showPanels && this.toggles.problems && !this.toggles.beforeFix;
+    this.thick.solid.visible = showPanels && this.toggles.thick && !this.toggles.beforeFix;
+    this.thick.markers.visible = showPanels && this.toggles.problems && !this.toggles.beforeFix;
     // The surface shows when panels do not cover it: during a solve, before any, or on request.
     this.input.mesh.visible = this.solving || !showPanels || this.toggles.clusters || !this.toggles.panels;
     this.requestRender();

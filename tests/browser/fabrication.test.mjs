@@ -1,0 +1,154 @@
+// Fabrication on the page, in headless Chromium against the built site: a 20 mm thickness,
+// the parts list, cut sheets (SVG, parsed by the browser's DOMParser) and solid panels
+// downloaded and checked; the thick-panel view; a share link carrying the settings.
+// Screenshots: the thick panels and the cut sheets (the SVG rendered in a page).
+import assert from 'node:assert/strict';
+import { join } from 'node:path';
+import { after, before, test } from 'node:test';
+import { download, launchBrowser, openPage, parseObj, remesh, repo, screenshot, selectExample, setPanels, solveAfter, startServer, waitForDone } from './harness.mjs';
+
+let server;
+let browser;
+before(async () => {
+  server = await startServer();
+  browser = await launchBrowser();
+});
+after(async () => {
+  await browser?.close();
+  await server?.close();
+});
+
+async function withPage(url, run) {
+  const { context, page, errors } = await openPage(browser, url);
+  try {
+    await run(page);
+    assert.deepEqual(errors, [], 'no page or console errors');
+  } finally {
+    await context.close();
+  }
+}
+
+const fabrications = (page) => page.evaluate(() => Number(document.body.dataset.fabrications ?? 0));
+
+// Runs `action` and waits for the fabrication outputs it asks for.
+async function fabricatedAfter(page, action) {
+  const since = await fabrications(page);
+  await action();
+  await page.waitForFunction((since) => Number(document.body.dataset.fabrications ?? 0) > since, since, { timeout: 60_000, polling: 50 });
+}
+
+async function setThickness(page, value) {
+  await fabricatedAfter(page, async () => {
+    await page.getByLabel('Thickness').fill(String(value));
+    await page.getByLabel('Thickness').press('Tab');
+  });
+}
+
+async function saddle(page, panels) {
+  await waitForDone(page);
+  assert.equal(await solveAfter(page, () => selectExample(page, 'saddle')), 120);
+  await setPanels(page, panels);
+  assert.equal(await solveAfter(page, () => remesh(page)), panels);
+}
+
+function csvColumn(rows, name) {
+  const index = rows[0].split(',').indexOf(name);
+  assert.ok(index >= 0, `no column ${name} in ${rows[0]}`);
+  return rows.slice(1).map((row) => row.split(',')[index]);
+}
+
+test('20 mm panels: parts list, cut sheets and solid panels download; the thick view toggles', () =>
+  withPage(server.url, async (page) => {
+    await saddle(page, 40);
+    // The generated saddle is some 30 units across: read as inches, its panels (some 110 mm)
+    // fit a 600 x 400 mm board.
+    await fabricatedAfter(page, () => page.locator('#fab-mesh-units').selectOption('in'));
+    for (const [label, value] of [['#fab-sheet-width', 600], ['#fab-sheet-height', 400]]) {
+      await fabricatedAfter(page, async () => {
+        await page.locator(label).fill(String(value));
+        await page.locator(label).press('Tab');
+      });
+    }
+    await setThickness(page, 20);
+
+    const parts = await download(page, 'Export parts list');
+    assert.equal(parts.name, 'saddle-parts.csv');
+    const rows = parts.text.trim().split('\n');
+    const panelRows = rows.filter((row) => /^\d+,P\d+,/.test(row));
+    assert.equal(panelRows.length, 40);
+    assert.deepEqual([...new Set(csvColumn([rows[0], ...panelRows], 'thickness'))], ['20']);
+    assert.deepEqual([...new Set(csvColumn([rows[0], ...panelRows], 'units'))], ['mm']);
+
+    const json = JSON.parse((await download(page, 'Parts list JSON')).text);
+    assert.equal(json.thickness, 20);
+    assert.equal(json.totals.panels, 40);
+
+    const sheets = await download(page, 'Export cut sheets');
+    assert.equal(sheets.name, 'saddle-sheets.svg');
+    const parsed = await page.evaluate((text) => {
+      const doc = new DOMParser().parseFromString(text, 'image/svg+xml');
+      return { error: doc.querySelector('parsererror')?.textContent ?? null, root: doc.documentElement.nodeName, outer: doc.querySelectorAll('path.outer').length, inner: doc.querySelectorAll('path.inner').length };
+    }, sheets.text);
+    assert.deepEqual(parsed, { error: null, root: 'svg', outer: 40, inner: 40 });
+    const dxf = await download(page, 'Cut sheets DXF');
+    assert.match(dxf.text, /AC1009/);
+
+    const solid = parseObj((await download(page, 'Export solid panels')).text);
+    const corners = panelRows.map((row) => Number(row.split(',')[2])).reduce((a, b) => a + b, 0);
+    assert.equal(solid.faces.length, 2 * 40 + corners, 'a prism per panel');
+
+    const stats = await page.locator('#fab-stats').textContent();
+    assert.match(stats, /Max node spread\s*[\d.e-]+ mm/);
+    assert.match(stats, /Sheets\s*\d+/);
+    assert.match(stats, /Material use\s*[\d.]+ %/);
+
+    const canvas = page.locator('#viewport canvas');
+    const flat = await canvas.screenshot();
+    await page.getByLabel('Show thick panels').check();
+    await page.waitForTimeout(300);
+    const thick = await canvas.screenshot();
+    assert.notDeepEqual(thick, flat, 'the thick panels change the view');
+    await screenshot(page, 'saddle-40-thick-20mm');
+    await page.getByLabel('Show thick panels').uncheck();
+
+    // The sheets, rendered by the browser.
+    const view = await page.context().newPage();
+    const svg = sheets.text.replace(/<\?xml[^>]*\?>/, '').replace(/<svg([^>]*?)\swidth="[^"]*"/, '<svg$1 width="1400"').replace(/<svg([^>]*?)\sheight="[^"]*"/, '<svg$1');
+    await view.setViewportSize({ width: 1440, height: 900 });
+    await view.setContent(`<!doctype html><html><body style="margin:20px;background:#fff">${svg}</body></html>`);
+    await view.screenshot({ path: join(repo, 'build', 'screenshots', 'saddle-40-cut-sheets.png'), fullPage: true });
+    await view.close();
+  }));
+
+test('a share link carries the fabrication settings', () =>
+  withPage(server.url, async (page) => {
+    await saddle(page, 30);
+    await setThickness(page, 18);
+    await fabricatedAfter(page, () => page.locator('#fab-side').selectOption('outside'));
+    await page.getByRole('button', { name: 'Copy share link' }).click();
+    await page.waitForFunction(() => location.hash.startsWith('#v1='));
+    const link = await page.getByLabel('Share link').inputValue();
+    await withPage(link, async (opened) => {
+      assert.equal(await waitForDone(opened), 30);
+      assert.equal(await opened.getByLabel('Thickness').inputValue(), '18');
+      assert.equal(await opened.locator('#fab-side').inputValue(), 'outside');
+      const parts = JSON.parse((await download(opened, 'Parts list JSON')).text);
+      assert.equal(parts.thickness, 18);
+      assert.equal(parts.side, 'outside');
+    });
+  }));
+
+test('nodes needing extra chamfer are marked, with a legend line', () =>
+  withPage(server.url, async (page) => {
+    await waitForDone(page);
+    assert.equal(await solveAfter(page, () => selectExample(page, 'barrel_vault')), 120);
+    const legend = page.locator('#spread-legend');
+    assert.equal(await legend.isHidden(), true, 'no legend without thickness');
+    await setThickness(page, 20);
+    await legend.waitFor({ state: 'visible' });
+    assert.match(await legend.textContent(), /\d+ nodes? needing extra chamfer/);
+    assert.match(await page.locator('#fab-stats').textContent(), /Max node spread\s*0\.\d+ mm/);
+    await page.getByLabel('Show thick panels').check();
+    await page.waitForTimeout(300);
+    await screenshot(page, 'barrel-vault-120-thick-spread-nodes');
+  }));

@@ -1,0 +1,57 @@
+// Fabrication settings from the page's JSON (fabrication_params_json.h).
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "core/fabricate/fabrication_params_json.h"
+#include "core/util/error.h"
+
+namespace ff {
+namespace {
+
+std::string error_of(const std::string& json) {
+  try {
+    fabrication_settings_from_json(json);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(FabricationParamsJson, DefaultsAsTheCli) {
+  const FabricationSettings s = fabrication_settings_from_json("{}");
+  EXPECT_EQ(s.options.mesh_units, LengthUnit::Metre);
+  EXPECT_EQ(s.options.units, LengthUnit::Metre);
+  EXPECT_EQ(s.options.thickness, 0.0);
+  EXPECT_EQ(s.options.side, MaterialSide::Inside);
+  EXPECT_DOUBLE_EQ(s.sheet.width, 2.44);
+  EXPECT_DOUBLE_EQ(s.sheet.height, 1.22);
+  EXPECT_EQ(s.sheet.units, "m");
+}
+
+TEST(FabricationParamsJson, ReadsEveryField) {
+  const FabricationSettings s = fabrication_settings_from_json(
+      R"({"thickness": 20, "side": "outside", "units": "mm", "meshUnits": "cm", "sheetWidth": 3000, "sheetHeight": 1500})");
+  EXPECT_EQ(s.options.units, LengthUnit::Millimetre);
+  EXPECT_EQ(s.options.mesh_units, LengthUnit::Centimetre);
+  EXPECT_EQ(s.options.thickness, 20.0);
+  EXPECT_EQ(s.options.side, MaterialSide::Outside);
+  EXPECT_EQ(s.sheet.width, 3000.0);
+  EXPECT_EQ(s.sheet.height, 1500.0);
+  EXPECT_DOUBLE_EQ(s.sheet.margin, 10.0);
+}
+
+TEST(FabricationParamsJson, ErrorsNameTheField) {
+  EXPECT_NE(error_of(R"({"thickness": -1})").find("'thickness'"), std::string::npos);
+  EXPECT_NE(error_of(R"({"thickness": "20"})").find("'thickness'"), std::string::npos);
+  EXPECT_NE(error_of(R"({"side": "middle"})").find("'side'"), std::string::npos);
+  EXPECT_NE(error_of(R"({"units": "yd"})").find("'units'"), std::string::npos);
+  EXPECT_NE(error_of(R"({"meshUnits": 1})").find("'meshUnits'"), std::string::npos);
+  EXPECT_NE(error_of(R"({"sheetWidth": 0})").find("'sheetWidth'"), std::string::npos);
+  EXPECT_NE(error_of(R"({"sheetHeight": 1e12})").find("'sheetHeight'"), std::string::npos);
+  EXPECT_NE(error_of(R"({"kerf": 3})").find("'kerf'"), std::string::npos);
+  EXPECT_NE(error_of("[]").find("object"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace ff

@@ -1,0 +1,160 @@
+// Fabrication in the wasm Session (setFabrication and its outputs): errors by name, the parts
+// list's totals against the quality report, cut sheets (SVG well formed, DXF through
+// dxf-parser with one closed cut polyline per panel), solid panels and the thick-panel view.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import DxfParser from 'dxf-parser';
+import { json, loadModule, parseObj, solve } from './module.mjs';
+
+const ff = await loadModule();
+
+function solved(shape = 'groin_vault', panels = 30) {
+  const s = new ff.Session();
+  assert.equal(json(s.loadShape(shape, 4000)).ok, true);
+  assert.equal(json(s.setParams(JSON.stringify({ panels }))).ok, true);
+  solve(s);
+  return s;
+}
+
+function isStatus(text) {
+  return text.startsWith('{') && json(text).ok === false;
+}
+
+// Enough of XML to catch a broken document: balanced tags, quoted attributes, one root.
+function checkWellFormed(xml) {
+  const body = xml.replace(/<\?xml[^>]*\?>/, '').replace(/<!--[\s\S]*?-->/g, '');
+  const stack = [];
+  let roots = 0;
+  for (const m of body.matchAll(/<(\/?)([A-Za-z][\w:.-]*)((?:\s+[\w:.-]+\s*=\s*(?:"[^"]*"|'[^']*'))*)\s*(\/?)>|<|>/g)) {
+    if (m[0] === '<' || m[0] === '>') {
+      // A bare angle bracket outside a tag: only '>' may appear in text.
+      assert.notEqual(m[0], '<', `stray '<' near ${body.slice(m.index, m.index + 40)}`);
+      continue;
+    }
+    const [, close, name, , self] = m;
+    if (close) assert.equal(stack.pop(), name, `</${name}> closes the wrong element`);
+    else if (!self) {
+      if (stack.length === 0) roots += 1;
+      stack.push(name);
+    } else if (stack.length === 0) roots += 1;
+  }
+  assert.deepEqual(stack, [], 'unclosed elements');
+  assert.equal(roots, 1, 'one root element');
+}
+
+test('setFabrication refuses bad settings by name and keeps the previous ones', () => {
+  const s = solved('saddle', 20);
+  assert.equal(json(s.setFabrication(JSON.stringify({ thickness: 20, units: 'mm' }))).ok, true);
+  const cases = [
+    [{ thickness: -1 }, /'thickness'/],
+    [{ thickness: '20' }, /'thickness'/],
+    [{ side: 'middle' }, /'side'/],
+    [{ units: 'yd' }, /'units'/],
+    [{ meshUnits: 3 }, /'meshUnits'/],
+    [{ sheetWidth: 0 }, /'sheetWidth'/],
+    [{ sheetHeight: -5 }, /'sheetHeight'/],
+    [{ kerf: 3 }, /'kerf'/],
+  ];
+  for (const [settings, pattern] of cases) {
+    const status = json(s.setFabrication(JSON.stringify(settings)));
+    assert.equal(status.ok, false, JSON.stringify(settings));
+    assert.match(status.message, pattern);
+  }
+  assert.equal(json(s.setFabrication('not json')).ok, false);
+  // Still 20 mm.
+  assert.equal(json(s.partsJson()).thickness, 20);
+  s.delete();
+});
+
+test('the parts list JSON totals equal the quality report area, in the chosen units', () => {
+  const s = solved();
+  const report = json(s.reportJson());
+  const area = report.panel_area;
+  assert.equal(typeof area, 'number', `report keys: ${Object.keys(report).join(', ')}`);
+  const metres = json(s.partsJson());
+  assert.equal(metres.totals.panels, report.panels);
+  assert.ok(Math.abs(metres.totals.area - area) <= 1e-9 * area, `${metres.totals.area} vs ${area}`);
+  assert.equal(json(s.setFabrication(JSON.stringify({ units: 'mm', meshUnits: 'm', thickness: 20 }))).ok, true);
+  const mm = json(s.partsJson());
+  assert.equal(mm.units, 'mm');
+  assert.ok(Math.abs(mm.totals.area - area * 1e6) <= 1e-6 * area * 1e6);
+  const rows = s.partsCsv().trim().split('\n');
+  assert.equal(rows.length, 1 + report.panels + 1);
+  s.delete();
+});
+
+test('cut sheets: the SVG is well formed and the DXF has one closed cut polyline per panel', () => {
+  const s = solved();
+  // The vault is some 10 m across: read as centimetres, its panels fit a 2440 x 1220 mm board.
+  assert.equal(json(s.setFabrication(JSON.stringify({ units: 'mm', meshUnits: 'cm', thickness: 2, sheetWidth: 2440, sheetHeight: 1220 }))).ok, true);
+  const panels = json(s.reportJson()).panels;
+  const svg = s.sheetsSvg();
+  assert.ok(svg.includes('<svg'), svg.slice(0, 200));
+  checkWellFormed(svg);
+  assert.equal((svg.match(/class="outer"/g) ?? []).length, panels);
+  const stats = json(s.sheetStats());
+  assert.equal(stats.ok, true);
+  assert.ok(stats.sheets >= 1 && stats.materialUse > 0 && stats.materialUse <= 1, JSON.stringify(stats));
+
+  const dxf = new DxfParser().parseSync(s.sheetsDxf());
+  assert.equal(dxf.header.$INSUNITS, 4, 'millimetres');
+  const cuts = dxf.entities.filter((e) => (e.type === 'POLYLINE' || e.type === 'LWPOLYLINE') && /^SHEET_\d+$/.test(e.layer));
+  assert.equal(cuts.length, panels);
+  for (const p of cuts) assert.equal(p.shape, true, `open polyline on ${p.layer}`);
+
+  // A sheet too small for a part: the sheets fail by themselves, with a message.
+  assert.equal(json(s.setFabrication(JSON.stringify({ units: 'mm', sheetWidth: 10, sheetHeight: 10 }))).ok, true);
+  assert.ok(isStatus(s.sheetsSvg()));
+  assert.ok(isStatus(s.sheetsDxf()));
+  assert.ok(!isStatus(s.partsCsv()));
+  s.delete();
+});
+
+test('solid panels and the thick view need a thickness; nodes report their spread', () => {
+  const s = solved('saddle', 24);
+  assert.match(json(s.solidObj()).message, /thickness/);
+  assert.equal(s.innerPositions().length, 0);
+  assert.equal(json(s.setFabrication(JSON.stringify({ thickness: 20, units: 'mm', meshUnits: 'm' }))).ok, true);
+  const panels = s.panelOffsets().length - 1;
+  const obj = parseObj(s.solidObj());
+  // A prism per panel: outer + inner + one quad per edge.
+  const corners = s.panelIndices().length;
+  assert.equal(obj.faces.length, 2 * panels + corners);
+  const inner = s.innerPositions();
+  assert.equal(inner.length, 3 * corners);
+  // Inner corners lie 20 mm (0.02 m) from their panel's outer plane.
+  const positions = s.panelPositions();
+  const offsets = s.panelOffsets();
+  const indices = s.panelIndices();
+  const p0 = [0, 1, 2].map((k) => positions[3 * indices[0] + k]);
+  const p1 = [0, 1, 2].map((k) => positions[3 * indices[1] + k]);
+  const p2 = [0, 1, 2].map((k) => positions[3 * indices[2] + k]);
+  const u = p1.map((v, k) => v - p0[k]);
+  const w = p2.map((v, k) => v - p0[k]);
+  const n = [u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]];
+  const len = Math.hypot(...n);
+  for (let c = offsets[0]; c < offsets[1]; c++) {
+    const d = Math.abs(n.reduce((acc, v, k) => acc + (v / len) * (inner[3 * c + k] - p0[k]), 0));
+    assert.ok(Math.abs(d - 0.02) < 1e-6, `inner corner ${c} is ${d} m from the outer plane`);
+  }
+  const spread = json(s.spreadNodes());
+  assert.equal(spread.ok, true);
+  assert.equal(spread.units, 'mm');
+  assert.ok(spread.maxSpread >= 0);
+  for (const node of spread.nodes) {
+    assert.equal(node.position.length, 3);
+    assert.ok(node.spread > 0 && node.spread <= spread.maxSpread + 1e-12);
+    assert.ok(node.panels.length >= 4, 'only nodes of 4+ panels spread');
+  }
+  s.delete();
+});
+
+test('without panels the fabrication outputs are empty, not errors', () => {
+  const s = new ff.Session();
+  assert.equal(json(s.setFabrication('{}')).ok, true);
+  assert.equal(json(s.partsJson()).totals.panels, 0);
+  assert.ok(!isStatus(s.partsCsv()));
+  assert.equal(json(s.spreadNodes()).nodes.length, 0);
+  assert.equal(s.innerPositions().length, 0);
+  s.delete();
+});

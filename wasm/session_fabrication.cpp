@@ -1,0 +1,126 @@
+// The Session's fabrication outputs (session.h): the parts list, cut sheets, solid panels and
+// the thick-panel view, all from the current panels and the fabrication settings.
+#include <string>
+#include <vector>
+
+#include "core/fabricate/cut_sheets.h"
+#include "core/fabricate/panel_edges.h"
+#include "core/fabricate/parts_list.h"
+#include "core/fabricate/solid_panels.h"
+#include "core/fabricate/thick_panels.h"
+#include "core/fabricate/units.h"
+#include "core/util/error.h"
+#include "core/util/json_writer.h"
+#include "wasm/guarded.h"
+#include "wasm/session.h"
+
+namespace ff::wasm {
+
+namespace {
+
+const PanelMesh& no_panels() {
+  static const PanelMesh empty;
+  return empty;
+}
+
+// The thickness in mesh units (the settings hold it in the designer's units).
+double mesh_thickness(const FabricationSettings& f) {
+  return f.options.thickness * unit_scale(f.options.units, f.options.mesh_units);
+}
+
+SheetLayout layout_of(const std::vector<PanelOutline>& outlines, const FabricationSettings& f) {
+  return pack_outlines(outlines, f.sheet);
+}
+
+}  // namespace
+
+std::string Session::set_fabrication(const std::string& json) {
+  return guarded([&] {
+    fabrication_ = fabrication_settings_from_json(json);
+    return status_json(true, "");
+  });
+}
+
+#define FF_PANELS (remesher_ ? remesher_->panels() : no_panels())
+
+std::string Session::parts_csv() const {
+  return guarded([&] { return parts_list_csv(make_parts_list(FF_PANELS, fabrication_.options)); });
+}
+
+std::string Session::parts_json() const {
+  return guarded([&] { return parts_list_json(make_parts_list(FF_PANELS, fabrication_.options)); });
+}
+
+std::string Session::sheets_svg() const {
+  return guarded([&] {
+    const std::vector<PanelOutline> outlines = panel_outlines(make_parts_list(FF_PANELS, fabrication_.options));
+    return cut_sheets_svg(outlines, layout_of(outlines, fabrication_), fabrication_.sheet);
+  });
+}
+
+std::string Session::sheets_dxf() const {
+  return guarded([&] {
+    const std::vector<PanelOutline> outlines = panel_outlines(make_parts_list(FF_PANELS, fabrication_.options));
+    return cut_sheets_dxf(outlines, layout_of(outlines, fabrication_), fabrication_.sheet);
+  });
+}
+
+std::string Session::sheet_stats() const {
+  return guarded([&] {
+    const std::vector<PanelOutline> outlines = panel_outlines(make_parts_list(FF_PANELS, fabrication_.options));
+    const SheetLayout layout = layout_of(outlines, fabrication_);
+    JsonWriter j;
+    j.begin_object().value("ok", true).value("message", "");
+    j.value("sheets", layout.sheets).value("materialUse", layout.material_use).end_object();
+    return j.str();
+  });
+}
+
+std::string Session::solid_obj() const {
+  return guarded([&] {
+    if (!(fabrication_.options.thickness > 0.0))
+      throw InputError("solid panels need a thickness: set one under Fabrication");
+    if (FF_PANELS.num_panels() == 0) throw InputError("solid panels need panels: remesh first");
+    return solid_panels_obj(FF_PANELS, mesh_thickness(fabrication_), fabrication_.options.side);
+  });
+}
+
+std::vector<double> Session::inner_positions() const {
+  std::vector<double> out;
+  const PanelMesh& pm = FF_PANELS;
+  if (pm.num_panels() == 0 || !(fabrication_.options.thickness > 0.0)) return out;
+  const ThickPanels thick =
+      thicken_panels(pm, panel_edges(pm), mesh_thickness(fabrication_), fabrication_.options.side);
+  for (const std::vector<Vec3>& panel : thick.inner)
+    for (const Vec3& p : panel)
+      for (int k = 0; k < 3; ++k) out.push_back(p[k]);
+  return out;
+}
+
+std::string Session::spread_nodes() const {
+  return guarded([&] {
+    const PanelMesh& pm = FF_PANELS;
+    const PartsList list = make_parts_list(pm, fabrication_.options);
+    JsonWriter j;
+    j.begin_object().value("ok", true).value("message", "");
+    j.value("units", unit_name(fabrication_.options.units)).value("thickness", fabrication_.options.thickness);
+    j.value("maxSpread", list.max_node_spread);
+    j.begin_array("nodes");
+    for (const NodeSpread& n : list.spread_nodes) {
+      j.begin_object(nullptr).value("vertex", n.vertex);
+      j.begin_array("position");
+      for (int k = 0; k < 3; ++k) j.value(nullptr, pm.vertices[static_cast<size_t>(n.vertex)][k]);
+      j.end_array();
+      j.value("spread", n.spread);
+      j.begin_array("panels");
+      for (const std::string& label : n.panels) j.value(nullptr, label);
+      j.end_array().end_object();
+    }
+    j.end_array().end_object();
+    return j.str();
+  });
+}
+
+#undef FF_PANELS
+
+}  // namespace ff::wasm

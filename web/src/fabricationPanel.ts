@@ -1,0 +1,136 @@
+// The Fabrication section: its settings, the worker's fabrication outputs for the panels on
+// show, their downloads, numbers, and the thick-panel view. The controller (app.ts) says when
+// the panels change and forwards the worker's answers; this asks the worker for outputs.
+import { countOutcome, element } from './dom.ts';
+import { DEFAULT_FABRICATION, toFabricationParams, type FabricationSettings } from './fabricationParams.ts';
+import { FabricationForm } from './fabricationForm.ts';
+import { renderFabricationStats } from './fabricationStats.ts';
+import { downloadText } from './exports.ts';
+import type { FabricationResult } from './protocol.ts';
+import type { SolverClient } from './solverClient.ts';
+import type { Viewer } from './view/viewer.ts';
+
+export interface FabricationHost {
+  solver: SolverClient;
+  viewer: Viewer;
+  stem(): string; // file name stem of the design ("saddle")
+  error(message: string): void;
+  settingsChanged(): void; // save the session, forget a link in the address bar
+}
+
+export class FabricationPanel {
+  private readonly form = new FabricationForm();
+  private readonly statsBox = element('fab-stats', HTMLDivElement);
+  private readonly legend = element('spread-legend', HTMLDivElement);
+  private readonly legendText = element('spread-legend-text', HTMLSpanElement);
+  private readonly buttons = {
+    csv: element('export-parts', HTMLButtonElement),
+    json: element('export-parts-json', HTMLButtonElement),
+    svg: element('export-sheets', HTMLButtonElement),
+    dxf: element('export-sheets-dxf', HTMLButtonElement),
+    obj: element('export-solid', HTMLButtonElement),
+  };
+  private settings: FabricationSettings = { ...DEFAULT_FABRICATION };
+  private hasPanels = false;
+  private job: number | null = null; // the request whose answer is awaited
+  private result: FabricationResult | null = null;
+
+  constructor(private readonly host: FabricationHost) {
+    this.form.write(this.settings);
+    this.form.onChange(() => this.formChanged());
+    this.buttons.csv.addEventListener('click', () => this.download('csv'));
+    this.buttons.json.addEventListener('click', () => this.download('json'));
+    this.buttons.svg.addEventListener('click', () => this.download('svg'));
+    this.buttons.dxf.addEventListener('click', () => this.download('dxf'));
+    this.buttons.obj.addEventListener('click', () => this.download('obj'));
+    this.update();
+  }
+
+  get current(): FabricationSettings {
+    return { ...this.settings };
+  }
+
+  // From a link or the stored session.
+  write(settings: FabricationSettings): void {
+    this.settings = { ...settings };
+    this.form.write(this.settings);
+    if (this.hasPanels) this.request();
+  }
+
+  // New panels on show (or none): their outputs are asked for at once.
+  panelsChanged(hasPanels: boolean): void {
+    this.hasPanels = hasPanels;
+    this.result = null;
+    this.job = null;
+    if (hasPanels) this.request();
+    else this.show();
+  }
+
+  onFabricated(job: number, result: FabricationResult): void {
+    if (job !== this.job) return;
+    this.job = null;
+    this.result = result;
+    countOutcome('fabrications');
+    this.show();
+  }
+
+  onFailed(job: number, message: string): void {
+    if (job !== this.job) return;
+    this.job = null;
+    this.host.error(`fabrication: ${message}`);
+    this.show();
+  }
+
+  // The worker was replaced: an awaited answer will not come; the last outputs stay.
+  workerLost(): void {
+    if (this.job === null) return;
+    this.job = null;
+    this.show();
+  }
+
+  private formChanged(): void {
+    const checked = this.form.read();
+    if (!checked.ok) {
+      this.host.error(checked.message);
+      return;
+    }
+    this.settings = checked.value;
+    this.host.settingsChanged();
+    if (this.hasPanels) this.request();
+  }
+
+  private request(): void {
+    this.job = this.host.solver.fabricate(toFabricationParams(this.settings));
+    this.update();
+  }
+
+  private show(): void {
+    renderFabricationStats(this.statsBox, this.result);
+    const marked = this.host.viewer.setFabrication(this.result?.innerPositions ?? null, this.result?.spread ?? null);
+    this.legend.hidden = marked === 0;
+    this.legendText.textContent = `${marked} node${marked === 1 ? '' : 's'} needing extra chamfer (inner corners up to ${this.result ? Number(this.result.spread.maxSpread.toPrecision(3)) : 0} ${this.result?.spread.units ?? ''} apart)`;
+    this.update();
+  }
+
+  private update(): void {
+    const ready = this.hasPanels && this.job === null && this.result !== null;
+    this.buttons.csv.disabled = !ready;
+    this.buttons.json.disabled = !ready;
+    this.buttons.svg.disabled = !ready || !this.result?.sheets.ok;
+    this.buttons.dxf.disabled = !ready || !this.result?.sheets.ok;
+    this.buttons.obj.disabled = !ready || this.result?.solidObj === null;
+    this.buttons.obj.title = this.settings.thickness > 0 ? '' : 'set a thickness first';
+    document.body.dataset.fabricating = String(this.job !== null);
+  }
+
+  private download(kind: 'csv' | 'json' | 'svg' | 'dxf' | 'obj'): void {
+    const r = this.result;
+    if (!r) return;
+    const stem = this.host.stem();
+    if (kind === 'csv') downloadText(`${stem}-parts.csv`, r.partsCsv, 'text/csv');
+    else if (kind === 'json') downloadText(`${stem}-parts.json`, r.partsJson, 'application/json');
+    else if (kind === 'obj' && r.solidObj !== null) downloadText(`${stem}-solid.obj`, r.solidObj, 'model/obj');
+    else if (r.sheets.ok && kind === 'svg') downloadText(`${stem}-sheets.svg`, r.sheets.svg, 'image/svg+xml');
+    else if (r.sheets.ok && kind === 'dxf') downloadText(`${stem}-sheets.dxf`, r.sheets.dxf, 'application/dxf');
+  }
+}
