@@ -30,7 +30,6 @@ LoadedInput load_input(const std::string& path) {
 
 void subdivide_input(LoadedInput& in, const SubdivisionRequest& request) {
   if (request.levels <= 0) return;
-  const auto t0 = std::chrono::steady_clock::now();
   std::vector<int> polygon(in.clean.face_source.size());
   for (size_t f = 0; f < polygon.size(); ++f) {
     const auto source = static_cast<size_t>(in.clean.face_source[f]);
@@ -52,7 +51,6 @@ void subdivide_input(LoadedInput& in, const SubdivisionRequest& request) {
   const CleanReport file_report = in.clean.report;
   in.clean = clean_mesh(fine);
   in.clean.report = file_report;
-  info.seconds = seconds_since(t0);
 }
 
 std::vector<double> load_density(const std::string& path, const LoadedInput& input) {

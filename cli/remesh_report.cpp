@@ -20,7 +20,7 @@ void write_subdivision(JsonWriter& j, const SubdivisionInfo& s) {
   j.begin_object("subdivision");
   j.value("scheme", s.scheme).value("levels", s.levels).value("crease_angle_deg", s.crease_angle_deg);
   j.value("control_vertices", s.control_vertices).value("control_faces", s.control_faces);
-  j.value("crease_edges", s.crease_edges).value("triangles", s.triangles).value("seconds", s.seconds);
+  j.value("crease_edges", s.crease_edges).value("triangles", s.triangles);
   j.end_object();
 }
 

@@ -360,6 +360,9 @@ assert r['topology_preserved'] and r['boundary_loops_in'] == 3, r
 else
   bad "remesh YasIsland --subdivide 2 --panels 500: exit $code, want 0 $(cat "$tmp/err.txt")"
 fi
+# Deterministic: the same run gives the same panels, byte for byte.
+"$bin" remesh "$meshes/YasIsland.off" --subdivide 2 --panels 500 --out "$tmp/sd2.obj" 2>/dev/null
+cmp -s "$tmp/sd.obj" "$tmp/sd2.obj" && ok || bad "remesh --subdivide: same run gave different OBJ bytes"
 # Triangles take Loop; --crease-angle counts the sharp edges (epcot: every edge above 1 degree).
 "$bin" remesh "$meshes/epcot.off" --subdivide 1 --crease-angle 1 --panels 30 --report "$tmp/sdl.json" 2>/dev/null
 code=$?
