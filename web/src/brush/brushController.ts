@@ -27,6 +27,7 @@ interface Stroke {
   log2: Float32Array;
   last: [number, number, number];
   carried: number;
+  centres: [number, number, number][]; // of the dabs, view frame
 }
 
 type Vec = [number, number, number];
@@ -111,7 +112,7 @@ export class BrushController {
     const log2 = new Float32Array(vertices);
     if (field && field.length === vertices) for (let v = 0; v < vertices; v++) log2[v] = field[v]! / STEPS_PER_OCTAVE;
     const at: Vec = [hit.point.x, hit.point.y, hit.point.z];
-    this.stroke = { pointerId: event.pointerId, log2, last: at, carried: 0 };
+    this.stroke = { pointerId: event.pointerId, log2, last: at, carried: 0, centres: [] };
     this.host.viewer.canvas.setPointerCapture(event.pointerId);
     this.dab(at);
     this.showCursor(hit);
@@ -138,6 +139,11 @@ export class BrushController {
     if (!stroke || event.pointerId !== stroke.pointerId) return;
     this.stroke = null;
     if (this.host.viewer.canvas.hasPointerCapture(event.pointerId)) this.host.viewer.canvas.releasePointerCapture(event.pointerId);
+    // Where the stroke went, in mesh coordinates, for tests and scripts (data-last-stroke).
+    const o = this.host.viewer.offset;
+    const step = Math.max(1, Math.ceil(stroke.centres.length / 200));
+    const points = stroke.centres.filter((_, i) => i % step === 0).map((c) => [c[0] + o.x, c[1] + o.y, c[2] + o.z]);
+    document.body.dataset.lastStroke = JSON.stringify({ radius: this.radius(), points });
     this.host.strokeEnded(quantiseField(stroke.log2));
   }
 
@@ -148,6 +154,7 @@ export class BrushController {
     if (!stroke || !picker || !surface || !this.adjacency) return;
     const settings = this.host.settings();
     const radius = this.radius();
+    stroke.centres.push(centre);
     const candidates = picker.verticesWithin(new THREE.Vector3(...centre), radius);
     applyDab(stroke.log2, surface.positions, candidates, this.adjacency, { centre, radius, strength: settings.strength, mode: settings.mode });
   }

@@ -61,6 +61,14 @@ export class InputLayer {
   // clusters, interpolated across each triangle; null goes back to the clusters.
   setVertexColors(rgb: Float32Array | null): void {
     this.vertexColors = rgb;
+    // Under the panel edges drawn over the paint, even where a panel's plane dips below it.
+    const material = this.mesh.material;
+    const offset = rgb ? 8 : 2;
+    if (material.polygonOffsetFactor !== offset) {
+      material.polygonOffsetFactor = offset;
+      material.polygonOffsetUnits = offset;
+      material.needsUpdate = true;
+    }
     this.paint();
   }
 

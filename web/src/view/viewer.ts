@@ -73,6 +73,11 @@ export class Viewer {
     return this.renderer.domElement;
   }
 
+  // Mesh coordinates = view frame + offset.
+  get offset(): THREE.Vector3 {
+    return this.origin.clone();
+  }
+
   get viewCamera(): THREE.PerspectiveCamera {
     return this.camera;
   }
