@@ -5,7 +5,7 @@
 import assert from 'node:assert/strict';
 import { after, before, test } from 'node:test';
 import { zlibSync } from 'fflate';
-import { download, launchBrowser, openPage, outcomes, parseObj, remesh, screenshot, setPanels, solveAfter, startServer, waitForDone, waitForSaved } from './harness.mjs';
+import { download, errorAfter, launchBrowser, openPage, outcomes, parseObj, remesh, screenshot, setPanels, solveAfter, startServer, waitForDone, waitForSaved } from './harness.mjs';
 
 let server;
 let browser;
@@ -151,5 +151,45 @@ test('paint a stroke: smaller panels under it; undo/redo give the same OBJ bytes
     assert.deepEqual(fresh.errors, []);
   } finally {
     await fresh.context.close();
+  }
+});
+
+test('density presets fill the expression, undo takes it back without a solve, a hostile expression is refused on the page', async () => {
+  const { context, page, errors } = await openPage(browser, saddleLink());
+  try {
+    assert.equal(await waitForDone(page), PANELS);
+    const expression = page.getByLabel('Density expression');
+    await page.getByLabel('Density preset').selectOption({ label: 'Gradient' });
+    assert.equal(await expression.inputValue(), '1 + 3 * u');
+    await page.getByLabel('Density preset').selectOption({ label: 'By curvature' });
+    assert.equal(await expression.inputValue(), '1 + 2 * min(curv, 4)');
+    const since = await outcomes(page);
+    await page.getByRole('button', { name: 'Undo' }).click();
+    assert.equal(await expression.inputValue(), '1 + 3 * u');
+    assert.equal(await page.getByLabel('Density preset').inputValue(), 'gradient');
+    await page.getByRole('button', { name: 'Undo' }).click();
+    assert.equal(await expression.inputValue(), '', 'back to no expression');
+    assert.equal(await page.getByLabel('Density preset').inputValue(), '');
+    assert.equal(await page.getByRole('button', { name: 'Undo' }).isDisabled(), true);
+    assert.equal(await page.evaluate(() => document.body.dataset.solving), 'false', 'the panels on show are that design: no solve');
+    assert.equal((await outcomes(page)).solves, since.solves);
+    // Typing a preset's text selects it; anything else is "custom".
+    await expression.fill('1 + 3 * u');
+    assert.equal(await page.getByLabel('Density preset').inputValue(), 'gradient');
+    await page.getByLabel('Anisotropy direction').selectOption('maxCurvature');
+    await page.getByLabel('Stretch', { exact: true }).fill('12');
+    let message = await errorAfter(page, () => remesh(page));
+    assert.match(message, /Stretch must be between 1 and 10/);
+    await page.getByLabel('Stretch', { exact: true }).fill('3');
+    await expression.fill('alert(document.cookie)');
+    assert.equal(await page.getByLabel('Density preset').inputValue(), 'custom');
+    message = await errorAfter(page, () => remesh(page));
+    assert.match(message, /Density expression uses an unknown name "alert"/);
+    assert.equal(await expression.getAttribute('aria-invalid'), 'true');
+    assert.equal(await page.evaluate(() => document.body.dataset.solving), 'false', 'nothing went to the solver');
+    await screenshot(page, 'density-expression');
+    assert.deepEqual(errors, []);
+  } finally {
+    await context.close();
   }
 });

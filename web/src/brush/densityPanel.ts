@@ -22,8 +22,8 @@ export class DensityPanel {
   private readonly mode = element('brush-mode', HTMLSelectElement);
   private readonly radius = element('brush-radius', HTMLInputElement);
   private readonly strength = element('brush-strength', HTMLInputElement);
-  private readonly radiusValue = element('brush-radius-value', HTMLOutputElement);
-  private readonly strengthValue = element('brush-strength-value', HTMLOutputElement);
+  private readonly radiusValue = element('brush-radius-value', HTMLSpanElement);
+  private readonly strengthValue = element('brush-strength-value', HTMLSpanElement);
   private readonly legend = element('density-legend', HTMLDivElement);
   private readonly brush: BrushController;
   private previewColors: Float32Array | null = null;
@@ -43,8 +43,8 @@ export class DensityPanel {
     this.toggle.addEventListener('click', () => this.setPainting(!this.brush.active));
     this.clearButton.addEventListener('click', () => host.clear());
     const showValues = (): void => {
-      this.radiusValue.value = `${this.radius.value}%`;
-      this.strengthValue.value = Number(this.strength.value).toFixed(2);
+      this.radiusValue.textContent = `${this.radius.value}%`;
+      this.strengthValue.textContent = Number(this.strength.value).toFixed(2);
     };
     this.radius.addEventListener('input', showValues);
     this.strength.addEventListener('input', showValues);
