@@ -40,6 +40,9 @@ const HISTORY_LIMIT = 100;
 export class DesignEditor {
   private readonly history = new History<DesignStep>(HISTORY_LIMIT);
   private readonly fields = new Map<string, Int8Array>();
+  // The fields of a design being opened from a link or the stored session: kept until the next
+  // such open, since its solve chain needs them before any history step names them.
+  private pinned = new Set<string>();
   private readonly undoButton = element('undo', HTMLButtonElement);
   private readonly redoButton = element('redo', HTMLButtonElement);
   private readonly density: DensityPanel;
@@ -64,10 +67,12 @@ export class DesignEditor {
   // A new mesh is about to be opened from the form (an example, a file): its paint is gone.
   forgetPaint(): void {
     this.host.form.setPaint('');
+    this.pinned = new Set();
   }
 
   // A design from a link or the stored session: its fields, before its parameters are used.
   adopt(state: DesignState): void {
+    this.pinned = new Set(state.paint?.keys() ?? []);
     for (const [key, field] of state.paint ?? []) this.fields.set(key, field);
   }
 
@@ -180,7 +185,7 @@ export class DesignEditor {
 
   // Fields no step names any more go (a long session of strokes stays bounded).
   private prune(): void {
-    const keep = new Set<string>([this.host.form.paint]);
+    const keep = new Set<string>([this.host.form.paint, ...this.pinned]);
     for (const p of this.host.solvedChain() ?? []) keep.add(p.paint);
     for (const step of this.history.all) {
       for (const key of paintKeys(step.params, step.chain ?? [])) keep.add(key);

@@ -117,8 +117,12 @@ export async function saveSession(state: DesignState): Promise<SaveOutcome> {
     history: state.history,
     ...(state.fabrication ? { fabrication: state.fabrication } : {}),
   };
-  const paint = paintEntries(state.params, state.history, state.paint);
-  if (paint.length > 0) record.paint = paint.map(({ key, field }) => ({ key, bytes: new Uint8Array(field.buffer, field.byteOffset, field.length) }));
+  try {
+    const paint = paintEntries(state.params, state.history, state.paint);
+    if (paint.length > 0) record.paint = paint.map(({ key, field }) => ({ key, bytes: new Uint8Array(field.buffer, field.byteOffset, field.length) }));
+  } catch (error) {
+    return failure(`this browser did not keep the session (${error instanceof Error ? error.message : String(error)}): a reload will not bring it back`);
+  }
   try {
     await transaction<boolean>('readwrite', (sessions, meshes, done) => {
       sessions.put(record, KEY);

@@ -254,7 +254,12 @@ export function shareHash(state: DesignState): Checked<string> {
   let paintBytes = 0;
   for (const field of state.paint?.values() ?? []) paintBytes += field.length;
   if (paintBytes > MAX_SHARED_PAINT_BYTES) return failure(PAINT_TOO_LARGE);
-  const hash = stateToHash(state);
+  let hash: string;
+  try {
+    hash = stateToHash(state);
+  } catch (error) {
+    return failure(`the link could not be made (${error instanceof Error ? error.message : String(error)})`);
+  }
   return hash.length > MAX_LINK_HASH_CHARS ? failure(LINK_TOO_LARGE) : { ok: true, value: hash };
 }
 
