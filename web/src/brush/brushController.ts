@@ -113,7 +113,11 @@ export class BrushController {
     if (field && field.length === vertices) for (let v = 0; v < vertices; v++) log2[v] = field[v]! / STEPS_PER_OCTAVE;
     const at: Vec = [hit.point.x, hit.point.y, hit.point.z];
     this.stroke = { pointerId: event.pointerId, log2, last: at, carried: 0, centres: [] };
-    this.host.viewer.canvas.setPointerCapture(event.pointerId);
+    try {
+      this.host.viewer.canvas.setPointerCapture(event.pointerId); // moves beyond the canvas still paint
+    } catch {
+      // a pointer that is already gone: the stroke ends with its pointerup anyway
+    }
     this.dab(at);
     this.showCursor(hit);
     this.host.preview(log2);
