@@ -17,7 +17,7 @@ std::string Session::set_density(const std::vector<double>& density) {
       if (mesh_.num_vertices() == 0) throw InputError("density: no mesh loaded");
       if (density.size() != static_cast<size_t>(mesh_.num_vertices())) {
         throw InputError("density has " + std::to_string(density.size()) + " values; the mesh has " +
-                         std::to_string(mesh_.num_vertices()) + " vertices");
+                         std::to_string(mesh_.num_vertices()) + " vertices (painted on another mesh? clear the paint)");
       }
       for (size_t i = 0; i < density.size(); ++i) {
         if (!std::isfinite(density[i]) || density[i] <= 0.0) {

@@ -3,20 +3,11 @@
 // panels under it smaller; undo and redo give back the very same OBJ bytes; a share link with
 // the paint, opened in a fresh context, reproduces the OBJ byte for byte, and so does a reload.
 import assert from 'node:assert/strict';
-import { after, before, test } from 'node:test';
+import { test } from 'node:test';
 import { zlibSync } from 'fflate';
-import { download, errorAfter, launchBrowser, openPage, outcomes, parseObj, remesh, screenshot, setPanels, solveAfter, startServer, waitForDone, waitForSaved } from './harness.mjs';
+import { browserSuite, download, errorAfter, outcomes, parseObj, remesh, screenshot, setPanels, solveAfter, waitForDone, waitForSaved } from './harness.mjs';
 
-let server;
-let browser;
-before(async () => {
-  server = await startServer();
-  browser = await launchBrowser();
-});
-after(async () => {
-  await browser?.close();
-  await server?.close();
-});
+const suite = browserSuite();
 
 const PANELS = 60;
 const params = { panels: PANELS, seed: 1, weights: { euclidean: 1, l2: 1, l21: 1, boundary: 1 }, lloydIterations: 20, panelRounds: 30, seeding: 'farthest', teleport: true, singlePointNodes: false, optimizePlanes: true };
@@ -27,7 +18,7 @@ function saddleLink() {
   const payload = new Uint8Array(4 + text.length);
   new DataView(payload.buffer).setUint32(0, text.length, true);
   payload.set(text, 4);
-  return `${server.url}#v1=${Buffer.from(zlibSync(payload)).toString('base64url')}`;
+  return `${suite.url}#v1=${Buffer.from(zlibSync(payload)).toString('base64url')}`;
 }
 
 // Panels of an OBJ: area (Newell) and centroid (vertex mean).
@@ -66,11 +57,10 @@ async function after_(page, action) {
 }
 
 test('paint a stroke: smaller panels under it; undo/redo give the same OBJ bytes; a link and a reload reproduce it', async () => {
-  const { context, page, errors } = await openPage(browser, saddleLink());
   let link = '';
   let painted = '';
   let edited = '';
-  try {
+  await suite.withPage(saddleLink(), async (page) => {
     assert.equal(await waitForDone(page), PANELS);
     const before = await objOf(page);
 
@@ -138,25 +128,17 @@ test('paint a stroke: smaller panels under it; undo/redo give the same OBJ bytes
     assert.equal(await page.getByRole('button', { name: 'Clear paint' }).isDisabled(), false, 'the paint came back');
     await page.getByRole('button', { name: 'Paint density' }).click();
     await screenshot(page, 'density-restored');
-    assert.deepEqual(errors, []);
-  } finally {
-    await context.close();
-  }
+  });
 
   // The link in a fresh context (no shared storage).
-  const fresh = await openPage(browser, link);
-  try {
-    assert.equal(await waitForDone(fresh.page), PANELS - 15);
-    assert.equal(await objOf(fresh.page), edited, 'the link reproduces the OBJ byte for byte');
-    assert.deepEqual(fresh.errors, []);
-  } finally {
-    await fresh.context.close();
-  }
+  await suite.withPage(link, async (page) => {
+    assert.equal(await waitForDone(page), PANELS - 15);
+    assert.equal(await objOf(page), edited, 'the link reproduces the OBJ byte for byte');
+  });
 });
 
 test('density presets fill the expression, undo takes it back without a solve, a hostile expression is refused on the page', async () => {
-  const { context, page, errors } = await openPage(browser, saddleLink());
-  try {
+  await suite.withPage(saddleLink(), async (page) => {
     assert.equal(await waitForDone(page), PANELS);
     const expression = page.getByLabel('Density expression');
     await page.getByLabel('Density preset').selectOption({ label: 'Gradient' });
@@ -188,8 +170,5 @@ test('density presets fill the expression, undo takes it back without a solve, a
     assert.equal(await expression.getAttribute('aria-invalid'), 'true');
     assert.equal(await page.evaluate(() => document.body.dataset.solving), 'false', 'nothing went to the solver');
     await screenshot(page, 'density-expression');
-    assert.deepEqual(errors, []);
-  } finally {
-    await context.close();
-  }
+  });
 });
