@@ -46,6 +46,8 @@ EMSCRIPTEN_BINDINGS(flatfacet) {
       .function("loadArrays", &load_arrays)
       .function("loadShape", &Session::load_shape)
       .function("setParams", &Session::set_params)
+      .function(
+          "setDensity", +[](Session& s, const val& density) { return s.set_density(from_typed_array<double>(density)); })
       .function("step", &Session::step)
       .function("done", &Session::done)
       .function("resetSolve", &Session::reset_solve)

@@ -33,6 +33,11 @@ export interface RemeshParams {
   teleport?: boolean; // default true
   singlePointNodes?: boolean; // default false
   optimizePlanes?: boolean; // default true
+  // Procedural density (core/density/expression.h): variables x y z, u v w, nx ny nz, k1 k2 H K
+  // curv; higher = smaller panels. Multiplies a painted field (setDensity).
+  densityExpression?: string;
+  // Panels stretched along a direction (stretch 1..10).
+  anisotropy?: { direction: 'none' | 'x' | 'y' | 'z' | 'maxCurvature' | 'minCurvature'; stretch: number };
 }
 
 export type LengthUnitName = 'mm' | 'cm' | 'm' | 'in' | 'ft';
@@ -93,6 +98,11 @@ export interface Session {
   // Sets parameters (JSON of RemeshParams). With a solve under way or finished, warm-starts from
   // the current clustering (panel count / weights); a changed seed starts over. Status JSON.
   setParams(paramsJson: string): string;
+  // Density per vertex of the cleaned mesh (MeshInfo.vertices values, each finite and > 0;
+  // higher = smaller panels, panel area roughly 1/density); empty = uniform. Warm-starts like
+  // setParams; the same field again is a no-op; setParams keeps it; a new mesh drops it.
+  // Status JSON (refused, nothing changed, on a wrong length or a bad value).
+  setDensity(density: Float64Array): string;
   // Bounded work (seeding, one Lloyd iteration, one panel round). Progress JSON.
   step(): string;
   done(): boolean;

@@ -69,6 +69,7 @@ std::string Session::load(const std::string& name, TriMesh raw, int input_triang
   mesh_ = std::move(clean.mesh);
   topology_ = std::move(topology);
   cleanup_ = clean.report.messages();
+  params_.density.clear();  // per vertex of the previous mesh
   remesher_.reset();
   forget_result();
   prepare_seconds_ = seconds_since(t0);
@@ -141,6 +142,7 @@ std::string Session::set_params(const std::string& params_json) {
   return guarded([&] {
     RemeshParams params = remesh_params_from_json(params_json);
     params.make_panels = true;
+    params.density = params_.density;  // set apart (set_density)
     if (remesher_) {
       const bool mid_solve = !remesher_->done();
       remesher_->set_params(params);  // throws and keeps everything on bad parameters

@@ -36,8 +36,14 @@ class Session {
   std::string load_arrays(const std::string& name, const std::vector<double>& positions,
                           const std::vector<std::uint32_t>& indices);
   std::string load_shape(const std::string& name, int triangles);
-  // Status JSON. Warm-starts a solve under way or finished (Remesher::set_params).
+  // Status JSON. Warm-starts a solve under way or finished (Remesher::set_params). The
+  // density field (set_density) stays as it is.
   std::string set_params(const std::string& params_json);
+  // Density per vertex of the cleaned mesh (wasm/session_density.cpp): higher = smaller
+  // panels; empty = uniform. Status JSON: refused (and nothing changed) unless there is one
+  // finite value > 0 per vertex. Warm-starts like set_params; the same field is a no-op. A
+  // new mesh drops it.
+  std::string set_density(const std::vector<double>& density);
   // Progress JSON.
   std::string step();
   bool done() const;

@@ -4,6 +4,7 @@
 // in outputs.ts; this file wires them to the worker, the view and the status line.
 import type { MeshInfo } from '@flatfacet/wasm';
 import { countOutcome, element } from './dom.ts';
+import { DesignEditor } from './designEditor.ts';
 import { DesignMachine, type ChainLoss } from './designMachine.ts';
 import { ExamplePicker, showMeshInfo } from './examplePicker.ts';
 import { designStem } from './exports.ts';
@@ -11,7 +12,7 @@ import { FabricationPanel } from './fabricationPanel.ts';
 import { describeDesign, findExample } from './examples.ts';
 import { payloadFromExample, payloadFromFile } from './meshFiles.ts';
 import { Outputs } from './outputs.ts';
-import { toRemeshParams, type DesignParams } from './params.ts';
+import type { DesignParams } from './params.ts';
 import { ParamsForm } from './paramsForm.ts';
 import type { SolveResult, WorkerResponse } from './protocol.ts';
 import { saveSession } from './sessionStore.ts';
@@ -70,6 +71,17 @@ export class App {
     error: (message) => this.status.error(message),
     settingsChanged: () => this.fabricationChanged(),
   });
+  // Undo/redo, the density brush and the painted fields (designEditor.ts).
+  private readonly editor = new DesignEditor({
+    form: this.form,
+    viewer: this.viewer,
+    error: (message) => this.status.error(message),
+    canEdit: () => this.machine.canRemesh,
+    solvedChain: () => this.machine.solved?.chain ?? null,
+    solving: () => this.machine.solving !== null,
+    remesh: () => this.remesh(),
+    replay: (chain) => this.replay(chain),
+  });
   // A message to show once the mesh being opened has loaded (set only while opening).
   private pendingNotice: string | null = null;
 
@@ -119,6 +131,7 @@ export class App {
   async openExample(id: string, options: OpenOptions = { solve: true, note: '' }): Promise<void> {
     const example = findExample(id) ?? findExample(this.examples.defaultId)!;
     this.form.setPanels(example.panels); // each example comes with a count that suits it
+    this.editor.forgetPaint(); // painted on the previous mesh
     const checked = this.form.read();
     if (!checked.ok) {
       this.status.error(checked.message);
@@ -128,6 +141,7 @@ export class App {
   }
 
   async openFile(file: File): Promise<void> {
+    this.editor.forgetPaint();
     const params = this.form.read();
     if (!params.ok) {
       this.status.error(params.message);
@@ -138,6 +152,7 @@ export class App {
   }
 
   async openState(state: DesignState, note: string, fromLink: boolean): Promise<void> {
+    this.editor.adopt(state);
     this.form.write(state.params);
     if (state.fabrication) this.fabrication.write(state.fabrication);
     await this.open(state.mesh, state.params, state.history, { solve: true, note, fromLink });
@@ -176,6 +191,7 @@ export class App {
     if (!loaded) return;
     const opening = loaded.info;
     this.viewer.setSurface(positions, indices, opening.up === 'guess' ? guessUpAxis(positions) : opening.up);
+    this.editor.meshLoaded(opening.params);
     showMeshInfo(loaded.mesh.label, loaded.mesh.info);
     renderStats(this.statsBox, null);
     this.fabrication.panelsChanged(false);
@@ -202,7 +218,7 @@ export class App {
   }
 
   private save(state: DesignState): void {
-    void saveSession(state).then((outcome) => {
+    void saveSession(this.editor.withPaint(state)).then((outcome) => {
       this.outputs.noteSave(outcome.ok ? null : outcome.message);
       if (outcome.ok) countOutcome('saves');
     });
@@ -232,12 +248,21 @@ export class App {
   // `run` is solved in order; `chain` is what reproduces the result from the loaded mesh.
   private startSolve(run: DesignParams[], fresh: boolean, chain: DesignParams[] | null, lost: ChainLoss | null = null): void {
     const params = run[run.length - 1]!;
-    const job = this.solver.solve(fresh, run.map(toRemeshParams));
+    const job = this.solver.solve(fresh, run.map((p) => this.editor.solveStep(p)));
     this.machine.startSolve(job, params, chain, lost);
     this.viewer.setSolving(true);
     this.status.show(`Solving ${params.panels} panels…`);
     this.status.resetProgress('starting');
     this.updateButtons();
+  }
+
+  // Undo / redo: the chain that made a result, solved afresh from the loaded mesh (the same
+  // panels, as a share link replays them).
+  private replay(chain: DesignParams[]): void {
+    if (!this.machine.canRemesh || chain.length === 0) return;
+    this.dropSolve();
+    this.outputs.forgetLink();
+    this.startSolve(chain, true, chain);
   }
 
   private dropSolve(): boolean {
@@ -267,7 +292,7 @@ export class App {
     }
     const job = this.machine.update(checked.value);
     if (job === null) return;
-    this.solver.update(job, toRemeshParams(checked.value));
+    this.solver.update(job, this.editor.solveStep(checked.value));
     this.outputs.forgetLink();
   }
 
@@ -283,6 +308,7 @@ export class App {
     const summary = solvedSummary(result);
     this.status.show(summary.text, summary.warning ? 'info' : 'done');
     this.fabrication.panelsChanged(result.panelTriangles.length > 0);
+    this.editor.solved(solved.params, solved.chain);
     this.save({ mesh: mesh.design, params: solved.params, history: solved.chain ? solved.chain.slice(0, -1) : [], fabrication: this.fabrication.current });
     this.updateButtons();
   }
@@ -392,7 +418,7 @@ export class App {
     if (!params) return;
     // The history replays a warm-start chain so the link gives the identical panels.
     const state = { mesh: mesh.design, params, history: solved?.chain ? solved.chain.slice(0, -1) : [], fabrication: this.fabrication.current };
-    const shared = await this.outputs.share(state, solved && !solved.chain ? solved.lost : null);
+    const shared = await this.outputs.share(this.editor.withPaint(state), solved && !solved.chain ? solved.lost : null);
     if (shared.ok) this.status.show(shared.text);
     else this.status.error(shared.message);
   }
@@ -406,6 +432,7 @@ export class App {
     document.body.dataset.solving = String(solving);
     const opening = this.machine.opening;
     document.body.dataset.opening = opening === null ? 'false' : opening.job === null ? 'reading' : 'loading';
+    this.editor.updateButtons();
   }
 }
 

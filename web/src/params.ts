@@ -12,6 +12,14 @@ export interface MetricWeights {
   boundary: number;
 }
 
+export type AnisotropyDirection = 'none' | 'x' | 'y' | 'z' | 'maxCurvature' | 'minCurvature';
+export const ANISOTROPY_DIRECTIONS: readonly AnisotropyDirection[] = ['none', 'x', 'y', 'z', 'maxCurvature', 'minCurvature'];
+
+export interface Anisotropy {
+  direction: AnisotropyDirection;
+  stretch: number; // how much longer than wide panels are along `direction`, 1..10
+}
+
 // Every field explicit (unlike RemeshParams), so equal designs compare equal.
 export interface DesignParams {
   panels: number;
@@ -23,6 +31,12 @@ export interface DesignParams {
   teleport: boolean;
   singlePointNodes: boolean;
   optimizePlanes: boolean;
+  // Procedural density (core/density/expression.h), '' for none: higher = smaller panels.
+  densityExpression: string;
+  anisotropy: Anisotropy;
+  // The painted density field (brush/densityField.ts): its content key, '' for none. The
+  // field itself travels beside the parameters (DesignState.paint), once per key.
+  paint: string;
 }
 
 export const DEFAULT_PARAMS: DesignParams = {
@@ -35,6 +49,9 @@ export const DEFAULT_PARAMS: DesignParams = {
   teleport: true,
   singlePointNodes: false,
   optimizePlanes: true,
+  densityExpression: '',
+  anisotropy: { direction: 'none', stretch: 1 },
+  paint: '',
 };
 
 // The one set of limits: the form's inputs take their min/max from here (paramsForm.ts), and
@@ -51,7 +68,63 @@ export const LIMITS = {
   // Fabrication (fabricationParams.ts), in the designer's units; inside the core's 0..1e9.
   thickness: { min: 0, max: 100_000 },
   sheetSize: { min: 0.001, max: 1_000_000 },
+  // Density expression length (the core takes up to 4096 characters) and the stretch factor.
+  expressionLength: { min: 0, max: 1000 },
+  stretch: { min: 1, max: 10 },
 } as const;
+
+// The names an expression may use (core/density/expression.h); anything else is refused on
+// the page already, so a link cannot smuggle in text the core would only reject later.
+const EXPRESSION_NAMES = new Set([
+  'x', 'y', 'z', 'u', 'v', 'w', 'nx', 'ny', 'nz', 'k1', 'k2', 'H', 'K', 'curv', 'pi', 'e',
+  'sin', 'cos', 'tan', 'asin', 'acos', 'atan', 'atan2', 'sqrt', 'exp', 'log', 'log10', 'abs', 'sign', 'floor', 'ceil',
+  'round', 'pow', 'min', 'max', 'clamp', 'smoothstep', 'step', 'mix', 'mod', 'if',
+]);
+
+// Starting points for the expression (the core's kDensityPresets): scale-free, written with
+// u v w (0..1 across the bounding box) and curv (curvature times the bounding box diagonal).
+export const DENSITY_PRESETS: readonly { id: string; label: string; expression: string }[] = [
+  { id: 'twoSizes', label: 'Two element sizes', expression: '1 + 3 * smoothstep(0.45, 0.55, u)' },
+  { id: 'gradient', label: 'Gradient', expression: '1 + 3 * u' },
+  { id: 'radial', label: 'Radial', expression: '1 + 3 * exp(-8 * ((u - 0.5)^2 + (v - 0.5)^2))' },
+  { id: 'curvature', label: 'By curvature', expression: '1 + 2 * min(curv, 4)' },
+];
+
+const PAINT_KEY = /^[0-9a-f]{16}$/;
+
+// A density expression from the form or a link: plain ASCII of numbers, operators and the
+// known names only. The grammar itself is the core's to check (its message names the column).
+export function checkExpression(value: unknown): Checked<string> {
+  if (typeof value !== 'string') return failure('Density expression must be text');
+  const text = value.trim();
+  if (text.length > LIMITS.expressionLength.max) return failure(`Density expression is longer than ${LIMITS.expressionLength.max} characters`);
+  // Numbers (1, 2.5, .5, 1e-3), names, operators and brackets, separated by spaces.
+  const token = /[ \t]*(?:((?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?)|([A-Za-z_][A-Za-z0-9_]*)|(<=|>=|==|!=|&&|\|\||[-+*/^%()<>!?:,]))/y;
+  let at = 0;
+  while (at < text.length) {
+    token.lastIndex = at;
+    const match = token.exec(text);
+    if (!match) {
+      const column = at + /^[ \t]*/.exec(text.slice(at))![0].length + 1;
+      const code = text.codePointAt(column - 1) ?? 0;
+      const shown = code > 0x20 && code < 0x7f && code !== 0x22 ? `"${String.fromCodePoint(code)}"` : `U+${code.toString(16).toUpperCase().padStart(4, '0')}`;
+      return failure(`Density expression has a character it cannot use (${shown} at column ${column})`);
+    }
+    const name = match[2];
+    if (name !== undefined && !EXPRESSION_NAMES.has(name)) return failure(`Density expression uses an unknown name "${name.slice(0, 20)}" (use x y z, u v w, nx ny nz, k1 k2 H K curv, pi e and the listed functions)`);
+    at = token.lastIndex;
+  }
+  return { ok: true, value: text };
+}
+
+export function checkAnisotropy(value: unknown): Checked<Anisotropy> {
+  if (!isRecord(value)) return failure('Anisotropy must be an object');
+  for (const key of Object.keys(value)) if (key !== 'direction' && key !== 'stretch') return failure(`anisotropy: unknown field "${key.slice(0, 40)}"`);
+  if (!(ANISOTROPY_DIRECTIONS as readonly unknown[]).includes(value.direction)) return failure(`Anisotropy direction must be one of ${ANISOTROPY_DIRECTIONS.join(', ')}`);
+  const stretch = checkNumber(value.stretch, 'Stretch', LIMITS.stretch);
+  if (!stretch.ok) return stretch;
+  return { ok: true, value: { direction: value.direction as AnisotropyDirection, stretch: stretch.value } };
+}
 
 export const WEIGHT_NAMES: readonly (keyof MetricWeights)[] = ['euclidean', 'l2', 'l21', 'boundary'];
 
@@ -85,7 +158,7 @@ function checkBoolean(value: unknown, what: string): Checked<boolean> {
 // Unknown fields are rejected too: a link from a newer version must not half-apply.
 export function validateParams(value: unknown, where = 'parameters'): Checked<DesignParams> {
   if (!isRecord(value)) return failure(`${where} must be an object`);
-  const known = new Set(['panels', 'seed', 'weights', 'lloydIterations', 'panelRounds', 'seeding', 'teleport', 'singlePointNodes', 'optimizePlanes']);
+  const known = new Set(['panels', 'seed', 'weights', 'lloydIterations', 'panelRounds', 'seeding', 'teleport', 'singlePointNodes', 'optimizePlanes', 'densityExpression', 'anisotropy', 'paint']);
   for (const key of Object.keys(value)) {
     if (!known.has(key)) return failure(`${where}: unknown field "${key.slice(0, 40)}"`);
   }
@@ -116,6 +189,13 @@ export function validateParams(value: unknown, where = 'parameters'): Checked<De
     weights[name] = checked.value;
   }
   if (weights.euclidean + weights.l2 + weights.l21 === 0) return failure('At least one of the euclidean, L2 and L2,1 weights must be above 0');
+  // Absent in links and sessions made before density and anisotropy came to the page.
+  const expression = checkExpression(value.densityExpression ?? '');
+  if (!expression.ok) return expression;
+  const anisotropy = checkAnisotropy(value.anisotropy ?? DEFAULT_PARAMS.anisotropy);
+  if (!anisotropy.ok) return anisotropy;
+  const paint = value.paint ?? '';
+  if (typeof paint !== 'string' || (paint !== '' && !PAINT_KEY.test(paint))) return failure(`${where}: the density paint key is not valid`);
   return {
     ok: true,
     value: {
@@ -126,6 +206,9 @@ export function validateParams(value: unknown, where = 'parameters'): Checked<De
       panelRounds: rounds.value,
       seeding: value.seeding,
       ...flags,
+      densityExpression: expression.value,
+      anisotropy: anisotropy.value,
+      paint,
     },
   };
 }
@@ -139,6 +222,8 @@ export function canWarmStart(from: DesignParams, to: DesignParams): boolean {
   return from.seed === to.seed && from.seeding === to.seeding;
 }
 
+// The paint goes to the worker as a field of its own (protocol.ts, SolveStep); the expression
+// and anisotropy only when set, so the JSON stays what a core without them reads.
 export function toRemeshParams(params: DesignParams): RemeshParams {
   return {
     panels: params.panels,
@@ -150,5 +235,7 @@ export function toRemeshParams(params: DesignParams): RemeshParams {
     teleport: params.teleport,
     singlePointNodes: params.singlePointNodes,
     optimizePlanes: params.optimizePlanes,
+    ...(params.densityExpression !== '' ? { densityExpression: params.densityExpression } : {}),
+    ...(params.anisotropy.direction !== 'none' ? { anisotropy: { ...params.anisotropy } } : {}),
   };
 }

@@ -1,7 +1,7 @@
 // The parameter inputs of the side panel <-> DesignParams. Reading validates through
 // params.ts, so the form, links and stored sessions share one set of rules.
 import { element } from './dom.ts';
-import { LIMITS, validateParams, type Checked, type DesignParams } from './params.ts';
+import { DENSITY_PRESETS, LIMITS, validateParams, type Checked, type DesignParams } from './params.ts';
 
 export class ParamsForm {
   private readonly panels = element('panels', HTMLInputElement);
@@ -16,6 +16,12 @@ export class ParamsForm {
   private readonly teleport = element('teleport', HTMLInputElement);
   private readonly singlePointNodes = element('single-point-nodes', HTMLInputElement);
   private readonly optimizePlanes = element('optimize-planes', HTMLInputElement);
+  private readonly expression = element('density-expression', HTMLInputElement);
+  private readonly preset = element('density-preset', HTMLSelectElement);
+  private readonly direction = element('anisotropy-direction', HTMLSelectElement);
+  private readonly stretch = element('anisotropy-stretch', HTMLInputElement);
+  // The painted field's key (brush/densityField.ts): set by the brush, not typed.
+  private paintKey = '';
 
   constructor() {
     // The inputs' ranges come from LIMITS (params.ts), the same rules links are checked by.
@@ -37,6 +43,23 @@ export class ParamsForm {
     this.lloydIterations.title = `clustering iterations, ${LIMITS.lloydIterations.min} to ${LIMITS.lloydIterations.max}`;
     this.panelRounds.title = `panel rounds, ${LIMITS.panelRounds.min} to ${LIMITS.panelRounds.max}`;
     this.panels.title = `${LIMITS.panels.min} to ${LIMITS.panels.max.toLocaleString('en')} panels (at most one per triangle)`;
+    this.stretch.min = String(LIMITS.stretch.min);
+    this.stretch.max = String(LIMITS.stretch.max);
+    this.expression.maxLength = LIMITS.expressionLength.max;
+    for (const preset of DENSITY_PRESETS) this.preset.add(new Option(preset.label, preset.id));
+    // Registered first, so the expression is in place when onChange's callbacks read the form.
+    this.preset.addEventListener('change', () => {
+      const chosen = DENSITY_PRESETS.find((p) => p.id === this.preset.value);
+      if (this.preset.value === '') this.expression.value = '';
+      else if (chosen) this.expression.value = chosen.expression;
+    });
+    this.expression.addEventListener('input', () => this.syncPreset());
+  }
+
+  // The preset whose expression is typed, else "custom" (or "none" when empty).
+  private syncPreset(): void {
+    const text = this.expression.value.trim();
+    this.preset.value = text === '' ? '' : (DENSITY_PRESETS.find((p) => p.expression === text)?.id ?? 'custom');
   }
 
   private get numberInputs(): HTMLInputElement[] {
@@ -45,13 +68,13 @@ export class ParamsForm {
 
   // Calls back on committed changes (enter, blur, spinner, checkbox), not on every keystroke.
   onChange(callback: () => void): void {
-    for (const input of [...this.numberInputs, this.teleport, this.singlePointNodes, this.optimizePlanes, this.seeding]) {
+    for (const input of [...this.numberInputs, this.teleport, this.singlePointNodes, this.optimizePlanes, this.seeding, this.expression, this.preset, this.direction, this.stretch]) {
       input.addEventListener('change', callback);
     }
   }
 
   read(): Checked<DesignParams> {
-    for (const input of this.numberInputs) input.removeAttribute('aria-invalid');
+    for (const input of [...this.numberInputs, this.expression, this.stretch]) input.removeAttribute('aria-invalid');
     const number = (input: HTMLInputElement): number => (input.value.trim() === '' ? Number.NaN : Number(input.value));
     const checked = validateParams({
       panels: number(this.panels),
@@ -63,6 +86,9 @@ export class ParamsForm {
       teleport: this.teleport.checked,
       singlePointNodes: this.singlePointNodes.checked,
       optimizePlanes: this.optimizePlanes.checked,
+      densityExpression: this.expression.value,
+      anisotropy: { direction: this.direction.value, stretch: number(this.stretch) },
+      paint: this.paintKey,
     });
     if (!checked.ok) this.markInvalid(checked.message);
     return checked;
@@ -78,6 +104,8 @@ export class ParamsForm {
       ['boundary', this.boundary],
       ['Lloyd', this.lloydIterations],
       ['Panel rounds', this.panelRounds],
+      ['Density expression', this.expression],
+      ['Stretch', this.stretch],
     ];
     const match = byName.find(([name]) => message.includes(name));
     match?.[1].setAttribute('aria-invalid', 'true');
@@ -96,7 +124,20 @@ export class ParamsForm {
     this.teleport.checked = params.teleport;
     this.singlePointNodes.checked = params.singlePointNodes;
     this.optimizePlanes.checked = params.optimizePlanes;
-    for (const input of this.numberInputs) input.removeAttribute('aria-invalid');
+    this.expression.value = params.densityExpression;
+    this.syncPreset();
+    this.direction.value = params.anisotropy.direction;
+    this.stretch.value = String(params.anisotropy.stretch);
+    this.paintKey = params.paint;
+    for (const input of [...this.numberInputs, this.expression, this.stretch]) input.removeAttribute('aria-invalid');
+  }
+
+  get paint(): string {
+    return this.paintKey;
+  }
+
+  setPaint(key: string): void {
+    this.paintKey = key;
   }
 
   setPanels(panels: number): void {

@@ -10,15 +10,22 @@ export type MeshPayload =
   | { kind: 'arrays'; name: string; positions: Float64Array; indices: Uint32Array }
   | { kind: 'shape'; name: string; triangles: number };
 
+// One solve of a chain: the parameters and the painted density field (brush/densityField.ts
+// levels, one per vertex of the loaded mesh; null: none), set in the session before it.
+export interface SolveStep {
+  params: RemeshParams;
+  paint: Int8Array | null;
+}
+
 export type WorkerRequest =
   // quiet: reload after a worker restart; answer without the display arrays.
   | { type: 'load'; job: number; mesh: MeshPayload; quiet: boolean }
   // fresh: start cold from the loaded mesh (Session.resetSolve), else warm-start from what the
   // session holds.
   // chain: parameter sets solved one after the other (a share link replays a warm-start chain).
-  | { type: 'solve'; job: number; fresh: boolean; chain: RemeshParams[] }
+  | { type: 'solve'; job: number; fresh: boolean; chain: SolveStep[] }
   // A parameter change during a solve: applied before the next step (warm start).
-  | { type: 'update'; job: number; params: RemeshParams }
+  | { type: 'update'; job: number; step: SolveStep }
   | { type: 'cancel'; job: number }
   // The fabrication outputs of the session's current panels with these settings. Its own job
   // numbers (SolverClient.fabricate), so it never disturbs a solve's.

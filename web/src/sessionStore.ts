@@ -5,7 +5,8 @@
 // back is checked like a share link (same validators), just with room for larger meshes.
 import { findExample } from './examples.ts';
 import { failure, type Checked } from './params.ts';
-import { checkFileName, checkParamsAndHistory, decodePayload, optionalFabrication, type DesignMesh, type DesignState } from './share.ts';
+import { checkPaintFields, paintEntries } from './paintFields.ts';
+import { checkFileName, checkParamsAndHistory, decodePayload, MAX_SHARED_PAINT_BYTES, optionalFabrication, type DesignMesh, type DesignState } from './share.ts';
 
 const DB_NAME = 'flatfacet';
 const DB_VERSION = 2;
@@ -22,6 +23,7 @@ interface SessionRecord {
   params: unknown;
   history: unknown;
   fabrication?: unknown; // absent in sessions stored before fabrication came to the page
+  paint?: unknown; // [{ key, bytes: Uint8Array }]: the painted density fields the params name
 }
 
 export type SaveOutcome = { ok: true } | { ok: false; message: string };
@@ -116,6 +118,12 @@ export async function saveSession(state: DesignState): Promise<SaveOutcome> {
     ...(state.fabrication ? { fabrication: state.fabrication } : {}),
   };
   try {
+    const paint = paintEntries(state.params, state.history, state.paint);
+    if (paint.length > 0) record.paint = paint.map(({ key, field }) => ({ key, bytes: new Uint8Array(field.buffer, field.byteOffset, field.length) }));
+  } catch (error) {
+    return failure(`this browser did not keep the session (${error instanceof Error ? error.message : String(error)}): a reload will not bring it back`);
+  }
+  try {
     await transaction<boolean>('readwrite', (sessions, meshes, done) => {
       sessions.put(record, KEY);
       if (mesh.kind !== 'file' || key === storedMeshKey) {
@@ -161,7 +169,11 @@ function checkRecord(record: unknown, meshBytes: unknown): Checked<DesignState> 
   if (!checked.ok) return checked;
   const fabrication = optionalFabrication(record.fabrication, 'the stored session');
   if (!fabrication.ok) return fabrication;
-  return { ok: true, value: { mesh, ...checked.value, ...fabrication.value } };
+  const paintList = record.paint ?? [];
+  if (!Array.isArray(paintList) || !paintList.every((e) => isRecord(e) && typeof e.key === 'string' && e.bytes instanceof Uint8Array)) return failure('its density paint is damaged');
+  const paint = checkPaintFields(paintList as { key: string; bytes: Uint8Array }[], checked.value.params, checked.value.history, 'the stored session');
+  if (!paint.ok) return paint;
+  return { ok: true, value: { mesh, ...checked.value, ...fabrication.value, ...paint.value } };
 }
 
 export async function loadSession(): Promise<Restored> {
@@ -183,7 +195,7 @@ export async function loadSession(): Promise<Restored> {
   }
   if (found.record === undefined) return { kind: 'none' };
   // Version 1 of the page stored the share-link payload itself.
-  const checked = found.record instanceof Uint8Array ? decodePayload(found.record, { maxMeshBytes: MAX_STORED_MESH_BYTES }) : checkRecord(found.record, found.meshBytes);
+  const checked = found.record instanceof Uint8Array ? decodePayload(found.record, { maxMeshBytes: MAX_STORED_MESH_BYTES, maxPaintBytes: MAX_SHARED_PAINT_BYTES }) : checkRecord(found.record, found.meshBytes);
   if (!checked.ok) return { kind: 'error', message: `the last session kept in this browser cannot be restored: ${checked.message}` };
   const record = found.record;
   if (checked.value.mesh.kind === 'file' && isRecord(record) && isRecord(record.mesh) && typeof record.mesh.key === 'string') {

@@ -1,8 +1,10 @@
 // Share links (DESIGN.md 4): the design in the URL hash, never sent to a server.
 //
-//   #v1=<base64url( zlib( u32 json length | JSON | mesh file bytes ) )>
+//   #v1=<base64url( zlib( u32 json length | JSON | mesh file bytes | density paint bytes ) )>
 //
-// JSON: { v: 1, mesh: { example } | { file, size }, params, history }. `history` lists the
+// JSON: { v: 1, mesh: { example } | { file, size }, params, history, fabrication?, paint? }.
+// `paint` (optional) lists the painted density fields the parameters name ([{ key, vertices }],
+// paintFields.ts), their bytes (one level per vertex) after the mesh's, in that order. `history` lists the
 // earlier solves of a warm-start chain; replaying history then params from the loaded mesh
 // gives the identical panels. An uploaded mesh travels as its file bytes, as long as the whole
 // hash stays under MAX_LINK_HASH_CHARS (Chromium refuses URLs over 2 MiB characters).
@@ -13,6 +15,7 @@ import { Unzlib, zlibSync } from 'fflate';
 import { decodeBase64url, encodeBase64url } from './base64url.ts';
 import { findExample } from './examples.ts';
 import { fabricationOrDefault, type FabricationSettings } from './fabricationParams.ts';
+import { checkPaintFields, checkPaintTable, paintEntries, type PaintFields } from './paintFields.ts';
 import { failure, validateParams, type Checked, type DesignParams } from './params.ts';
 
 export const SHARE_VERSION = 1;
@@ -36,13 +39,20 @@ export interface DesignState {
   history: DesignParams[];
   // Absent in links and stored sessions made before fabrication came to the page: the defaults.
   fabrication?: FabricationSettings;
+  // The painted density fields `params` and `history` name (absent: none painted).
+  paint?: PaintFields;
 }
 
 export interface DecodeLimits {
   maxMeshBytes: number;
+  maxPaintBytes: number; // all fields together
 }
 
-export const LINK_LIMITS: DecodeLimits = { maxMeshBytes: MAX_SHARED_MESH_BYTES };
+// The painted fields a link carries (one byte per vertex and field): the fields of a warm-start
+// chain on a mesh of ~200k vertices; bounds what a hostile link makes the page inflate.
+export const MAX_SHARED_PAINT_BYTES = 2 * 1024 * 1024;
+export const PAINT_TOO_LARGE = 'the density paint is too large to travel in a link (too many painted steps on a large mesh); clear the paint or remesh afresh first';
+export const LINK_LIMITS: DecodeLimits = { maxMeshBytes: MAX_SHARED_MESH_BYTES, maxPaintBytes: MAX_SHARED_PAINT_BYTES };
 
 function isRecord(value: unknown): value is Record<string, unknown> {
   return typeof value === 'object' && value !== null && !Array.isArray(value);
@@ -58,12 +68,20 @@ export function checkFileName(value: unknown): Checked<string> {
 // The binary payload (before compression).
 export function encodePayload(state: DesignState): Uint8Array {
   const meshJson = state.mesh.kind === 'example' ? { example: state.mesh.id } : { file: state.mesh.name, size: state.mesh.bytes.length };
-  const json = new TextEncoder().encode(JSON.stringify({ v: SHARE_VERSION, mesh: meshJson, params: state.params, history: state.history, ...(state.fabrication ? { fabrication: state.fabrication } : {}) }));
+  const paint = paintEntries(state.params, state.history, state.paint);
+  const paintJson = paint.length > 0 ? { paint: paint.map(({ key, field }) => ({ key, vertices: field.length })) } : {};
+  const json = new TextEncoder().encode(JSON.stringify({ v: SHARE_VERSION, mesh: meshJson, params: state.params, history: state.history, ...(state.fabrication ? { fabrication: state.fabrication } : {}), ...paintJson }));
   const fileBytes = state.mesh.kind === 'file' ? state.mesh.bytes : new Uint8Array(0);
-  const out = new Uint8Array(4 + json.length + fileBytes.length);
+  const paintBytes = paint.reduce((sum, { field }) => sum + field.length, 0);
+  const out = new Uint8Array(4 + json.length + fileBytes.length + paintBytes);
   new DataView(out.buffer).setUint32(0, json.length, true);
   out.set(json, 4);
   out.set(fileBytes, 4 + json.length);
+  let offset = 4 + json.length + fileBytes.length;
+  for (const { field } of paint) {
+    out.set(new Uint8Array(field.buffer, field.byteOffset, field.length), offset);
+    offset += field.length;
+  }
   return out;
 }
 
@@ -154,7 +172,14 @@ export function decodePayload(payload: Uint8Array, limits: DecodeLimits): Checke
   if (parsed.v !== SHARE_VERSION) {
     return failure(typeof parsed.v === 'number' ? `the link has format version ${parsed.v}; this page reads version ${SHARE_VERSION}` : 'the link has no format version');
   }
-  const rest = payload.subarray(4 + jsonLength);
+  // The paint's bytes come last; what is before them is the mesh's.
+  const table = checkPaintTable(parsed.paint, 'the link');
+  if (!table.ok) return table;
+  const paintBytes = table.value.reduce((sum, { vertices }) => sum + vertices, 0);
+  if (paintBytes > limits.maxPaintBytes) return failure(`the link's density paint is larger than ${Math.round(limits.maxPaintBytes / 1024)} KiB`);
+  const tail = payload.subarray(4 + jsonLength);
+  if (paintBytes > tail.length) return failure('the link is damaged (the density paint is truncated)');
+  const rest = tail.subarray(0, tail.length - paintBytes);
   const meshValue = parsed.mesh;
   if (!isRecord(meshValue)) return failure('the link names no mesh');
   let mesh: DesignMesh;
@@ -178,7 +203,15 @@ export function decodePayload(payload: Uint8Array, limits: DecodeLimits): Checke
   if (!checked.ok) return checked;
   const fabrication = optionalFabrication(parsed.fabrication, 'the link');
   if (!fabrication.ok) return fabrication;
-  return { ok: true, value: { mesh, ...checked.value, ...fabrication.value } };
+  let offset = rest.length;
+  const entries = table.value.map(({ key, vertices }) => {
+    const bytes = tail.subarray(offset, offset + vertices);
+    offset += vertices;
+    return { key, bytes };
+  });
+  const paint = checkPaintFields(entries, checked.value.params, checked.value.history, 'the link');
+  if (!paint.ok) return paint;
+  return { ok: true, value: { mesh, ...checked.value, ...fabrication.value, ...paint.value } };
 }
 
 // The parameters and the warm-start history of a link or a stored session.
@@ -205,7 +238,7 @@ export function optionalFabrication(value: unknown, where: string): Checked<{ fa
 }
 
 export function decodeState(compressed: Uint8Array, limits: DecodeLimits): Checked<DesignState> {
-  const inflated = inflateCapped(compressed, limits.maxMeshBytes + MAX_JSON_BYTES + 4);
+  const inflated = inflateCapped(compressed, limits.maxMeshBytes + limits.maxPaintBytes + MAX_JSON_BYTES + 4);
   if (!inflated.ok) return inflated;
   return decodePayload(inflated.value, limits);
 }
@@ -218,7 +251,15 @@ export function stateToHash(state: DesignState): string {
 // compressing (a large upload is not compressed for nothing), the hash length after.
 export function shareHash(state: DesignState): Checked<string> {
   if (state.mesh.kind === 'file' && state.mesh.bytes.length > MAX_SHARED_MESH_BYTES) return failure(LINK_TOO_LARGE);
-  const hash = stateToHash(state);
+  let paintBytes = 0;
+  for (const field of state.paint?.values() ?? []) paintBytes += field.length;
+  if (paintBytes > MAX_SHARED_PAINT_BYTES) return failure(PAINT_TOO_LARGE);
+  let hash: string;
+  try {
+    hash = stateToHash(state);
+  } catch (error) {
+    return failure(`the link could not be made (${error instanceof Error ? error.message : String(error)})`);
+  }
   return hash.length > MAX_LINK_HASH_CHARS ? failure(LINK_TOO_LARGE) : { ok: true, value: hash };
 }
 

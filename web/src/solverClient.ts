@@ -3,8 +3,8 @@
 // cancel message, so after a short grace it is terminated and a new one reloads the mesh. A
 // worker that crashed (an error event, or a wasm call that threw something other than a
 // Status) is replaced the same way, and the page is told so.
-import type { FabricationParams, RemeshParams } from '@flatfacet/wasm';
-import type { MeshPayload, WorkerRequest, WorkerResponse } from './protocol.ts';
+import type { FabricationParams } from '@flatfacet/wasm';
+import type { MeshPayload, SolveStep, WorkerRequest, WorkerResponse } from './protocol.ts';
 
 const CANCEL_GRACE_MS = 250;
 
@@ -114,7 +114,7 @@ export class SolverClient {
     return this.job;
   }
 
-  solve(fresh: boolean, chain: RemeshParams[]): number {
+  solve(fresh: boolean, chain: SolveStep[]): number {
     this.job += 1;
     this.send({ type: 'solve', job: this.job, fresh, chain });
     return this.job;
@@ -127,8 +127,8 @@ export class SolverClient {
     return this.fabricateJob;
   }
 
-  update(job: number, params: RemeshParams): void {
-    if (job === this.job) this.send({ type: 'update', job, params });
+  update(job: number, step: SolveStep): void {
+    if (job === this.job) this.send({ type: 'update', job, step });
   }
 
   // Stops the job at once as far as the page is concerned (its answers are dropped from now

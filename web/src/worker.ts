@@ -8,8 +8,9 @@
 // `crashed`, stops answering, and the page replaces it.
 import createFlatfacet, { type FlatfacetModule, type MeshInfo, type Problems, type Progress, type Session, type Status } from '@flatfacet/wasm';
 import wasmUrl from '@flatfacet/wasm-binary?url';
+import { decodeField } from './brush/densityField.ts';
 import { fabricationOf } from './workerFabrication.ts';
-import { transferablesOf, type MeshPayload, type QualityReport, type SolveResult, type WorkerRequest, type WorkerResponse } from './protocol.ts';
+import { transferablesOf, type MeshPayload, type QualityReport, type SolveResult, type SolveStep, type WorkerRequest, type WorkerResponse } from './protocol.ts';
 
 // The DOM lib types `self` as a Window; in a dedicated worker postMessage takes a transfer list.
 const scope = self as unknown as {
@@ -22,7 +23,7 @@ const CLUSTER_VIEW_INTERVAL_MS = 150;
 interface Run {
   job: number;
   cancelled: boolean;
-  pendingParams: string | null;
+  pendingStep: SolveStep | null;
 }
 
 let flatfacet: FlatfacetModule | null = null;
@@ -128,15 +129,23 @@ function maybeCrashForTest(): void {
   doomed.clusterIds();
 }
 
-async function handleSolve(run: Run, fresh: boolean, chain: string[]): Promise<void> {
+// The step's density field, then its parameters: the same calls, in the same order, whether a
+// step is solved live or replayed from a link, so both give the same panels.
+const NO_DENSITY = new Float64Array(0);
+function applyStep(target: Session, step: SolveStep): void {
+  checked(target.setDensity(step.paint ? decodeField(step.paint) : NO_DENSITY), 'the density paint');
+  checked(target.setParams(JSON.stringify(step.params)), 'the parameters');
+}
+
+async function handleSolve(run: Run, fresh: boolean, chain: SolveStep[]): Promise<void> {
   const target = requireSession();
   // A cold start from the loaded mesh, the same result as a new Session with it.
   if (fresh) target.resetSolve();
   const started = performance.now();
   let steps = 0;
   let lastClusterView = started;
-  for (const paramsJson of chain) {
-    checked(target.setParams(paramsJson), 'the parameters');
+  for (const step of chain) {
+    applyStep(target, step);
     while (!target.done()) {
       await yieldToEventLoop();
       if (crashed) return;
@@ -144,10 +153,10 @@ async function handleSolve(run: Run, fresh: boolean, chain: string[]): Promise<v
         post({ type: 'cancelled', job: run.job });
         return;
       }
-      if (run.pendingParams !== null) {
-        const update = run.pendingParams;
-        run.pendingParams = null;
-        checked(target.setParams(update), 'the parameters');
+      if (run.pendingStep !== null) {
+        const update = run.pendingStep;
+        run.pendingStep = null;
+        applyStep(target, update);
       }
       const progress = checked<Progress>(target.step(), 'the solve');
       steps += 1;
@@ -184,10 +193,9 @@ function handle(request: WorkerRequest): void {
       return;
     case 'solve': {
       if (currentRun) currentRun.cancelled = true;
-      const run: Run = { job: request.job, cancelled: false, pendingParams: null };
+      const run: Run = { job: request.job, cancelled: false, pendingStep: null };
       currentRun = run;
-      const chain = request.chain.map((params) => JSON.stringify(params));
-      void handleSolve(run, request.fresh, chain)
+      void handleSolve(run, request.fresh, request.chain)
         .catch((error: unknown) => failWith(request.job, error))
         .finally(() => {
           if (currentRun === run) currentRun = null;
@@ -195,7 +203,7 @@ function handle(request: WorkerRequest): void {
       return;
     }
     case 'update':
-      if (currentRun && currentRun.job === request.job) currentRun.pendingParams = JSON.stringify(request.params);
+      if (currentRun && currentRun.job === request.job) currentRun.pendingStep = request.step;
       return;
     case 'cancel':
       if (currentRun && currentRun.job === request.job) currentRun.cancelled = true;

@@ -11,6 +11,10 @@ export class InputLayer {
   readonly mesh: THREE.Mesh<THREE.BufferGeometry, THREE.MeshBasicMaterial>;
   private triangleCount = 0;
   private shade: Float32Array = new Float32Array(0); // per triangle: 0.5 (grazing light) .. 1 (facing it)
+  private indices: Uint32Array = new Uint32Array(0);
+  private clusterIds: Int32Array | null = null;
+  // RGB per vertex shown instead of the clusters (the density paint's colour map), or null.
+  private vertexColors: Float32Array | null = null;
 
   constructor() {
     const material = new THREE.MeshBasicMaterial({
@@ -28,6 +32,8 @@ export class InputLayer {
   // Positions are already shifted to the viewer's origin (Float32 near zero keeps precision).
   setSurface(positions: Float32Array, indices: Uint32Array): void {
     this.triangleCount = Math.floor(indices.length / 3);
+    this.indices = indices;
+    this.vertexColors = null;
     const flat = new Float32Array(this.triangleCount * 9);
     for (let t = 0; t < this.triangleCount * 3; t++) {
       const v = indices[t]!;
@@ -47,9 +53,42 @@ export class InputLayer {
 
   // One cluster id per cleaned triangle; null or a wrong length shows the plain surface.
   setClusters(clusterIds: Int32Array | null): void {
+    this.clusterIds = clusterIds;
+    if (!this.vertexColors) this.paint();
+  }
+
+  // Colours per vertex (RGB triples, one per vertex of the surface) instead of the
+  // clusters, interpolated across each triangle; null goes back to the clusters.
+  setVertexColors(rgb: Float32Array | null): void {
+    this.vertexColors = rgb;
+    // Under the panel edges drawn over the paint, even where a panel's plane dips below it.
+    const material = this.mesh.material;
+    const offset = rgb ? 8 : 2;
+    if (material.polygonOffsetFactor !== offset) {
+      material.polygonOffsetFactor = offset;
+      material.polygonOffsetUnits = offset;
+      material.needsUpdate = true;
+    }
+    this.paint();
+  }
+
+  private paint(): void {
     const attribute = this.mesh.geometry.getAttribute('color');
     if (!(attribute instanceof THREE.BufferAttribute)) return;
     const colors = attribute.array as Float32Array;
+    const perVertex = this.vertexColors;
+    if (perVertex) {
+      for (let corner = 0; corner < this.triangleCount * 3; corner++) {
+        const v = this.indices[corner]! * 3;
+        const shade = this.shade[Math.floor(corner / 3)]!;
+        colors[corner * 3] = (perVertex[v] ?? 0) * shade;
+        colors[corner * 3 + 1] = (perVertex[v + 1] ?? 0) * shade;
+        colors[corner * 3 + 2] = (perVertex[v + 2] ?? 0) * shade;
+      }
+      attribute.needsUpdate = true;
+      return;
+    }
+    const clusterIds = this.clusterIds;
     const rgb = new Float32Array(3);
     const usable = clusterIds !== null && clusterIds.length === this.triangleCount;
     for (let t = 0; t < this.triangleCount; t++) {

@@ -41,6 +41,9 @@ export class Viewer {
   private liveTimer: ReturnType<typeof setTimeout> | null = null;
   private lastLiveUpdate = 0;
   private readonly software: boolean;
+  // The surface in the view's frame (shifted to the origin), for the density brush's picking.
+  private surfaceValue: { positions: Float32Array; indices: Uint32Array; diagonal: number } | null = null;
+  private densityView = false; // the density paint's colour map instead of the panels
 
   constructor(private readonly container: HTMLElement) {
     const software = isSoftwareRenderer();
@@ -63,6 +66,37 @@ export class Viewer {
     this.controls.addEventListener('change', () => this.requestRender());
     new ResizeObserver(() => this.resize()).observe(container);
     this.resize();
+    this.applyVisibility();
+  }
+
+  get canvas(): HTMLCanvasElement {
+    return this.renderer.domElement;
+  }
+
+  // Mesh coordinates = view frame + offset.
+  get offset(): THREE.Vector3 {
+    return this.origin.clone();
+  }
+
+  get viewCamera(): THREE.PerspectiveCamera {
+    return this.camera;
+  }
+
+  // The input surface as shown (view frame), or null before one is loaded.
+  get surface(): { positions: Float32Array; indices: Uint32Array; diagonal: number } | null {
+    return this.surfaceValue;
+  }
+
+  // Something drawn over the model (the brush cursor), in the view frame.
+  addOverlay(object: THREE.Object3D): void {
+    this.scene.add(object);
+  }
+
+  // The density paint's colour map (RGB per surface vertex) on the surface, with the panel
+  // edges over it so their sizes show against the paint; null: the usual view.
+  setDensityView(rgb: Float32Array | null): void {
+    this.densityView = rgb !== null;
+    this.input.setVertexColors(rgb);
     this.applyVisibility();
   }
 
@@ -95,6 +129,7 @@ export class Viewer {
     for (let i = 0; i < positions.length; i++) local[i] = positions[i]! - this.origin.getComponent(i % 3);
     this.input.setSurface(local, indices);
     this.input.setClusters(null);
+    this.surfaceValue = { positions: local, indices, diagonal: box.getSize(new THREE.Vector3()).length() };
     this.setResult(null);
     this.frame(box, upAxis);
   }
@@ -186,6 +221,13 @@ export class Viewer {
     this.thick.markers.visible = showPanels && this.toggles.problems && !this.toggles.beforeFix;
     // The surface shows when panels do not cover it: during a solve, before any, or on request.
     this.input.mesh.visible = this.solving || !showPanels || this.toggles.clusters || !this.toggles.panels;
+    if (this.densityView) {
+      this.input.mesh.visible = true;
+      this.panels.faces.visible = false;
+      this.problems.group.visible = false;
+      this.thick.solid.visible = false;
+      this.thick.markers.visible = false;
+    }
     this.requestRender();
   }
 }

@@ -1,0 +1,201 @@
+// Undo and redo of the design's edits (parameter and expression changes, paint strokes; panel
+// edits later, as one more kind of step), the painted fields they name, and the wiring of the
+// density brush to the solver. Each history step records the design's parameters (the paint by
+// its field's key) and, once solved, the warm-start chain that reproduces its panels: undo and
+// redo replay that chain from the loaded mesh, so they give back the very same panels.
+import { countOutcome, element } from './dom.ts';
+import { isUniform, fieldKey } from './brush/densityField.ts';
+import { DensityPanel } from './brush/densityPanel.ts';
+import { History } from './history.ts';
+import { paintKeys, type PaintFields } from './paintFields.ts';
+import { sameParams, toRemeshParams, type DesignParams } from './params.ts';
+import type { ParamsForm } from './paramsForm.ts';
+import type { SolveStep } from './protocol.ts';
+import type { DesignState } from './share.ts';
+import type { Viewer } from './view/viewer.ts';
+
+export type StepKind = 'open' | 'params' | 'paint' | 'edit';
+
+export interface DesignStep {
+  kind: StepKind;
+  params: DesignParams;
+  // The chain of solves that reproduces this step's panels from the loaded mesh, once solved
+  // (null: not solved, or solved in a way no chain reproduces).
+  chain: DesignParams[] | null;
+}
+
+export interface EditorHost {
+  form: ParamsForm;
+  viewer: Viewer;
+  error(message: string): void;
+  canEdit(): boolean; // a mesh loaded, none opening
+  solvedChain(): DesignParams[] | null; // the chain of the result on show, if reproducible
+  solving(): boolean;
+  remesh(): void; // what Remesh does with the form's parameters
+  replay(chain: DesignParams[]): void; // solve `chain` afresh from the loaded mesh
+}
+
+const HISTORY_LIMIT = 100;
+
+export class DesignEditor {
+  private readonly history = new History<DesignStep>(HISTORY_LIMIT);
+  private readonly fields = new Map<string, Int8Array>();
+  // The fields of a design being opened from a link or the stored session: kept until the next
+  // such open, since its solve chain needs them before any history step names them.
+  private pinned = new Set<string>();
+  private readonly undoButton = element('undo', HTMLButtonElement);
+  private readonly redoButton = element('redo', HTMLButtonElement);
+  private readonly density: DensityPanel;
+
+  constructor(private readonly host: EditorHost) {
+    this.density = new DensityPanel({
+      viewer: host.viewer,
+      field: () => this.fields.get(host.form.paint) ?? null,
+      canPaint: () => host.canEdit() && host.viewer.surface !== null,
+      strokeEnded: (field) => this.paint(isUniform(field) ? null : field),
+      clear: () => this.paint(null),
+    });
+    host.form.onChange(() => this.formChanged());
+    this.undoButton.addEventListener('click', () => this.undo());
+    this.redoButton.addEventListener('click', () => this.redo());
+    window.addEventListener('keydown', (event) => this.key(event));
+    this.updateButtons();
+  }
+
+  // ---- what the controller tells
+
+  // A new mesh is about to be opened from the form (an example, a file): its paint is gone.
+  forgetPaint(): void {
+    this.host.form.setPaint('');
+    this.pinned = new Set();
+  }
+
+  // A design from a link or the stored session: its fields, before its parameters are used.
+  adopt(state: DesignState): void {
+    this.pinned = new Set(state.paint?.keys() ?? []);
+    for (const [key, field] of state.paint ?? []) this.fields.set(key, field);
+  }
+
+  // The mesh of the design is shown: history starts over from its parameters.
+  meshLoaded(params: DesignParams): void {
+    this.history.reset({ kind: 'open', params, chain: null });
+    this.density.surfaceChanged();
+    this.updateButtons();
+  }
+
+  // A solve finished: its chain reproduces the current step (or a step of its own when the
+  // parameters were not recorded yet, e.g. Enter before the field's change event).
+  solved(params: DesignParams, chain: DesignParams[] | null): void {
+    const current = this.history.current;
+    if (current && sameParams(current.params, params)) this.history.replaceCurrent({ ...current, chain });
+    else if (!this.history.all.some((step) => sameParams(step.params, params))) this.history.push({ kind: 'params', params, chain });
+    this.prune();
+    this.updateButtons();
+  }
+
+  // The worker's request for one solve of a chain.
+  solveStep(params: DesignParams): SolveStep {
+    return { params: toRemeshParams(params), paint: params.paint === '' ? null : (this.fields.get(params.paint) ?? null) };
+  }
+
+  // The state to save or share, with the fields its parameters name.
+  withPaint(state: DesignState): DesignState {
+    const keys = paintKeys(state.params, state.history);
+    if (keys.length === 0) return state;
+    const paint: PaintFields = new Map(keys.map((key) => [key, this.fields.get(key)!] as const));
+    return { ...state, paint };
+  }
+
+  updateButtons(): void {
+    const can = this.host.canEdit();
+    this.undoButton.disabled = !can || !this.history.canUndo;
+    this.redoButton.disabled = !can || !this.history.canRedo;
+    this.density.updateButtons(this.host.form.paint !== '');
+    document.body.dataset.historyIndex = String(this.history.index);
+    document.body.dataset.historySize = String(this.history.size);
+  }
+
+  // ---- edits
+
+  private paint(field: Int8Array | null): void {
+    if (!this.host.canEdit()) return;
+    const key = field ? fieldKey(field) : '';
+    if (field) this.fields.set(key, field);
+    this.host.form.setPaint(key);
+    this.density.show();
+    const read = this.host.form.read();
+    if (!read.ok) {
+      this.host.error(read.message);
+      return;
+    }
+    const current = this.history.current;
+    if (current && sameParams(current.params, read.value)) return; // the stroke changed nothing
+    this.history.push({ kind: 'paint', params: read.value, chain: null });
+    countOutcome('strokes');
+    this.prune();
+    this.updateButtons();
+    this.host.remesh(); // warm-starts from the result on show (designMachine.planRemesh)
+  }
+
+  private formChanged(): void {
+    const read = this.host.form.read();
+    const current = this.history.current;
+    if (!read.ok || !current || sameParams(current.params, read.value)) return;
+    this.history.push({ kind: 'params', params: read.value, chain: null });
+    this.prune();
+    this.updateButtons();
+  }
+
+  undo(): void {
+    if (!this.host.canEdit() || this.density.painting) return;
+    const step = this.history.undo();
+    if (step) this.restore(step);
+  }
+
+  redo(): void {
+    if (!this.host.canEdit() || this.density.painting) return;
+    const step = this.history.redo();
+    if (step) this.restore(step);
+  }
+
+  // The step's parameters and paint back in the form and the view, and its panels: replayed
+  // when its chain is known, else solved as Remesh would.
+  private restore(step: DesignStep): void {
+    this.host.form.write(step.params);
+    this.density.show();
+    this.updateButtons();
+    const shown = this.host.solvedChain();
+    const same = step.chain !== null && shown !== null && shown.length === step.chain.length && shown.every((p, i) => sameParams(p, step.chain![i]!));
+    if (same && !this.host.solving()) return;
+    if (step.chain) this.host.replay(step.chain);
+    else this.host.remesh();
+  }
+
+  private key(event: KeyboardEvent): void {
+    if (!(event.ctrlKey || event.metaKey) || event.altKey) return;
+    const key = event.key.toLowerCase();
+    const redo = (key === 'z' && event.shiftKey) || (key === 'y' && !event.shiftKey);
+    const undo = key === 'z' && !event.shiftKey;
+    if (!undo && !redo) return;
+    if (isTyping(event.target)) return; // the field's own undo
+    event.preventDefault();
+    if (undo) this.undo();
+    else this.redo();
+  }
+
+  // Fields no step names any more go (a long session of strokes stays bounded).
+  private prune(): void {
+    const keep = new Set<string>([this.host.form.paint, ...this.pinned]);
+    for (const p of this.host.solvedChain() ?? []) keep.add(p.paint);
+    for (const step of this.history.all) {
+      for (const key of paintKeys(step.params, step.chain ?? [])) keep.add(key);
+    }
+    for (const key of [...this.fields.keys()]) if (!keep.has(key)) this.fields.delete(key);
+  }
+}
+
+function isTyping(target: EventTarget | null): boolean {
+  if (target instanceof HTMLTextAreaElement || target instanceof HTMLSelectElement) return true;
+  if (target instanceof HTMLElement && target.isContentEditable) return true;
+  return target instanceof HTMLInputElement && !['checkbox', 'radio', 'range', 'button', 'submit', 'reset', 'file', 'color'].includes(target.type);
+}
