@@ -58,7 +58,8 @@ std::string Session::load_surfaces(const std::string& name, const std::string& s
       throw InputError(name + ": " + e.what());
     }
     TriMesh soup = soup_from_arrays(name, positions, indices);
-    if (set.surfaces.empty() && soup.triangles.empty()) throw InputError(name + ": no surfaces and no triangles to load");
+    if (set.surfaces.empty() && soup.triangles.empty())
+      throw InputError(name + ": no surfaces and no triangles to load");
     double edge = set.edge_length;
     if (!set.surfaces.empty() && !(edge > 0.0)) {
       // One edge length for every surface, so neighbours come out alike: the triangle budget
@@ -76,7 +77,8 @@ std::string Session::load_surfaces(const std::string& name, const std::string& s
       const SurfaceTessellation t = tessellate_nurbs(s.surface, options, s.name);
       const int base = soup.num_vertices();
       soup.positions.insert(soup.positions.end(), t.mesh.positions.begin(), t.mesh.positions.end());
-      for (const Triangle& tri : t.mesh.triangles) soup.triangles.push_back({tri[0] + base, tri[1] + base, tri[2] + base});
+      for (const Triangle& tri : t.mesh.triangles)
+        soup.triangles.push_back({tri[0] + base, tri[1] + base, tri[2] + base});
       stats.push_back({s.name, t.mesh.num_faces(), t.samples_u, t.samples_v, t.seam_vertices_welded});
     }
     CleanOptions clean;

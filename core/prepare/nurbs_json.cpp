@@ -48,14 +48,25 @@ NamedSurface surface(const JsonValue& v, size_t index) {
                   *pts = nullptr, *w = nullptr;
   for (const auto& [key, value] : v.object) {
     if (key == "name") continue;
-    const JsonValue** slot = key == "degreeU" ? &du : key == "degreeV" ? &dv : key == "countU" ? &cu
-                            : key == "countV" ? &cv : key == "knotsU"  ? &ku : key == "knotsV" ? &kv
-                            : key == "points" ? &pts : key == "weights" ? &w : nullptr;
+    const JsonValue** slot = key == "degreeU"   ? &du
+                             : key == "degreeV" ? &dv
+                             : key == "countU"  ? &cu
+                             : key == "countV"  ? &cv
+                             : key == "knotsU"  ? &ku
+                             : key == "knotsV"  ? &kv
+                             : key == "points"  ? &pts
+                             : key == "weights" ? &w
+                                                : nullptr;
     if (!slot) throw InputError(n + ": unknown key '" + key + "'");
     *slot = &value;
   }
-  for (const auto& [ptr, key] : std::initializer_list<std::pair<const JsonValue*, const char*>>{{du, "degreeU"}, {dv, "degreeV"}, {cu, "countU"}, {cv, "countV"},
-                                 {ku, "knotsU"}, {kv, "knotsV"}, {pts, "points"}})
+  for (const auto& [ptr, key] : std::initializer_list<std::pair<const JsonValue*, const char*>>{{du, "degreeU"},
+                                                                                                {dv, "degreeV"},
+                                                                                                {cu, "countU"},
+                                                                                                {cv, "countV"},
+                                                                                                {ku, "knotsU"},
+                                                                                                {kv, "knotsV"},
+                                                                                                {pts, "points"}})
     if (!ptr) throw InputError(n + ": '" + key + "' is missing");
   NurbsSurface s;
   s.degree_u = integer(*du, n + " 'degreeU'", 1, kMaxNurbsDegree);

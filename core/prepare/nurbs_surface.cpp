@@ -12,8 +12,7 @@ namespace ff {
 namespace {
 
 // Textbook knots (count + degree + 1) from either convention; throws naming `what`.
-std::vector<double> textbook_knots(const std::vector<double>& knots, int count, int degree,
-                                   const std::string& what) {
+std::vector<double> textbook_knots(const std::vector<double>& knots, int count, int degree, const std::string& what) {
   const size_t rhino = static_cast<size_t>(count + degree - 1);
   const size_t textbook = static_cast<size_t>(count + degree + 1);
   for (size_t k = 0; k < knots.size(); ++k)
@@ -42,7 +41,7 @@ std::vector<double> textbook_knots(const std::vector<double>& knots, int count, 
   for (size_t k = 0; k < out.size();) {
     size_t e = k;
     while (e < out.size() && out[e] == out[k]) ++e;
-    if (out[k] > lo && out[k] < hi && static_cast<int>(e - k) > degree)
+    if (out[k] > lo && out[k]<hi&& static_cast<int>(e - k)> degree)
       throw InputError(what + " knot " + std::to_string(out[k]) + " is repeated " + std::to_string(e - k) +
                        " times, more than the degree (the surface would be torn there)");
     k = e;
@@ -81,8 +80,8 @@ void basis_and_derivative(const std::vector<double>& U, int span, int p, double 
       // Lower triangle: knot differences; upper: basis functions.
       ndu[static_cast<size_t>(j)][static_cast<size_t>(r)] =
           right[static_cast<size_t>(r + 1)] + left[static_cast<size_t>(j - r)];
-      const double temp = ndu[static_cast<size_t>(r)][static_cast<size_t>(j - 1)] /
-                          ndu[static_cast<size_t>(j)][static_cast<size_t>(r)];
+      const double temp =
+          ndu[static_cast<size_t>(r)][static_cast<size_t>(j - 1)] / ndu[static_cast<size_t>(j)][static_cast<size_t>(r)];
       ndu[static_cast<size_t>(r)][static_cast<size_t>(j)] = saved + right[static_cast<size_t>(r + 1)] * temp;
       saved = left[static_cast<size_t>(j - r)] * temp;
     }
@@ -96,7 +95,8 @@ void basis_and_derivative(const std::vector<double>& U, int span, int p, double 
       d += ndu[static_cast<size_t>(r - 1)][static_cast<size_t>(p - 1)] /
            ndu[static_cast<size_t>(p)][static_cast<size_t>(r - 1)];
     if (r <= p - 1)
-      d -= ndu[static_cast<size_t>(r)][static_cast<size_t>(p - 1)] / ndu[static_cast<size_t>(p)][static_cast<size_t>(r)];
+      d -=
+          ndu[static_cast<size_t>(r)][static_cast<size_t>(p - 1)] / ndu[static_cast<size_t>(p)][static_cast<size_t>(r)];
     dN[r] = p * d;
   }
 }
@@ -104,15 +104,15 @@ void basis_and_derivative(const std::vector<double>& U, int span, int p, double 
 }  // namespace
 
 NurbsSurface validate_nurbs(const NurbsSurface& s, const std::string& name) {
-  for (const auto& [degree, count, dir] : {std::tuple{s.degree_u, s.count_u, "u"}, std::tuple{s.degree_v, s.count_v, "v"}}) {
+  for (const auto& [degree, count, dir] :
+       {std::tuple{s.degree_u, s.count_u, "u"}, std::tuple{s.degree_v, s.count_v, "v"}}) {
     if (degree < 1 || degree > kMaxNurbsDegree)
       throw InputError(name + ": degree " + std::to_string(degree) + " in " + dir + " is not between 1 and " +
                        std::to_string(kMaxNurbsDegree));
     if (count < degree + 1)
-      throw InputError(name + ": " + std::to_string(count) + " control points in " + dir +
-                       " are too few for degree " + std::to_string(degree));
-    if (count > kMaxNurbsControlPoints)
-      throw InputError(name + ": too many control points in " + dir);
+      throw InputError(name + ": " + std::to_string(count) + " control points in " + dir + " are too few for degree " +
+                       std::to_string(degree));
+    if (count > kMaxNurbsControlPoints) throw InputError(name + ": too many control points in " + dir);
   }
   if (static_cast<long long>(s.count_u) * s.count_v > kMaxNurbsControlPoints)
     throw InputError(name + ": " + std::to_string(static_cast<long long>(s.count_u) * s.count_v) +
@@ -122,7 +122,8 @@ NurbsSurface validate_nurbs(const NurbsSurface& s, const std::string& name) {
     throw InputError(name + ": " + std::to_string(s.points.size()) + " control points given, " +
                      std::to_string(s.count_u) + " x " + std::to_string(s.count_v) + " expected");
   if (!s.weights.empty() && s.weights.size() != n)
-    throw InputError(name + ": " + std::to_string(s.weights.size()) + " weights for " + std::to_string(n) + " control points");
+    throw InputError(name + ": " + std::to_string(s.weights.size()) + " weights for " + std::to_string(n) +
+                     " control points");
   NurbsSurface out = s;
   out.knots_u = textbook_knots(s.knots_u, s.count_u, s.degree_u, name + ": u");
   out.knots_v = textbook_knots(s.knots_v, s.count_v, s.degree_v, name + ": v");
@@ -165,7 +166,8 @@ NurbsPoint evaluate_nurbs(const NurbsSurface& s, double u, double v) {
   double W = 0.0, Wu = 0.0, Wv = 0.0;
   for (int k = 0; k <= pu; ++k) {
     for (int l = 0; l <= pv; ++l) {
-      const size_t idx = static_cast<size_t>(su - pu + k) * static_cast<size_t>(s.count_v) + static_cast<size_t>(sv - pv + l);
+      const size_t idx =
+          static_cast<size_t>(su - pu + k) * static_cast<size_t>(s.count_v) + static_cast<size_t>(sv - pv + l);
       const double w = s.weights[idx];
       const Vec3 wp = w * s.points[idx];
       const double b = Nu[static_cast<size_t>(k)] * Nv[static_cast<size_t>(l)];

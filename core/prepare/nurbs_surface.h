@@ -28,7 +28,7 @@ struct NurbsSurface {
 };
 
 // Limits of what the page and the CLI accept (a hostile file must not exhaust memory).
-inline constexpr int kMaxNurbsDegree = 11;           // openNURBS's practical maximum
+inline constexpr int kMaxNurbsDegree = 11;              // openNURBS's practical maximum
 inline constexpr int kMaxNurbsControlPoints = 1 << 20;  // per surface
 
 // Checks `s` and returns it with textbook knot vectors and explicit weights. Throws

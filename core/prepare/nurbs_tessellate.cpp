@@ -106,7 +106,8 @@ SurfaceTessellation tessellate_nurbs(const NurbsSurface& s, const TessellationOp
   for (int i = 0; i < rows; ++i)
     for (int j = 0; j < cols; ++j)
       if (i == 0 || j == 0 || i == rows - 1 || j == cols - 1) border.push_back(id(i, j));
-  std::stable_sort(border.begin(), border.end(), [&](int a, int b) { return grid[size_t(a)].x() < grid[size_t(b)].x(); });
+  std::stable_sort(border.begin(), border.end(),
+                   [&](int a, int b) { return grid[size_t(a)].x() < grid[size_t(b)].x(); });
   std::vector<int> rep(grid.size());
   std::iota(rep.begin(), rep.end(), 0);
   for (size_t a = 0; a < border.size(); ++a) {

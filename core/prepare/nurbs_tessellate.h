@@ -20,7 +20,7 @@ struct TessellationOptions {
 };
 
 struct SurfaceTessellation {
-  TriMesh mesh;     // oriented like the surface (normals along dS/du x dS/dv)
+  TriMesh mesh;       // oriented like the surface (normals along dS/du x dS/dv)
   int samples_u = 0;  // grid intervals along u and v
   int samples_v = 0;
   int seam_vertices_welded = 0;  // grid-border points merged with a coincident one

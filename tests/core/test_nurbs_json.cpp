@@ -47,9 +47,11 @@ TEST(NurbsJson, RefusesBadDescriptionsByName) {
   EXPECT_EQ(error_of(R"({"surfaces": [], "x": 1})"), "unknown key 'x' in the surface description");
   EXPECT_NE(error_of("[1, 2"), "");
   std::string points = "[0, 0, 0, 0, 1, 0, 1, 0, 0, 1, 1]";
-  EXPECT_EQ(error_of(R"({"surfaces": [{"name": "R", "degreeU": 1, "degreeV": 1, "countU": 2, "countV": 2, "knotsU": [0, 1], "knotsV": [0, 1], "points": )" +
-                     points + "}]}"),
-            "'R': 'points' must hold x, y, z triples");
+  EXPECT_EQ(
+      error_of(
+          R"({"surfaces": [{"name": "R", "degreeU": 1, "degreeV": 1, "countU": 2, "countV": 2, "knotsU": [0, 1], "knotsV": [0, 1], "points": )" +
+          points + "}]}"),
+      "'R': 'points' must hold x, y, z triples");
 }
 
 }  // namespace

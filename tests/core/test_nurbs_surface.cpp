@@ -56,7 +56,8 @@ NurbsSurface full_cylinder(double r, double h) {
   s.knots_u = {0, 0, 1, 1, 2, 2, 3, 3, 4, 4};  // Rhino convention
   s.knots_v = {0, 1};
   const double c = std::sqrt(0.5);
-  const Vec3 ring[9] = {{r, 0, 0}, {r, r, 0}, {0, r, 0}, {-r, r, 0}, {-r, 0, 0}, {-r, -r, 0}, {0, -r, 0}, {r, -r, 0}, {r, 0, 0}};
+  const Vec3 ring[9] = {{r, 0, 0},   {r, r, 0},  {0, r, 0},  {-r, r, 0}, {-r, 0, 0},
+                        {-r, -r, 0}, {0, -r, 0}, {r, -r, 0}, {r, 0, 0}};
   const double w[9] = {1, c, 1, c, 1, c, 1, c, 1};
   for (int i = 0; i < 9; ++i)
     for (int j = 0; j < 2; ++j) {
@@ -161,9 +162,11 @@ TEST(NurbsSurface, BadInputsAreRejectedByName) {
   EXPECT_NE(with([](NurbsSurface& t) { t.knots_u.pop_back(); }).find("Roof: u has 7 knots"), std::string::npos);
   EXPECT_NE(with([](NurbsSurface& t) { t.knots_v[2] = -1; }).find("Roof: v knots decrease"), std::string::npos);
   EXPECT_NE(with([](NurbsSurface& t) { t.knots_u[3] = NAN; }).find("not finite"), std::string::npos);
-  EXPECT_NE(with([](NurbsSurface& t) { t.weights[4] = 0.0; }).find("Roof: weight 4 is not positive"), std::string::npos);
+  EXPECT_NE(with([](NurbsSurface& t) { t.weights[4] = 0.0; }).find("Roof: weight 4 is not positive"),
+            std::string::npos);
   EXPECT_NE(with([](NurbsSurface& t) { t.weights[1] = INFINITY; }).find("weight 1"), std::string::npos);
-  EXPECT_NE(with([](NurbsSurface& t) { t.points[3].y() = NAN; }).find("control point 3 is not finite"), std::string::npos);
+  EXPECT_NE(with([](NurbsSurface& t) { t.points[3].y() = NAN; }).find("control point 3 is not finite"),
+            std::string::npos);
   EXPECT_NE(with([](NurbsSurface& t) { t.degree_u = 0; }).find("degree 0 in u"), std::string::npos);
   EXPECT_NE(with([](NurbsSurface& t) { t.degree_v = 12; }).find("degree 12 in v"), std::string::npos);
   EXPECT_NE(with([](NurbsSurface& t) { t.degree_u = 5; }).find("too few for degree 5"), std::string::npos);
@@ -176,9 +179,7 @@ TEST(NurbsSurface, BadInputsAreRejectedByName) {
   torn.knots_u = {0, 1, 1, 2};
   torn.points.insert(torn.points.end(), {Vec3(2, 0, 0), Vec3(2, 1, 0), Vec3(3, 0, 0), Vec3(3, 1, 0)});
   EXPECT_NE(error_of(torn).find("Roof: u knot 1.000000 is repeated 2 times"), std::string::npos) << error_of(torn);
-  EXPECT_NE(with([](NurbsSurface& t) {
-              t.count_u = t.count_v = 2000;
-            }).find("more than this page takes"),
+  EXPECT_NE(with([](NurbsSurface& t) { t.count_u = t.count_v = 2000; }).find("more than this page takes"),
             std::string::npos);
 }
 
