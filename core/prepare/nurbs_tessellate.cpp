@@ -78,9 +78,11 @@ SurfaceTessellation tessellate_nurbs(const NurbsSurface& s, const TessellationOp
   if (!(o.chord_tolerance > 0.0) || !std::isfinite(o.chord_tolerance)) o.chord_tolerance = o.edge_length / 20.0;
   const std::vector<int> nu = span_samples(s, true, o), nv = span_samples(s, false, o);
   const long long cu = std::accumulate(nu.begin(), nu.end(), 0LL), cv = std::accumulate(nv.begin(), nv.end(), 0LL);
-  if (2 * cu * cv > o.max_triangles)
-    throw InputError(name + ": tessellating at edge length " + std::to_string(o.edge_length) + " would make " +
-                     std::to_string(2 * cu * cv) + " triangles, more than " + std::to_string(o.max_triangles));
+  // cu and cv first: their product could overflow.
+  if (cu > o.max_triangles || cv > o.max_triangles || 2 * cu * cv > o.max_triangles)
+    throw InputError(name + ": tessellating at edge length " + std::to_string(o.edge_length) +
+                     " would make more than " + std::to_string(o.max_triangles) + " triangles (" + std::to_string(cu) +
+                     " x " + std::to_string(cv) + " grid)");
   const std::vector<double> us = parameters(nurbs_breaks(s, true), nu);
   const std::vector<double> vs = parameters(nurbs_breaks(s, false), nv);
   const int rows = static_cast<int>(us.size()), cols = static_cast<int>(vs.size());
