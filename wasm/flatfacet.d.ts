@@ -66,7 +66,7 @@ export interface SpreadNodes extends Status {
 // points[3 * (i * countV + j) ..] (i along u), Euclidean (not multiplied by its weight). Knots in
 // either convention: Rhino's countU + degreeU - 1, or the textbook countU + degreeU + 1.
 export interface SurfaceDescription {
-  name?: string; // named in messages ("'Vault' ...")
+  name?: string; // as used in messages and the note, e.g. "'Vault'", "face 2 of 'Tank'"; default "surface <k>"
   degreeU: number; // 1 .. 11
   degreeV: number;
   countU: number;
@@ -86,7 +86,7 @@ export interface SurfaceSet {
 
 export interface SurfacesInfo extends MeshInfo {
   edgeLength: number; // the tessellation's target edge length
-  // Per surface, in order: the label used in messages ("'Vault'" or "surface 2"), its triangles
+  // Per surface, in order: its name as given (or "surface 2"), its triangles
   // (before the joint clean-up), grid intervals along u / v, border points merged (seam, pole).
   surfaces: { name: string; triangles: number; samplesU: number; samplesV: number; seamWelded: number }[];
 }

@@ -93,6 +93,7 @@ std::string Session::load_surfaces(const std::string& name, const std::string& s
       j.value("samplesU", s.samples_u).value("samplesV", s.samples_v).value("seamWelded", s.seam_welded).end_object();
     }
     j.end_array().end_object();
+    while (!info.empty() && info.back() != '}') info.pop_back();  // the writer ends with a newline
     info.pop_back();
     info += "," + j.str().substr(1);
     return info;

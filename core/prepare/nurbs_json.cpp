@@ -41,7 +41,7 @@ NamedSurface surface(const JsonValue& v, size_t index) {
   if (const JsonValue* name = v.find("name")) {
     if (name->type != Type::String || name->string.size() > 200)
       throw InputError(where + " 'name' must be a string of at most 200 bytes");
-    if (!name->string.empty()) out.name = "'" + name->string + "'";
+    if (!name->string.empty()) out.name = name->string;  // as given: the page quotes object names
   }
   const std::string& n = out.name;
   const JsonValue *du = nullptr, *dv = nullptr, *cu = nullptr, *cv = nullptr, *ku = nullptr, *kv = nullptr,

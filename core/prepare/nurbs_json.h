@@ -8,7 +8,7 @@
 //   {"targetTriangles": 30000,          optional, 100 .. 2e6: picks the edge length
 //    "edgeLength": 0.05,                optional, > 0: overrides targetTriangles
 //    "weldTolerance": 0.001,            optional, >= 0: joins surfaces and meshes closer than it
-//    "surfaces": [{"name": "Vault", "degreeU": 2, "degreeV": 1, "countU": 9, "countV": 2,
+//    "surfaces": [{"name": "'Vault'", "degreeU": 2, "degreeV": 1, "countU": 9, "countV": 2,
 //                  "knotsU": [...], "knotsV": [...],        either knot convention
 //                  "points": [x, y, z, ...],                 countU * countV, (i, j) at i * countV + j
 //                  "weights": [...]}]}                       optional, one per point
@@ -21,7 +21,7 @@
 namespace ff {
 
 struct NamedSurface {
-  std::string name;
+  std::string name;      // as given (the page sends "'Vault'", "face 2 of 'Tank'"), else "surface <k>"
   NurbsSurface surface;  // validated
 };
 

@@ -9,7 +9,7 @@ namespace ff {
 namespace {
 
 const std::string kPatch =
-    R"({"name": "Roof", "degreeU": 1, "degreeV": 1, "countU": 2, "countV": 2, "knotsU": [0, 1], "knotsV": [0, 1],)"
+    R"({"name": "'Roof'", "degreeU": 1, "degreeV": 1, "countU": 2, "countV": 2, "knotsU": [0, 1], "knotsV": [0, 1],)"
     R"( "points": [0, 0, 0, 0, 1, 0, 1, 0, 0, 1, 1, 1])";
 
 std::string error_of(const std::string& json) {
@@ -51,7 +51,7 @@ TEST(NurbsJson, RefusesBadDescriptionsByName) {
       error_of(
           R"({"surfaces": [{"name": "R", "degreeU": 1, "degreeV": 1, "countU": 2, "countV": 2, "knotsU": [0, 1], "knotsV": [0, 1], "points": )" +
           points + "}]}"),
-      "'R': 'points' must hold x, y, z triples");
+      "R: 'points' must hold x, y, z triples");
 }
 
 }  // namespace

@@ -11,6 +11,7 @@ import { FabricationPanel } from './fabricationPanel.ts';
 import { describeDesign, findExample } from './examples.ts';
 import { payloadFromExample, payloadFromFile } from './meshFiles.ts';
 import { Outputs } from './outputs.ts';
+import { rhinoLoaded } from './rhino/rhinoOpen.ts';
 import { toRemeshParams, type DesignParams } from './params.ts';
 import { ParamsForm } from './paramsForm.ts';
 import type { SolveResult, WorkerResponse } from './protocol.ts';
@@ -177,6 +178,7 @@ export class App {
     const opening = loaded.info;
     this.viewer.setSurface(positions, indices, opening.up === 'guess' ? guessUpAxis(positions) : opening.up);
     showMeshInfo(loaded.mesh.label, loaded.mesh.info);
+    rhinoLoaded(loaded.mesh.fileName, loaded.mesh.info);
     renderStats(this.statsBox, null);
     this.fabrication.panelsChanged(false);
     this.updateButtons();
