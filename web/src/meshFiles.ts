@@ -6,6 +6,7 @@ import { LoadingManager, Mesh, Vector3, type BufferGeometry, type Object3D } fro
 import type { Example } from './examples.ts';
 import { failure, type Checked } from './params.ts';
 import type { MeshPayload } from './protocol.ts';
+import { rhinoPayload } from './rhino/rhinoOpen.ts';
 
 const GLTF_EXTENSIONS = ['gltf', 'glb'];
 export const ACCEPTED_EXTENSIONS = ['obj', 'off', 'stl', 'ply', ...GLTF_EXTENSIONS, '3dm'];
@@ -17,8 +18,8 @@ export function extensionOf(name: string): string {
 
 export async function payloadFromFile(name: string, bytes: Uint8Array): Promise<Checked<MeshPayload>> {
   if (GLTF_EXTENSIONS.includes(extensionOf(name))) return gltfPayload(name, bytes);
-  // Rhino: parsed on the page by rhino3dm, loaded only now (web/src/rhino/).
-  if (extensionOf(name) === '3dm') return (await import('./rhino/rhinoOpen.ts')).rhinoPayload(name, bytes);
+  // Rhino: parsed on the page by rhino3dm, itself loaded on the first .3dm (web/src/rhino/).
+  if (extensionOf(name) === '3dm') return rhinoPayload(name, bytes);
   // Anything else goes to the core, which reads by extension or else by content and names
   // the problem when it cannot.
   return { ok: true, value: { kind: 'bytes', name, bytes } };
