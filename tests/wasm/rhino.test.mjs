@@ -193,3 +193,39 @@ test('a bad surface description is refused by name and the previous mesh stays',
   assert.equal(s.inputIndices().length, 3 * info.triangles);
   s.delete();
 });
+
+test("the core evaluates a rational, unclamped Rhino surface where rhino3dm's own pointAt does", () => {
+  // Degree 3 x 2, uneven weights, uniform unclamped knots in u (Rhino's count + degree - 1).
+  const surface = rh.NurbsSurface.create(3, true, 4, 3, 7, 5);
+  for (let i = 0; i < 7; i++)
+    for (let j = 0; j < 5; j++) {
+      const w = 0.5 + ((i * 3 + j * 7) % 5) / 4;
+      surface.points().set(i, j, [i * w, j * w, Math.sin(i + j) * w, w]);
+    }
+  for (let k = 0; k < 9; k++) surface.knotsU().set(k, k);
+  [0, 0, 1, 2, 3, 3].forEach((knot, k) => surface.knotsV().set(k, knot));
+  const file = new rh.File3dm();
+  file.objects().add(surface, attributes('Shell'));
+  const back = rh.File3dm.fromByteArray(file.toByteArray());
+  const prepared = prepareRhino(rh, back, 'shell.3dm', 0, 8000);
+  assert.equal(prepared.ok, true, prepared.message);
+  // One sample per knot span: the grid's points are the surface at the knots.
+  const set = { ...prepared.value.set, edgeLength: 1e6 };
+  delete set.targetTriangles;
+  const s = new ff.Session();
+  const info = json(s.loadSurfaces('shell.3dm', JSON.stringify(set), new Float64Array(0), new Uint32Array(0)));
+  assert.equal(info.ok, true, info.message);
+  assert.deepEqual([info.surfaces[0].samplesU, info.surfaces[0].samplesV], [4, 3]);
+  const p = s.inputPositions();
+  const shell = back.objects().get(0).geometry();
+  const [u0, u1] = [shell.domain(0)[0], shell.domain(0)[1]];
+  assert.deepEqual([u0, u1], [2, 6]);
+  for (let u = 2; u <= 6; u++)
+    for (const v of [0, 1, 2, 3]) {
+      const expected = shell.pointAt(u, v);
+      let best = Infinity;
+      for (let i = 0; i < p.length; i += 3) best = Math.min(best, Math.hypot(p[i] - expected[0], p[i + 1] - expected[1], p[i + 2] - expected[2]));
+      assert.ok(best < 1e-5, `(${u}, ${v}): nearest vertex ${best} from rhino3dm's point`);
+    }
+  s.delete();
+});
