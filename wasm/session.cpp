@@ -60,9 +60,9 @@ const char* display_stage(Stage stage) {
 Session::Session() = default;
 Session::~Session() = default;
 
-std::string Session::load(const std::string& name, TriMesh raw, int input_triangles) {
+std::string Session::load(const std::string& name, TriMesh raw, int input_triangles, const CleanOptions& clean_options) {
   const auto t0 = Clock::now();
-  CleanMesh clean = clean_mesh(raw);
+  CleanMesh clean = clean_mesh(raw, clean_options);
   MeshTopology topology = build_topology(clean.mesh);
   // Everything built: only now replace the previous design.
   name_ = name;

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "core/fabricate/fabrication_params_json.h"
+#include "core/mesh/clean.h"
 #include "core/mesh/topology.h"
 #include "core/mesh/tri_mesh.h"
 #include "core/quality/report.h"
@@ -36,6 +37,12 @@ class Session {
   std::string load_arrays(const std::string& name, const std::vector<double>& positions,
                           const std::vector<std::uint32_t>& indices);
   std::string load_shape(const std::string& name, int triangles);
+  // NURBS surfaces (SurfaceSet JSON, core/prepare/nurbs_json.h) tessellated in the core, plus a
+  // triangle soup (meshes, render meshes of trimmed faces) loaded with them, welded within the
+  // set's weldTolerance (wasm/session_surface.cpp). MeshInfo JSON with "edgeLength" and
+  // "surfaces": [{"name", "triangles", "samplesU", "samplesV", "seamWelded"}].
+  std::string load_surfaces(const std::string& name, const std::string& surfaces_json,
+                            const std::vector<double>& positions, const std::vector<std::uint32_t>& indices);
   // Status JSON. Warm-starts a solve under way or finished (Remesher::set_params). The
   // density field (set_density) stays as it is.
   std::string set_params(const std::string& params_json);
@@ -88,7 +95,7 @@ class Session {
   struct Timings {
     double cluster = 0.0, panels = 0.0, quality = 0.0;
   };
-  std::string load(const std::string& name, TriMesh raw, int input_triangles);
+  std::string load(const std::string& name, TriMesh raw, int input_triangles, const CleanOptions& clean_options = {});
   const QualityReport* quality();
   void forget_result();
 
