@@ -89,5 +89,10 @@ EMSCRIPTEN_BINDINGS(flatfacet) {
       .function("solidObj", &Session::solid_obj)
       .function(
           "innerPositions", +[](const Session& s) { return to_typed_array(s.inner_positions(), "Float64Array"); })
-      .function("spreadNodes", &Session::spread_nodes);
+      .function("spreadNodes", &Session::spread_nodes)
+      .function("panelOfFace", &Session::panel_of_face)
+      .function("panelFace", &Session::panel_face)
+      .function(
+          "lockedPanels", +[](const Session& s) { return to_typed_array(s.locked_panels(), "Int32Array"); })
+      .function("panelCount", &Session::panel_count);
 }

@@ -38,7 +38,19 @@ export interface RemeshParams {
   densityExpression?: string;
   // Panels stretched along a direction (stretch 1..10).
   anisotropy?: { direction: 'none' | 'x' | 'y' | 'z' | 'maxCurvature' | 'minCurvature'; stretch: number };
+  // Per-panel edits, applied in order to the solved design (at most 10000); panels are named
+  // by a cleaned triangle inside them. A setParams that changes only `edits` edits the design
+  // in place: more edits apply to it, a shorter or different list (undo / redo) replays from
+  // the design before the first edit. Locked panels keep their triangles, plane and outline
+  // through later re-solves (panel count, weights). A failing edit leaves the previous result.
+  edits?: PanelEdit[];
 }
+
+export type PanelEdit =
+  | { op: 'split'; face: number }
+  | { op: 'merge'; face: number; with: number } // `with`: a triangle of a neighbouring panel
+  | { op: 'lock'; face: number }
+  | { op: 'unlock'; face: number };
 
 export type LengthUnitName = 'mm' | 'cm' | 'm' | 'in' | 'ft';
 
@@ -147,6 +159,14 @@ export interface Session {
   inputIndices(): Uint32Array; // 3 per triangle
   // Per cleaned triangle: its cluster (-1 unassigned), valid after any step.
   clusterIds(): Int32Array;
+  // Per-panel edits (see RemeshParams.edits): the panel (cluster id, as in clusterIds) of a
+  // cleaned triangle, -1 when out of range or before clustering; a triangle inside a panel
+  // (to name it in an edit), -1 when out of range; the locked panels' ids, sorted; the number
+  // of panels now (the requested count plus splits minus merges; 0 before clustering).
+  panelOfFace(face: number): number;
+  panelFace(panel: number): number;
+  lockedPanels(): Int32Array;
+  panelCount(): number;
   // The panels (empty before the panel phase): vertices, and panel i's vertex indices are
   // panelIndices[panelOffsets[i] .. panelOffsets[i+1]).
   panelPositions(): Float64Array;

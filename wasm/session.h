@@ -91,6 +91,15 @@ class Session {
   // (mesh units), "spread" (designer's units), "panels"}]}.
   std::string spread_nodes() const;
 
+  // Per-panel edits (wasm/session_edits.cpp; they arrive in set_params' `edits`). The panel
+  // (cluster) of a cleaned triangle, -1 when out of range or before clustering; a face inside
+  // a panel (to name it in an edit), -1 when out of range; the locked panels, sorted; the
+  // number of panels now (the requested count plus splits minus merges; 0 before clustering).
+  int panel_of_face(int face) const;
+  int panel_face(int panel) const;
+  std::vector<std::int32_t> locked_panels() const;
+  int panel_count() const;
+
  private:
   struct Timings {
     double cluster = 0.0, panels = 0.0, quality = 0.0;
@@ -98,6 +107,10 @@ class Session {
   std::string load(const std::string& name, TriMesh raw, int input_triangles, const CleanOptions& clean_options = {});
   const QualityReport* quality();
   void forget_result();
+  // Edits (session_edits.cpp): what set_params compares to tell an edit from a new solve
+  // (the parameters' JSON without `edits`, canonical), and the edit-only path.
+  static std::string solve_key(const std::string& params_json);
+  bool apply_edits_only(const std::string& key, const RemeshParams& params);
 
   std::string name_;
   TriMesh mesh_;  // cleaned
@@ -109,6 +122,7 @@ class Session {
   std::optional<QualityReport> quality_;  // of the current panels, measured on demand
   Timings timings_;                       // of the solve since the last load or parameter change
   double prepare_seconds_ = 0.0;          // cleaning + topology of the loaded mesh
+  std::string solve_key_;                 // solve_key() of the last accepted parameters
 };
 
 }  // namespace ff::wasm

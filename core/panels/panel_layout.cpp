@@ -42,6 +42,7 @@ PanelLayout::PanelLayout(const TriMesh& mesh, const MeshTopology& topology, cons
   const size_t groups = groups_.groups.size();
   const size_t clusters = graph_.problems.size();
   pairing_.resize(groups);
+  held_group_.assign(groups, 0);
   single_.assign(groups, 0);
   single_point_.assign(groups, Vec3::Zero());
   node_offset_.assign(groups + 1, 0);
@@ -66,7 +67,8 @@ PanelLayout::PanelLayout(const TriMesh& mesh, const MeshTopology& topology, cons
     } else {
       // The pairing whose nodes stay closest to where they belong (fig. 6); validation and
       // switch_pairings() correct it where it flips an edge.
-      const std::vector<Pairing> options = node_pairings(k);
+      std::vector<Pairing> options = node_pairings(k);
+      held_group_[g] = hold_pairings(group.clusters, options_.held_nodes, options);
       double best = std::numeric_limits<double>::infinity();
       Pairing chosen = options.front();  // even if every cost is infinite or NaN
       for (const Pairing& p : options) {
@@ -82,6 +84,16 @@ PanelLayout::PanelLayout(const TriMesh& mesh, const MeshTopology& topology, cons
   polygons_.resize(clusters);
   issues_.resize(clusters);
   for (size_t c = 0; c < clusters; ++c) build_panel(static_cast<int>(c));
+}
+
+std::array<int, 3> PanelLayout::node_clusters(int node) const {
+  const int g = node_group_[static_cast<size_t>(node)];
+  const NodeGroup& group = groups_.groups[static_cast<size_t>(g)];
+  const NodeTriangle& tri = pairing_[static_cast<size_t>(g)][static_cast<size_t>(node - node_offset_[static_cast<size_t>(g)])];
+  std::array<int, 3> out;
+  for (int t = 0; t < 3; ++t) out[static_cast<size_t>(t)] = group.clusters[static_cast<size_t>(tri[static_cast<size_t>(t)])];
+  std::sort(out.begin(), out.end());
+  return out;
 }
 
 int PanelLayout::num_invalid() const {
