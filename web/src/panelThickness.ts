@@ -11,7 +11,7 @@ const CLICK_SLOP = 5; // px a pointer may move between down and up and still be 
 
 export class PanelThicknessControl {
   private readonly input = element('fab-panel-thickness', HTMLInputElement);
-  private readonly selectedText = element('fab-selected-panel', HTMLSpanElement);
+  private readonly selectedText = element('fab-selected-panel', HTMLParagraphElement);
   private selected: { panel: number; label: string } | null = null;
   private labels: string[] | null = null; // per panel, from the parts list of `result`
   private result: FabricationResult | null = null;
@@ -83,12 +83,12 @@ export class PanelThicknessControl {
     this.input.disabled = this.selected === null;
     if (!this.selected) {
       this.input.value = '';
-      this.selectedText.textContent = `click a panel${others}`;
+      this.selectedText.textContent = `click a panel in the view to give it its own thickness${others}`;
       return;
     }
     const own = this.values[this.selected.label];
     this.input.value = own === undefined ? '' : String(own);
     this.input.placeholder = 'common';
-    this.selectedText.textContent = `${this.selected.label}${own === undefined ? '' : ` (${own} ${this.units})`}${others}`;
+    this.selectedText.textContent = `selected ${this.selected.label}${own === undefined ? ' (common thickness)' : ` (${own} ${this.units})`}${others}`;
   }
 }
