@@ -204,7 +204,7 @@ test('glass mode gives convex panels; a minimum corner angle marks the acute cor
     assert.ok(plain.faces.length > 0);
   }));
 
-test('a clicked panel gets its own thickness: in the parts list and in a share link', () =>
+test('a clicked panel gets its own thickness, boundary edges a bevel: in the parts list and in a share link', () =>
   withPage(server.url, async (page) => {
     await saddle(page, 30);
     await setThickness(page, 20);
@@ -228,6 +228,15 @@ test('a clicked panel gets its own thickness: in the parts list and in a share l
     await page.getByLabel('Show thick panels').check();
     await page.waitForTimeout(300);
     await screenshot(page, 'saddle-30-one-panel-35mm');
+    // Boundary edges bevelled 15 degrees from square; the interior chamfers stay.
+    await fabricatedAfter(page, () => page.getByLabel('Boundary edges').selectOption('bevel'));
+    await fabricatedAfter(page, async () => {
+      await page.getByLabel('Boundary bevel (degrees)').fill('15');
+      await page.getByLabel('Boundary bevel (degrees)').press('Tab');
+    });
+    const bevelled = JSON.parse((await download(page, 'Parts list JSON')).text);
+    const boundary = bevelled.panels.flatMap((p) => p.edges).filter((e) => e.neighbour === null);
+    assert.ok(boundary.length > 0 && boundary.every((e) => Math.abs(e.chamfer_deg - 15) < 1e-9));
 
     await page.getByRole('button', { name: 'Copy share link' }).click();
     await page.waitForFunction(() => location.hash.startsWith('#v1='));
@@ -236,5 +245,7 @@ test('a clicked panel gets its own thickness: in the parts list and in a share l
       assert.equal(await waitForDone(opened), 30);
       const json = JSON.parse((await download(opened, 'Parts list JSON')).text);
       assert.equal(json.panels.find((p) => p.label === label).thickness, 35);
+      assert.equal(await opened.getByLabel('Boundary edges').inputValue(), 'bevel');
+      assert.ok(json.panels.flatMap((p) => p.edges).some((e) => e.neighbour === null && Math.abs(e.chamfer_deg - 15) < 1e-9));
     });
   }));
