@@ -107,6 +107,24 @@ MetricWeights parse_weights(const std::string& text) {
   return w;
 }
 
+const std::set<std::string>& subdivision_option_names() {
+  static const std::set<std::string> names = {"subdivide", "crease-angle"};
+  return names;
+}
+
+SubdivisionRequest parse_subdivision(const Args& args) {
+  SubdivisionRequest r;
+  // Each level multiplies the faces by 4; the core refuses results above its triangle cap.
+  r.levels = static_cast<int>(args.get_int("subdivide", 0, 0, 16));
+  if (args.has("crease-angle")) {
+    if (r.levels == 0) throw UsageError("--crease-angle needs --subdivide N (N >= 1)");
+    r.crease_angle_deg = parse_double(args.get("crease-angle"), "--crease-angle");
+    if (!(r.crease_angle_deg >= 0.0 && r.crease_angle_deg <= 180.0))
+      throw UsageError("--crease-angle: expected degrees between 0 and 180, got '" + args.get("crease-angle") + "'");
+  }
+  return r;
+}
+
 std::vector<double> read_numbers_file(const std::string& path, const std::string& what) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw UsageError(what + ": cannot open '" + path + "'");

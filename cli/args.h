@@ -43,6 +43,15 @@ Args parse_args(const std::vector<std::string>& argv, const std::set<std::string
 // "euclidean=1,l2=0.5" -> weights (unnamed ones keep their defaults).
 MetricWeights parse_weights(const std::string& text);
 
+// `--subdivide N [--crease-angle DEG]` (remesh): N levels of subdivision of the control mesh
+// (0: none), creases where the faces' normals differ by more than DEG (180: none).
+struct SubdivisionRequest {
+  int levels = 0;
+  double crease_angle_deg = 180.0;
+};
+const std::set<std::string>& subdivision_option_names();
+SubdivisionRequest parse_subdivision(const Args& args);
+
 // Reads numbers separated by whitespace, commas or newlines ('#' starts a comment).
 std::vector<double> read_numbers_file(const std::string& path, const std::string& what);
 

@@ -4,10 +4,20 @@
 #include <string>
 #include <vector>
 
+#include "cli/args.h"
 #include "core/mesh/clean.h"
 #include "core/mesh/mesh_io.h"
 
 namespace ff::cli {
+
+// What `--subdivide` did (levels == 0: nothing).
+struct SubdivisionInfo {
+  int levels = 0;
+  std::string scheme;  // "loop" or "catmull-clark"
+  double crease_angle_deg = 180.0;
+  int control_vertices = 0, control_faces = 0, crease_edges = 0;
+  int triangles = 0;  // out of the subdivision (its time counts in the report's prepare)
+};
 
 struct LoadedInput {
   std::string path;
@@ -15,9 +25,17 @@ struct LoadedInput {
   CleanMesh clean;
   double read_seconds = 0.0;
   double clean_seconds = 0.0;
+  SubdivisionInfo subdivision;
 };
 
 LoadedInput load_input(const std::string& path);
+
+// Replaces in.clean by the subdivided surface: the cleaned triangles merged back into the
+// file's polygons form the control mesh (Loop when all are triangles, else Catmull-Clark),
+// subdivided request.levels times, then cleaned again. The clean report stays the one of the
+// file (what was repaired in the input); face and vertex maps now refer to the subdivided
+// mesh, so per-vertex or per-face input data no longer applies. No-op for levels == 0.
+void subdivide_input(LoadedInput& in, const SubdivisionRequest& request);
 
 // A density file: one value per input vertex (or per input triangle), mapped onto the cleaned
 // mesh's vertices (or faces). Throws UsageError/InputError naming the count mismatch.

@@ -46,12 +46,14 @@ struct Options {
   std::string input, seeding, out, report;
   FabricationRequest fabrication;
   std::string density;  // a file, read once the mesh is loaded (its length is checked against it)
+  SubdivisionRequest subdivision;
 };
 
 Options parse_options(const std::vector<std::string>& argv) {
   std::set<std::string> with_value = {"panels", "seed",   "weights", "density",  "iterations",
                                       "out",    "report", "seeding", "min-angle"};
   with_value.insert(fabrication_option_names().begin(), fabrication_option_names().end());
+  with_value.insert(subdivision_option_names().begin(), subdivision_option_names().end());
   const Args args = parse_args(argv, with_value, {"single-point-nodes", "no-optimize", "no-teleport", "glass"});
   if (args.positional.size() != 1) throw UsageError("expected exactly one INPUT mesh (see flatfacet --help)");
   if (!args.has("panels")) throw UsageError("--panels N is required");
@@ -93,6 +95,9 @@ Options parse_options(const std::vector<std::string>& argv) {
     o.density = args.get("density");
     if (o.density.empty()) throw UsageError("--density: empty file name");
   }
+  o.subdivision = parse_subdivision(args);
+  // A density file holds values per input vertex or triangle; the subdivided mesh has others.
+  if (o.subdivision.levels > 0 && !o.density.empty()) throw UsageError("--density cannot be combined with --subdivide");
   return o;
 }
 
@@ -103,7 +108,8 @@ int run_remesh(const std::vector<std::string>& argv) {
   Options o = parse_options(argv);
 
   RemeshTimings timings;
-  const LoadedInput in = load_input(o.input);
+  LoadedInput in = load_input(o.input);
+  subdivide_input(in, o.subdivision);
   if (!o.density.empty()) o.params.density = load_density(o.density, in);
   const int requested = o.params.panels;
   // Building the Remesher builds the topology and the face data: part of preparing.

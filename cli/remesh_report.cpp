@@ -14,6 +14,16 @@ namespace {
 
 const char* status(const RemeshRun& run) { return panels_status(run.remesher.panels(), run.quality); }
 
+// Only when --subdivide was given, so other reports stay byte-identical.
+void write_subdivision(JsonWriter& j, const SubdivisionInfo& s) {
+  if (s.levels <= 0) return;
+  j.begin_object("subdivision");
+  j.value("scheme", s.scheme).value("levels", s.levels).value("crease_angle_deg", s.crease_angle_deg);
+  j.value("control_vertices", s.control_vertices).value("control_faces", s.control_faces);
+  j.value("crease_edges", s.crease_edges).value("triangles", s.triangles);
+  j.end_object();
+}
+
 }  // namespace
 
 std::string remesh_report_json(const RemeshRun& run) {
@@ -32,6 +42,7 @@ std::string remesh_report_json(const RemeshRun& run) {
   j.begin_array("cleanup");
   for (const std::string& m : run.input.clean.report.messages()) j.value(nullptr, m);
   j.end_array();
+  write_subdivision(j, run.input.subdivision);
 
   j.value("status", status(run));
   j.value("requested_panels", run.requested_panels);

@@ -30,7 +30,7 @@ PanelIssues check_panel(const std::vector<Vec3>& points, const std::vector<Vec3>
   const std::vector<Vec2> kernel = area > 0.0 ? polygon_kernel(polygon, tolerance) : std::vector<Vec2>{};
   issues.not_star = kernel.empty();
   const Vec2 reference = kernel.empty() ? polygon_centroid(polygon) : polygon_centroid(kernel);
-  issues.flipped = area <= 0.0 || count_flipped_edges(polygon, reference) > 0;
+  issues.flipped = area <= 0.0 || has_flipped_edge(polygon, reference);
   // Skipped when off, so the default run does no extra work and stays bit-identical.
   if (min_corner_angle_deg > 0.0) {
     const bool split = glass && !issues.not_simple && area > 0.0;

@@ -185,20 +185,25 @@ Vec2 kernel_point(const std::vector<Vec2>& ccw_polygon, double tol) {
   return polygon_centroid(kernel);
 }
 
+namespace {
+bool edge_flipped(const std::vector<Vec2>& polygon, const Vec2& reference, size_t i) {
+  return orient2d(reference, polygon[i], at(polygon, i + 1)) < 0.0;
+}
+}  // namespace
+
 std::vector<int> flipped_edges(const std::vector<Vec2>& polygon, const Vec2& reference) {
   std::vector<int> flipped;
   for (size_t i = 0; i < polygon.size(); ++i) {
-    if (orient2d(reference, polygon[i], at(polygon, i + 1)) < 0.0) flipped.push_back(static_cast<int>(i));
+    if (edge_flipped(polygon, reference, i)) flipped.push_back(static_cast<int>(i));
   }
   return flipped;
 }
 
-int count_flipped_edges(const std::vector<Vec2>& polygon, const Vec2& reference) {
-  int flipped = 0;
+bool has_flipped_edge(const std::vector<Vec2>& polygon, const Vec2& reference) {
   for (size_t i = 0; i < polygon.size(); ++i) {
-    if (orient2d(reference, polygon[i], at(polygon, i + 1)) < 0.0) ++flipped;
+    if (edge_flipped(polygon, reference, i)) return true;
   }
-  return flipped;
+  return false;
 }
 
 bool point_in_polygon(const std::vector<Vec2>& polygon, const Vec2& p) {

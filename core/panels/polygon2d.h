@@ -69,9 +69,10 @@ bool is_star_shaped(const std::vector<Vec2>& ccw_polygon, double tol);
 Vec2 kernel_point(const std::vector<Vec2>& ccw_polygon, double tol);
 
 // Edges a -> b with triangle (reference, a, b) strictly clockwise (paper fig. 6 / 7f): their
-// start indices (edge i runs from vertex i to vertex i + 1), and their number.
+// start indices (edge i runs from vertex i to vertex i + 1), and whether there is one (the
+// panel check's hot path: no allocation, stops at the first).
 std::vector<int> flipped_edges(const std::vector<Vec2>& polygon, const Vec2& reference);
-int count_flipped_edges(const std::vector<Vec2>& polygon, const Vec2& reference);
+bool has_flipped_edge(const std::vector<Vec2>& polygon, const Vec2& reference);
 
 // Even-odd rule; points exactly on the boundary may go either way.
 bool point_in_polygon(const std::vector<Vec2>& polygon, const Vec2& p);

@@ -5,6 +5,7 @@
 import { createReadStream, existsSync, readFileSync, statSync } from 'node:fs';
 import { createServer } from 'node:http';
 import { extname, join, normalize, resolve, sep } from 'node:path';
+import { after, before } from 'node:test';
 import { fileURLToPath } from 'node:url';
 import { chromium } from 'playwright-core';
 
@@ -75,6 +76,41 @@ export async function openPage(browser, url, { width = 1440, height = 900 } = {}
   }));
   await page.goto(url);
   return { context, page, errors };
+}
+
+// One server and one browser per test file (registered as node:test before/after hooks).
+// withPage gives every test a fresh context that must end with no page or console errors,
+// except those matching `allowed`; run receives (page, context).
+export function browserSuite() {
+  let server;
+  let browser;
+  before(async () => {
+    server = await startServer();
+    browser = await launchBrowser();
+  });
+  after(async () => {
+    await browser?.close();
+    await server?.close();
+  });
+  const suite = {
+    get url() {
+      return server.url;
+    },
+    get browser() {
+      return browser;
+    },
+    async withPage(url, run, { allowed = [] } = {}) {
+      const { context, page, errors } = await openPage(browser, url);
+      try {
+        await run(page, context);
+        const unexpected = errors.filter((error) => !allowed.some((pattern) => pattern.test(error)));
+        if (unexpected.length > 0) throw new Error(`page or console errors:\n${unexpected.join('\n')}`);
+      } finally {
+        await context.close();
+      }
+    },
+  };
+  return suite;
 }
 
 export const status = (page) => page.getByRole('status');

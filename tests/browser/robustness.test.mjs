@@ -3,18 +3,17 @@
 // files that point elsewhere, links too large to travel, stale link messages and hashes, the
 // stored session, and a site built without the shared example meshes.
 import assert from 'node:assert/strict';
-import { after, before, test } from 'node:test';
+import { test } from 'node:test';
 import {
+  browserSuite,
   download,
   errorAfter,
-  launchBrowser,
   openPage,
   outcomes,
   remesh,
   selectExample,
   setPanels,
   solveAfter,
-  startServer,
   statusText,
   waitForDone,
   waitForProgress,
@@ -22,29 +21,11 @@ import {
   waitForStatus,
 } from './harness.mjs';
 
-let server;
-let browser;
-before(async () => {
-  server = await startServer();
-  browser = await launchBrowser();
-});
-after(async () => {
-  await browser?.close();
-  await server?.close();
-});
-
-async function withPage(url, run, { allowed = [] } = {}) {
-  const { context, page, errors } = await openPage(browser, url);
-  try {
-    await run(page, context);
-    assert.deepEqual(errors.filter((error) => !allowed.some((pattern) => pattern.test(error))), [], 'no page or console errors');
-  } finally {
-    await context.close();
-  }
-}
+const suite = browserSuite();
+const { withPage } = suite;
 
 test('Remesh, Enter and Share are refused while a mesh opens; the new mesh solves under its own name', () =>
-  withPage(server.url, async (page) => {
+  withPage(suite.url, async (page) => {
     await waitForDone(page);
     const since = await outcomes(page);
     // In one task: pick another example, then at once press Remesh, Enter and Copy share link.
@@ -72,7 +53,7 @@ test('Remesh, Enter and Share are refused while a mesh opens; the new mesh solve
   }));
 
 test('a load overtaken by an open that fails: the page shows, and solves, the mesh the worker holds', () =>
-  withPage(server.url, async (page) => {
+  withPage(suite.url, async (page) => {
     await waitForDone(page);
     await solveAfter(page, () => selectExample(page, 'saddle'));
     await setPanels(page, 6);
@@ -111,7 +92,7 @@ test('a load overtaken by an open that fails: the page shows, and solves, the me
   }));
 
 test('a fresh solve in the same worker (resetSolve) gives the panels of the first solve', () =>
-  withPage(server.url, async (page) => {
+  withPage(suite.url, async (page) => {
     await waitForDone(page);
     await solveAfter(page, () => selectExample(page, 'groin_vault'));
     const first = (await download(page, 'Export OBJ')).text;
@@ -125,7 +106,7 @@ test('a fresh solve in the same worker (resetSolve) gives the panels of the firs
   }));
 
 test('a cancel during an earlier cancel still cancels', () =>
-  withPage(server.url, async (page) => {
+  withPage(suite.url, async (page) => {
     await waitForDone(page);
     await setPanels(page, 500);
     await remesh(page);
@@ -145,7 +126,7 @@ test('a cancel during an earlier cancel still cancels', () =>
   }));
 
 test('a worker that crashes is replaced: the last result is kept and the page solves again', () =>
-  withPage(`${server.url}?crashAfterSteps=3`, async (page) => {
+  withPage(`${suite.url}?crashAfterSteps=3`, async (page) => {
     assert.equal(await waitForDone(page), 300);
     const first = (await download(page, 'Export OBJ')).text;
     const crashed = page.workers()[0];
@@ -198,11 +179,11 @@ function quadGltf(extra = {}) {
 }
 
 test('a glTF never makes the page fetch: external URIs are refused, textures skipped', () =>
-  withPage(server.url, async (page) => {
+  withPage(suite.url, async (page) => {
     await waitForDone(page);
     const requests = [];
     page.on('request', (request) => requests.push(request.url()));
-    const outside = (url) => !url.startsWith(server.url) && !url.startsWith('data:') && !url.startsWith('blob:');
+    const outside = (url) => !url.startsWith(suite.url) && !url.startsWith('data:') && !url.startsWith('blob:');
     const open = (name, buffer) => page.getByLabel('Open mesh').setInputFiles({ name, mimeType: 'model/gltf+json', buffer });
     for (const uri of ['https://example.invalid/mesh.bin', 'mesh.bin']) {
       const message = await errorAfter(page, () => open('canopy.gltf', gltf({ buffers: [{ uri, byteLength: 96 }] })));
@@ -216,7 +197,7 @@ test('a glTF never makes the page fetch: external URIs are refused, textures ski
   }));
 
 test('a mesh too large for a link gets a clear message and no link', () =>
-  withPage(server.url, async (page) => {
+  withPage(suite.url, async (page) => {
     await waitForDone(page);
     // A small grid with 2.5 MB of noise in a comment: it loads, but cannot travel in a link.
     let x = 2463534242;
@@ -239,7 +220,7 @@ test('a mesh too large for a link gets a clear message and no link', () =>
   }));
 
 test('a bad link opened later says so once: the next design does not repeat it', () =>
-  withPage(server.url, async (page) => {
+  withPage(suite.url, async (page) => {
     await waitForDone(page);
     const message = await errorAfter(page, () => page.evaluate(() => (location.hash = '#v1=!!broken')));
     assert.match(message, /this share link cannot be opened/);
@@ -250,7 +231,7 @@ test('a bad link opened later says so once: the next design does not repeat it',
   }));
 
 test('after Copy share link, a changed design is what a reload restores', () =>
-  withPage(server.url, async (page) => {
+  withPage(suite.url, async (page) => {
     await waitForDone(page);
     await solveAfter(page, () => selectExample(page, 'barrel_vault'));
     await page.getByRole('button', { name: 'Copy share link' }).click();
@@ -266,7 +247,7 @@ test('after Copy share link, a changed design is what a reload restores', () =>
   }));
 
 test('the stored session keeps the mesh once; one that cannot be restored says so', () =>
-  withPage(server.url, async (page) => {
+  withPage(suite.url, async (page) => {
     await waitForDone(page);
     const cells = 8;
     const lines = [];
@@ -314,7 +295,7 @@ test('the stored session keeps the mesh once; one that cannot be restored says s
   }));
 
 test('without the shared example meshes the page starts on a generated example', () =>
-  withPage(server.url, async (page, context) => {
+  withPage(suite.url, async (page, context) => {
     await context.route('**/examples/index.json', (route) => route.fulfill({ status: 404, body: 'not found' }));
     await page.reload();
     assert.equal(await waitForDone(page), 120);

@@ -3,11 +3,11 @@
 // clear message and leave a working page; a reload restores the last design.
 import assert from 'node:assert/strict';
 import { join } from 'node:path';
-import { after, before, test } from 'node:test';
+import { test } from 'node:test';
 import { zlibSync } from 'fflate';
 import {
+  browserSuite,
   download,
-  launchBrowser,
   openPage,
   outcomes,
   remesh,
@@ -15,32 +15,13 @@ import {
   setPanels,
   sharedMeshes,
   solveAfter,
-  startServer,
   statusText,
   waitForDone,
   waitForSaved,
 } from './harness.mjs';
 
-let server;
-let browser;
-before(async () => {
-  server = await startServer();
-  browser = await launchBrowser();
-});
-after(async () => {
-  await browser?.close();
-  await server?.close();
-});
-
-async function withPage(url, run) {
-  const { context, page, errors } = await openPage(browser, url);
-  try {
-    await run(page);
-    assert.deepEqual(errors, [], 'no page or console errors');
-  } finally {
-    await context.close();
-  }
-}
+const suite = browserSuite();
+const { withPage } = suite;
 
 async function copyShareLink(page) {
   await page.getByRole('button', { name: 'Copy share link' }).click();
@@ -65,7 +46,7 @@ async function objFromLink(link, expectedPanels) {
 test('a share link of a warm-started example design gives the identical OBJ in a fresh context', async () => {
   let link = '';
   let original = '';
-  await withPage(server.url, async (page) => {
+  await withPage(suite.url, async (page) => {
     await waitForDone(page);
     await solveAfter(page, () => selectExample(page, 'groin_vault'));
     await page.getByText('Metric and solver').click();
@@ -86,7 +67,7 @@ test('a share link of a warm-started example design gives the identical OBJ in a
 test('a share link carries a small uploaded mesh', async () => {
   let link = '';
   let original = '';
-  await withPage(server.url, async (page) => {
+  await withPage(suite.url, async (page) => {
     await waitForDone(page);
     await setPanels(page, 40);
     assert.equal(await solveAfter(page, () => page.getByLabel('Open mesh').setInputFiles(join(sharedMeshes, 'epcot.off'))), 40);
@@ -102,17 +83,17 @@ function linkOf(json, { compress = (b) => zlibSync(b) } = {}) {
   const payload = new Uint8Array(4 + text.length);
   new DataView(payload.buffer).setUint32(0, text.length, true);
   payload.set(text, 4);
-  return `${server.url}#v1=${Buffer.from(compress(payload)).toString('base64url')}`;
+  return `${suite.url}#v1=${Buffer.from(compress(payload)).toString('base64url')}`;
 }
 
 test('hostile and broken links give a clear message, and the page keeps working', async () => {
   const params = { panels: 50, seed: 1, weights: { euclidean: 1, l2: 1, l21: 1, boundary: 1 }, lloydIterations: 20, panelRounds: 30, seeding: 'farthest', teleport: true, singlePointNodes: false, optimizePlanes: true };
-  const bomb = `${server.url}#v1=${Buffer.from(zlibSync(new Uint8Array(64 * 1024 * 1024), { level: 9 })).toString('base64url')}`;
+  const bomb = `${suite.url}#v1=${Buffer.from(zlibSync(new Uint8Array(64 * 1024 * 1024), { level: 9 })).toString('base64url')}`;
   const cases = [
-    [`${server.url}#v1=%3Cscript%3Ealert(1)%3C/script%3E`, /cannot be opened: .*characters/],
-    [`${server.url}#v1=${Buffer.from('random garbage that is no zlib').toString('base64url')}`, /cannot be opened: .*damaged/],
+    [`${suite.url}#v1=%3Cscript%3Ealert(1)%3C/script%3E`, /cannot be opened: .*characters/],
+    [`${suite.url}#v1=${Buffer.from('random garbage that is no zlib').toString('base64url')}`, /cannot be opened: .*damaged/],
     [bomb, /cannot be opened: .*unpacks to more than/],
-    [`${server.url}#v7=AAAA`, /cannot be opened: .*version 7/],
+    [`${suite.url}#v7=AAAA`, /cannot be opened: .*version 7/],
     [linkOf({ v: 1, mesh: { example: 'saddle' }, params: { ...params, panels: -4 } }), /cannot be opened: .*Panels must be between/],
     [linkOf({ v: 1, mesh: { example: 'saddle' }, params: { ...params, seed: 'x' } }), /cannot be opened: .*Seed must be a whole number/],
     [linkOf({ v: 1, mesh: { example: '<img src=x onerror=alert(1)>' }, params }), /cannot be opened: .*unknown example/],
@@ -134,7 +115,7 @@ test('hostile and broken links give a clear message, and the page keeps working'
 });
 
 test('a reload restores the last design from this browser', async () => {
-  const { context, page, errors } = await openPage(browser, server.url);
+  const { context, page, errors } = await openPage(suite.browser, suite.url);
   try {
     await waitForDone(page);
     await solveAfter(page, () => selectExample(page, 'helicoid'));

@@ -3,13 +3,13 @@
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { after, before, test } from 'node:test';
+import { test } from 'node:test';
 import { wavyGridGlb } from './glb.mjs';
 import {
+  browserSuite,
   distinctColours,
   download,
   errorAfter,
-  launchBrowser,
   maxPlanarity,
   outcomes,
   openPage,
@@ -20,7 +20,6 @@ import {
   setPanels,
   sharedMeshes,
   solveAfter,
-  startServer,
   statusText,
   waitForDone,
   waitForProgress,
@@ -28,30 +27,11 @@ import {
   waitForStatus,
 } from './harness.mjs';
 
-let server;
-let browser;
-before(async () => {
-  server = await startServer();
-  browser = await launchBrowser();
-});
-after(async () => {
-  await browser?.close();
-  await server?.close();
-});
-
-// Every test gets a fresh context and ends with no page or console errors.
-async function withPage(run) {
-  const { context, page, errors } = await openPage(browser, server.url);
-  try {
-    await run(page);
-    assert.deepEqual(errors, [], 'no page or console errors');
-  } finally {
-    await context.close();
-  }
-}
+const suite = browserSuite();
+const { withPage } = suite;
 
 test('an example remeshes to the requested count; the OBJ is planar and the parts list matches', () =>
-  withPage(async (page) => {
+  withPage(suite.url, async (page) => {
     assert.equal(await waitForDone(page), 300, 'the default example solves at start');
     await screenshot(page, 'hyperboloid-300');
     assert.equal(await solveAfter(page, () => selectExample(page, 'saddle')), 120);
@@ -76,7 +56,7 @@ test('an example remeshes to the requested count; the OBJ is planar and the part
   }));
 
 test('a mesh opened with "Open mesh" (OFF, then GLB) or dropped on the view is solved', () =>
-  withPage(async (page) => {
+  withPage(suite.url, async (page) => {
     await waitForDone(page);
     await setPanels(page, 60);
     assert.equal(await solveAfter(page, () => page.getByLabel('Open mesh').setInputFiles(join(sharedMeshes, 'bumpy.off'))), 60);
@@ -127,7 +107,7 @@ test('a mesh opened with "Open mesh" (OFF, then GLB) or dropped on the view is s
   }));
 
 test('a bad file gives a clear message and the previous design keeps working', () =>
-  withPage(async (page) => {
+  withPage(suite.url, async (page) => {
     await waitForDone(page);
     await solveAfter(page, () => selectExample(page, 'barrel_vault'));
     const garbage = Buffer.from(Array.from({ length: 4096 }, (_, i) => (i * 7919 + 13) % 256));
@@ -152,7 +132,7 @@ test('a bad file gives a clear message and the previous design keeps working', (
   }));
 
 test('Cancel answers at once during a solve, and the page keeps working', () =>
-  withPage(async (page) => {
+  withPage(suite.url, async (page) => {
     await waitForDone(page);
     await setPanels(page, 500);
     await remesh(page);
@@ -178,7 +158,7 @@ test('Cancel answers at once during a solve, and the page keeps working', () =>
   }));
 
 test('a cancel that replaces the worker (as for a long step) leaves the page working and deterministic', async () => {
-  const { context, page, errors } = await openPage(browser, `${server.url}?cancelGrace=0`);
+  const { context, page, errors } = await openPage(suite.browser, `${suite.url}?cancelGrace=0`);
   try {
     assert.equal(await waitForDone(page), 300);
     const busyWorker = page.workers()[0];
@@ -206,7 +186,7 @@ test('a cancel that replaces the worker (as for a long step) leaves the page wor
 });
 
 test('a parameter change during a solve reaches the worker and warm-starts it', () =>
-  withPage(async (page) => {
+  withPage(suite.url, async (page) => {
     await waitForDone(page);
     const since = await outcomes(page);
     await setPanels(page, 500);
@@ -221,7 +201,7 @@ test('a parameter change during a solve reaches the worker and warm-starts it', 
   }));
 
 test('the main thread keeps painting frames during a long solve', () =>
-  withPage(async (page) => {
+  withPage(suite.url, async (page) => {
     await waitForDone(page);
     await page.getByText('Metric and solver').click();
     await page.getByLabel('Lloyd iterations').fill('100');
@@ -276,7 +256,7 @@ test('the main thread keeps painting frames during a long solve', () =>
   }));
 
 test('screenshots of the page after a solve, in each view', () =>
-  withPage(async (page) => {
+  withPage(suite.url, async (page) => {
     await waitForDone(page);
     assert.equal(await solveAfter(page, () => selectExample(page, 'inspired_mesh')), 120);
     const shot = await screenshot(page, 'inspired-panels');

@@ -362,6 +362,50 @@ expect_error 2 "non-manifold edge" remesh "$tmp/nonmanifold.obj" --panels 1 "${o
 expect_error 2 "density.*3 values" remesh "$m" --panels 10 --density "$tmp/short.txt" "${o[@]}"
 # An output that cannot be written: exit 2 and the other output not left behind.
 expect_error 2 "cannot write" remesh "$e" --panels 10 --report "$tmp/never.json" --out "$tmp/no/such/dir/p.obj"
+# ----- remesh --subdivide ------------------------------------------------------------------
+# YasIsland's quads take Catmull-Clark: 2 levels, 976 quads -> 31232 triangles, all panels valid.
+"$bin" remesh "$meshes/YasIsland.off" --subdivide 2 --panels 500 --out "$tmp/sd.obj" --report "$tmp/sd.json" 2>"$tmp/err.txt"
+code=$?
+if [ "$code" = 0 ]; then
+  check_remesh "$code" "$tmp/sd.obj" "$tmp/sd.json" 500 && ok || bad "remesh --subdivide: output/report check"
+  python3 -c "
+import json, sys
+r = json.load(open(sys.argv[1]))
+s = r['subdivision']
+assert s['scheme'] == 'catmull-clark' and s['levels'] == 2, s
+assert s['control_faces'] == 976 and s['control_vertices'] == 1085 and s['crease_edges'] == 0, s
+assert s['triangles'] == 31232 and r['triangles'] == 31232 and r['input_triangles'] == 1952, (s, r['triangles'])
+assert r['topology_preserved'] and r['boundary_loops_in'] == 3, r
+" "$tmp/sd.json" && ok || bad "remesh --subdivide: subdivision report"
+else
+  bad "remesh YasIsland --subdivide 2 --panels 500: exit $code, want 0 $(cat "$tmp/err.txt")"
+fi
+# Deterministic: the same run gives the same panels, byte for byte.
+"$bin" remesh "$meshes/YasIsland.off" --subdivide 2 --panels 500 --out "$tmp/sd2.obj" 2>/dev/null
+cmp -s "$tmp/sd.obj" "$tmp/sd2.obj" && ok || bad "remesh --subdivide: same run gave different OBJ bytes"
+# Triangles take Loop; --crease-angle counts the sharp edges (epcot: every edge above 1 degree).
+"$bin" remesh "$meshes/epcot.off" --subdivide 1 --crease-angle 1 --panels 30 --report "$tmp/sdl.json" 2>/dev/null
+code=$?
+[ "$code" = 0 ] || [ "$code" = 3 ] && python3 -c "
+import json, sys
+s = json.load(open(sys.argv[1]))['subdivision']
+assert s['scheme'] == 'loop' and s['triangles'] == 4 * 1536 and s['crease_edges'] == 2304, s
+" "$tmp/sdl.json" && ok || bad "remesh --subdivide on triangles (exit $code)"
+# Without --subdivide the report has no subdivision object (existing reports unchanged).
+python3 -c "import json, sys; assert 'subdivision' not in json.load(open(sys.argv[1]))" "$tmp/r1.json" && ok ||
+  bad "report without --subdivide has a subdivision object"
+expect_error 2 "subdivide.*'x'.*whole number" remesh "$e" --panels 10 --subdivide x "${o[@]}"
+expect_error 2 "subdivide.*-1.*range" remesh "$e" --panels 10 --subdivide -1 "${o[@]}"
+expect_error 2 "subdivide.*17.*range" remesh "$e" --panels 10 --subdivide 17 "${o[@]}"
+expect_error 2 "8 levels of Loop would make 100663296 triangles.*limit.*use at most 5 levels" \
+  remesh "$e" --panels 10 --subdivide 8 "${o[@]}"
+expect_error 2 "crease-angle needs --subdivide" remesh "$e" --panels 10 --crease-angle 30 "${o[@]}"
+expect_error 2 "crease-angle.*between 0 and 180" remesh "$e" --panels 10 --subdivide 1 --crease-angle 200 "${o[@]}"
+expect_error 2 "density cannot be combined with --subdivide" remesh "$m" --panels 10 --subdivide 1 \
+  --density "$tmp/density.txt" "${o[@]}"
+expect_error 2 "non-manifold edge" remesh "$tmp/nonmanifold.obj" --panels 1 --subdivide 1 "${o[@]}"
+"$bin" --help | grep -q "subdivide N" && ok || bad "--help lacks --subdivide"
+
 # The usage text names the command.
 "$bin" --help | grep -q "remesh INPUT --panels N" && ok || bad "--help lacks remesh"
 
