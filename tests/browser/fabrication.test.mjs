@@ -6,29 +6,12 @@
 // Screenshots: the thick panels and the cut sheets (the SVG rendered in a page).
 import assert from 'node:assert/strict';
 import { join } from 'node:path';
-import { after, before, test } from 'node:test';
-import { download, launchBrowser, openPage, parseObj, remesh, repo, screenshot, selectExample, setPanels, solveAfter, startServer, waitForDone } from './harness.mjs';
+import { test } from 'node:test';
+import { browserSuite, download, parseObj, remesh, repo, screenshot, selectExample, setPanels, solveAfter, waitForDone } from './harness.mjs';
 
-let server;
-let browser;
-before(async () => {
-  server = await startServer();
-  browser = await launchBrowser();
-});
-after(async () => {
-  await browser?.close();
-  await server?.close();
-});
-
-async function withPage(url, run) {
-  const { context, page, errors } = await openPage(browser, url);
-  try {
-    await run(page);
-    assert.deepEqual(errors, [], 'no page or console errors');
-  } finally {
-    await context.close();
-  }
-}
+const suite = browserSuite();
+const { withPage } = suite;
+const server = suite; // server.url: the built site
 
 const fabrications = (page) => page.evaluate(() => Number(document.body.dataset.fabrications ?? 0));
 
