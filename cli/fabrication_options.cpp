@@ -1,7 +1,9 @@
 #include "cli/fabrication_options.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <utility>
 
 #include "core/fabricate/solid_panels.h"
 #include "core/fabricate/units.h"
@@ -33,11 +35,49 @@ std::string file_option(const Args& args, const std::string& name) {
   return path;
 }
 
+// --panel-thickness P3=0.05,P7=0.03 (labels as the parts list writes them).
+std::vector<std::pair<std::string, double>> panel_thickness_option(const std::string& text) {
+  std::vector<std::pair<std::string, double>> out;
+  size_t start = 0;
+  while (start <= text.size()) {
+    const size_t comma = std::min(text.find(',', start), text.size());
+    const std::string item = text.substr(start, comma - start);
+    const size_t eq = item.find('=');
+    if (eq == std::string::npos || eq == 0 || item[0] != 'P')
+      throw UsageError("--panel-thickness: expected LABEL=T,... (e.g. P3=0.05,P7=0.03), got '" + item + "'");
+    const double t = parse_double(item.substr(eq + 1), "--panel-thickness " + item.substr(0, eq));
+    if (!(t > 0.0)) throw UsageError("--panel-thickness: expected a positive thickness for " + item.substr(0, eq));
+    out.emplace_back(item.substr(0, eq), t);
+    start = comma + 1;
+  }
+  return out;
+}
+
+// --boundary-cut square | plumb | DEG (a bevel from square, -60..60).
+BoundaryCut boundary_option(const Args& args) {
+  BoundaryCut cut;
+  const std::string text = args.get("boundary-cut", "square");
+  if (text == "plumb") {
+    cut.kind = BoundaryCut::Kind::Plumb;
+  } else if (text != "square") {
+    cut.kind = BoundaryCut::Kind::Bevel;
+    cut.bevel_deg = parse_double(text, "--boundary-cut");
+    if (!(std::abs(cut.bevel_deg) <= 60.0))
+      throw UsageError("--boundary-cut: expected square, plumb or degrees from -60 to 60, got '" + text + "'");
+  }
+  const std::string up = args.get("up", "z");
+  if (up != "x" && up != "y" && up != "z") throw UsageError("--up: expected x, y or z, got '" + up + "'");
+  cut.up = up == "x" ? Vec3::UnitX() : up == "y" ? Vec3::UnitY() : Vec3::UnitZ();
+  if (args.has("up") && cut.kind != BoundaryCut::Kind::Plumb) throw UsageError("--up needs --boundary-cut plumb");
+  return cut;
+}
+
 }  // namespace
 
 const std::set<std::string>& fabrication_option_names() {
-  static const std::set<std::string> names = {"thickness", "side",   "units",      "mesh-units",
-                                              "parts",     "sheets", "sheet-size", "solid"};
+  static const std::set<std::string> names = {"thickness", "side",       "units",           "mesh-units",
+                                              "parts",     "sheets",     "sheet-size",      "solid",
+                                              "up",        "boundary-cut", "panel-thickness"};
   return names;
 }
 
@@ -70,6 +110,13 @@ FabricationRequest parse_fabrication(const Args& args) {
     if (args.has(name) && !r.any())
       throw UsageError(std::string("--") + name + ": nothing to use it for (add --parts, --sheets or --solid)");
   if (args.has("sheet-size") && r.sheets.empty()) throw UsageError("--sheet-size needs --sheets");
+  if (args.has("panel-thickness")) {
+    if (o.thickness <= 0.0) throw UsageError("--panel-thickness needs --thickness (for the other panels)");
+    o.panel_thickness = panel_thickness_option(args.get("panel-thickness"));
+  }
+  o.boundary = boundary_option(args);
+  if (args.has("boundary-cut") && !r.any())
+    throw UsageError("--boundary-cut: nothing to use it for (add --parts, --sheets or --solid)");
 
   // Sheet defaults: a 2440 x 1220 mm board, 10 mm margin, 5 mm between parts, in the
   // designer's units.
@@ -96,6 +143,8 @@ std::vector<OutputFile> fabrication_outputs(const FabricationRequest& r, const P
   std::vector<OutputFile> files;
   if (!r.any()) return files;
   const PartsList list = make_parts_list(panels, r.options);
+  if (!list.unmatched_labels.empty())
+    throw InputError("--panel-thickness: no panel labelled " + list.unmatched_labels.front());
   if (!r.parts.empty())
     files.push_back({r.parts, ends_with(r.parts, ".json") ? parts_list_json(list) : parts_list_csv(list)});
   if (!r.sheets.empty()) {
@@ -105,8 +154,16 @@ std::vector<OutputFile> fabrication_outputs(const FabricationRequest& r, const P
                                                            : cut_sheets_svg(outlines, layout, r.sheet)});
   }
   if (!r.solid.empty()) {
-    const double scale = unit_scale(r.options.units, r.options.mesh_units);  // thickness -> mesh units
-    files.push_back({r.solid, solid_panels_obj(panels, r.options.thickness * scale, r.options.side)});
+    // Thicknesses in mesh units; the file in the designer's units like the other outputs.
+    const double scale = unit_scale(r.options.units, r.options.mesh_units);
+    ThickOptions thick;
+    thick.thickness = r.options.thickness * scale;
+    thick.side = r.options.side;
+    thick.boundary = r.options.boundary;
+    if (!r.options.panel_thickness.empty())
+      for (const PartRow& row : list.rows) thick.panel_thickness.push_back(row.outline.thickness * scale);
+    files.push_back({r.solid, solid_panels_obj(panels, thick, unit_scale(r.options.mesh_units, r.options.units),
+                                               unit_name(r.options.units))});
   }
   return files;
 }

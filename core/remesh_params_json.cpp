@@ -131,6 +131,10 @@ RemeshParams remesh_params_from_json(std::string_view json, const RemeshParams& 
       p.optimize_planes = boolean(value, name);
     } else if (name == "edits") {
       p.edits = read_edits(value);
+    } else if (name == "glass") {
+      p.glass = boolean(value, name);  // glass mode: concave panels cut into convex pieces
+    } else if (name == "minCornerAngleDeg") {
+      p.min_corner_angle_deg = number(value, name, 0, 60, false);  // as the CLI's --min-angle
     } else {
       throw InputError("unknown parameter '" + name + "'");
     }

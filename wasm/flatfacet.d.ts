@@ -44,6 +44,8 @@ export interface RemeshParams {
   // the design before the first edit. Locked panels keep their triangles, plane and outline
   // through later re-solves (panel count, weights). A failing edit leaves the previous result.
   edits?: PanelEdit[];
+  glass?: boolean; // default false: concave panels cut into coplanar convex pieces
+  minCornerAngleDeg?: number; // 0..60, default 0 (none): corners below it are panel problems
 }
 
 export type PanelEdit =
@@ -64,6 +66,10 @@ export interface FabricationParams {
   meshUnits?: LengthUnitName; // what one mesh coordinate is
   sheetWidth?: number; // > 0
   sheetHeight?: number; // > 0
+  panelThickness?: Record<string, number>; // by label ("P3", "P12a"), > 0, in `units`; needs thickness > 0
+  boundaryCut?: 'square' | 'plumb' | 'bevel'; // how boundary edges are cut, default 'square'
+  boundaryBevelDeg?: number; // -60..60, for 'bevel': positive makes the inner face smaller
+  upAxis?: 'x' | 'y' | 'z'; // for 'plumb' (the cut holds this axis), default 'z'
 }
 
 export interface SheetStats extends Status {
@@ -123,6 +129,7 @@ export interface Progress extends Status {
 export interface Problems extends Status {
   spikes: number[]; // xyz triples: panel vertices farther than the spike distance from their corner
   flippedEdges: number[]; // pairs of xyz triples (6 numbers per edge): edges against their panel's orientation
+  acuteCorners: number[]; // xyz triples: panel corners below the minimum corner angle (minCornerAngleDeg)
   invalidPanels: number[]; // panel ids
   unbuiltClusters: number[]; // cluster ids that could not become a panel (their faces stay uncovered)
 }

@@ -198,6 +198,8 @@ const QualityReport* Session::quality() {
     QualityOptions options;
     // Mid-solve the page only wants the problems: a coarse Hausdorff is enough then.
     if (!remesher_->done()) options.samples_per_side = 2000;
+    options.glass = remesher_->params().glass;  // glass mode's checks, as the CLI's report
+    options.min_corner_angle_deg = remesher_->params().min_corner_angle_deg;
     quality_ = measure_quality(mesh_, topology_, remesher_->panels(), options);
     if (remesher_->done()) timings_.quality = seconds_since(t0);
   }
@@ -298,6 +300,10 @@ std::string Session::problems() {
       for (const auto& e : q->flipped_edge_vertices)
         for (const int v : e)
           for (int k = 0; k < 3; ++k) j.value(nullptr, pm->vertices[static_cast<size_t>(v)][k]);
+    j.end_array().begin_array("acuteCorners");  // glass mode: corners below the minimum angle
+    if (q)
+      for (const int v : q->acute_corner_vertex_ids)
+        for (int k = 0; k < 3; ++k) j.value(nullptr, pm->vertices[static_cast<size_t>(v)][k]);
     j.end_array().begin_array("invalidPanels");
     if (q)
       for (const int p : q->invalid_panel_ids) j.value(nullptr, p);

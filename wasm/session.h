@@ -118,6 +118,16 @@ class Session {
   std::vector<std::string> cleanup_;
   RemeshParams params_;
   FabricationSettings fabrication_;
+  // The last cut-sheet packing and what it was packed from (session_fabrication.cpp): one
+  // fabrication request asks for the SVG, the DXF and the stats of the same layout.
+  struct SheetCache {
+    std::vector<PanelOutline> outlines;
+    SheetOptions sheet;
+    SheetLayout layout;
+    bool valid = false;
+  };
+  mutable SheetCache sheet_cache_;
+  const SheetLayout& sheet_layout(const std::vector<PanelOutline>& outlines) const;
   std::unique_ptr<Remesher> remesher_;
   std::optional<QualityReport> quality_;  // of the current panels, measured on demand
   Timings timings_;                       // of the solve since the last load or parameter change

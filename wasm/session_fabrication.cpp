@@ -28,11 +28,52 @@ double mesh_thickness(const FabricationSettings& f) {
   return f.options.thickness * unit_scale(f.options.units, f.options.mesh_units);
 }
 
-SheetLayout layout_of(const std::vector<PanelOutline>& outlines, const FabricationSettings& f) {
-  return pack_outlines(outlines, f.sheet);
+bool same_outlines(const std::vector<PanelOutline>& a, const std::vector<PanelOutline>& b) {
+  if (a.size() != b.size()) return false;
+  for (size_t i = 0; i < a.size(); ++i) {
+    const PanelOutline &x = a[i], &y = b[i];
+    if (x.panel != y.panel || x.label != y.label || x.outer != y.outer || x.inner != y.inner ||
+        x.thickness != y.thickness || x.edges.size() != y.edges.size())
+      return false;
+    for (size_t k = 0; k < x.edges.size(); ++k)
+      if (x.edges[k].length != y.edges[k].length || x.edges[k].chamfer_deg != y.edges[k].chamfer_deg ||
+          x.edges[k].neighbour != y.edges[k].neighbour)
+        return false;
+  }
+  return true;
+}
+
+bool same_sheet(const SheetOptions& a, const SheetOptions& b) {
+  return a.width == b.width && a.height == b.height && a.margin == b.margin && a.spacing == b.spacing &&
+         a.units == b.units;
+}
+
+// The thick-panel options in mesh units, per-panel thicknesses resolved as the parts list does.
+ThickOptions thick_options(const PanelMesh& pm, const FabricationSettings& f) {
+  const double scale = unit_scale(f.options.units, f.options.mesh_units);
+  ThickOptions o;
+  o.thickness = mesh_thickness(f);
+  o.side = f.options.side;
+  o.boundary = f.options.boundary;
+  if (!f.options.panel_thickness.empty())
+    for (const PartRow& row : make_parts_list(pm, f.options).rows) o.panel_thickness.push_back(row.outline.thickness * scale);
+  return o;
 }
 
 }  // namespace
+
+// Packing is the slow part: reuse the last layout when outlines and sheet are the same.
+const SheetLayout& Session::sheet_layout(const std::vector<PanelOutline>& outlines) const {
+  SheetCache& c = sheet_cache_;
+  if (!c.valid || !same_sheet(c.sheet, fabrication_.sheet) || !same_outlines(c.outlines, outlines)) {
+    c.valid = false;
+    c.layout = pack_outlines(outlines, fabrication_.sheet);  // may throw: the cache stays invalid
+    c.outlines = outlines;
+    c.sheet = fabrication_.sheet;
+    c.valid = true;
+  }
+  return c.layout;
+}
 
 std::string Session::set_fabrication(const std::string& json) {
   return guarded([&] {
@@ -54,21 +95,21 @@ std::string Session::parts_json() const {
 std::string Session::sheets_svg() const {
   return guarded([&] {
     const std::vector<PanelOutline> outlines = panel_outlines(make_parts_list(FF_PANELS, fabrication_.options));
-    return cut_sheets_svg(outlines, layout_of(outlines, fabrication_), fabrication_.sheet);
+    return cut_sheets_svg(outlines, sheet_layout(outlines), fabrication_.sheet);
   });
 }
 
 std::string Session::sheets_dxf() const {
   return guarded([&] {
     const std::vector<PanelOutline> outlines = panel_outlines(make_parts_list(FF_PANELS, fabrication_.options));
-    return cut_sheets_dxf(outlines, layout_of(outlines, fabrication_), fabrication_.sheet);
+    return cut_sheets_dxf(outlines, sheet_layout(outlines), fabrication_.sheet);
   });
 }
 
 std::string Session::sheet_stats() const {
   return guarded([&] {
     const std::vector<PanelOutline> outlines = panel_outlines(make_parts_list(FF_PANELS, fabrication_.options));
-    const SheetLayout layout = layout_of(outlines, fabrication_);
+    const SheetLayout& layout = sheet_layout(outlines);
     JsonWriter j;
     j.begin_object().value("ok", true).value("message", "");
     j.value("sheets", layout.sheets).value("materialUse", layout.material_use).end_object();
@@ -81,7 +122,8 @@ std::string Session::solid_obj() const {
     if (!(fabrication_.options.thickness > 0.0))
       throw InputError("solid panels need a thickness: set one under Fabrication");
     if (FF_PANELS.num_panels() == 0) throw InputError("solid panels need panels: remesh first");
-    return solid_panels_obj(FF_PANELS, mesh_thickness(fabrication_), fabrication_.options.side);
+    // In mesh coordinates, to overlay the panels in the page and in the panels OBJ.
+    return solid_panels_obj(FF_PANELS, thick_options(FF_PANELS, fabrication_), 1.0, "");
   });
 }
 
@@ -89,8 +131,7 @@ std::vector<double> Session::inner_positions() const {
   std::vector<double> out;
   const PanelMesh& pm = FF_PANELS;
   if (pm.num_panels() == 0 || !(fabrication_.options.thickness > 0.0)) return out;
-  const ThickPanels thick =
-      thicken_panels(pm, panel_edges(pm), mesh_thickness(fabrication_), fabrication_.options.side);
+  const ThickPanels thick = thicken_panels(pm, panel_edges(pm), thick_options(pm, fabrication_));
   for (const std::vector<Vec3>& panel : thick.inner)
     for (const Vec3& p : panel)
       for (int k = 0; k < 3; ++k) out.push_back(p[k]);

@@ -39,4 +39,61 @@ std::vector<std::vector<EdgeChamfer>> edge_chamfers(const PanelMesh& pm, const P
   return out;
 }
 
+Vec3 boundary_cut_direction(const Vec3& n, const Vec3& e, const BoundaryCut& cut, MaterialSide side) {
+  const Vec3 depth = side == MaterialSide::Inside ? Vec3(-n) : n;
+  const Vec3 inward = n.cross(e);  // in the panel's plane, towards its inside
+  if (cut.kind == BoundaryCut::Kind::Bevel) {
+    const double b = cut.bevel_deg / kDeg;
+    return (std::cos(b) * depth + std::sin(b) * inward).normalized();
+  }
+  if (cut.kind == BoundaryCut::Kind::Plumb) {
+    Vec3 c = cut.up - cut.up.dot(e) * e;  // the up axis seen across the edge
+    if (c.norm() > 1e-6) {
+      c.normalize();
+      if (c.dot(depth) < 0.0) c = -c;
+      // Within 10 deg of the panel's plane the cut would slice the panel lengthwise.
+      if (c.dot(depth) > std::sin(10.0 / kDeg)) return c;
+    }
+  }
+  return depth;
+}
+
+double boundary_bevel_deg(const Vec3& n, const Vec3& e, const BoundaryCut& cut, MaterialSide side) {
+  if (cut.kind == BoundaryCut::Kind::Square) return 0.0;
+  const Vec3 c = boundary_cut_direction(n, e, cut, side);
+  const Vec3 depth = side == MaterialSide::Inside ? Vec3(-n) : n;
+  return std::atan2(c.dot(n.cross(e)), c.dot(depth)) * kDeg;
+}
+
+double unequal_chamfer_deg(double phi_deg, double t_p, double t_q) {
+  const double phi = phi_deg / kDeg;
+  return std::atan2(t_q - t_p * std::cos(phi), t_p * std::sin(phi)) * kDeg;
+}
+
+std::vector<std::vector<EdgeChamfer>> edge_chamfers(const PanelMesh& pm, const PanelEdges& edges,
+                                                    const std::vector<double>& thickness, const BoundaryCut& boundary,
+                                                    MaterialSide side) {
+  std::vector<std::vector<EdgeChamfer>> out = edge_chamfers(pm, edges);
+  for (size_t p = 0; p < pm.panels.size(); ++p) {
+    const std::vector<int>& poly = pm.panels[p];
+    for (size_t i = 0; i < poly.size(); ++i) {
+      const int q = edges.neighbour[p][i];
+      const Vec3 edge =
+          pm.vertices[static_cast<size_t>(poly[(i + 1) % poly.size()])] - pm.vertices[static_cast<size_t>(poly[i])];
+      if (q < 0) {
+        out[p][i].chamfer_deg = boundary_bevel_deg(pm.plane_normals[p], edge.normalized(), boundary, side);
+      } else if (p < thickness.size() && static_cast<size_t>(q) < thickness.size() &&
+                 thickness[p] != thickness[static_cast<size_t>(q)]) {
+        // (Nearly) coplanar neighbours of different thickness: their offset planes do not
+        // meet, a step, cut square (as thick_panels.cpp, which needs sin phi >= 1e-6).
+        const double phi = 2.0 * out[p][i].chamfer_deg;
+        out[p][i].chamfer_deg = std::sin(phi / kDeg) < 1e-6
+                                    ? 0.0
+                                    : unequal_chamfer_deg(phi, thickness[p], thickness[static_cast<size_t>(q)]);
+      }
+    }
+  }
+  return out;
+}
+
 }  // namespace ff

@@ -33,6 +33,26 @@ LengthUnit unit(const JsonValue& v, const std::string& name) {
   return parse_length_unit(s, name);
 }
 
+// {"P3": 0.05, ...}: labels as the parts list writes them (P<n>, glass pieces P<n><letters>).
+void read_panel_thickness(const JsonValue& v, FabricationOptions& o) {
+  if (v.type != JsonValue::Type::Object) throw InputError("fabrication 'panelThickness' must be an object");
+  if (v.object.size() > 100000) throw InputError("fabrication 'panelThickness': at most 100000 panels");
+  for (const auto& [label, value] : v.object) {
+    bool ok = label.size() >= 2 && label.size() <= 20 && label[0] == 'P' && label[1] >= '1' && label[1] <= '9';
+    size_t i = 1;
+    while (ok && i < label.size() && label[i] >= '0' && label[i] <= '9') ++i;
+    for (; ok && i < label.size(); ++i) ok = label[i] >= 'a' && label[i] <= 'z';
+    if (!ok) throw InputError("fabrication 'panelThickness': '" + label.substr(0, 20) + "' is not a panel label (P1, P2, P3a, ...)");
+    o.panel_thickness.emplace_back(label, length(value, "panelThickness." + label, false));
+  }
+}
+
+Vec3 axis(const JsonValue& v) {
+  const std::string s = text(v, "upAxis");
+  if (s != "x" && s != "y" && s != "z") throw InputError("fabrication 'upAxis' must be \"x\", \"y\" or \"z\"");
+  return s == "x" ? Vec3::UnitX() : s == "y" ? Vec3::UnitY() : Vec3::UnitZ();
+}
+
 }  // namespace
 
 FabricationSettings fabrication_settings_from_json(std::string_view json) {
@@ -44,6 +64,10 @@ FabricationSettings fabrication_settings_from_json(std::string_view json) {
   const JsonValue* side = nullptr;
   const JsonValue* width = nullptr;
   const JsonValue* height = nullptr;
+  const JsonValue* panel_thickness = nullptr;
+  const JsonValue* boundary = nullptr;
+  const JsonValue* bevel = nullptr;
+  const JsonValue* up = nullptr;
   for (const auto& [name, value] : root.object) {
     if (name == "units")
       units = &value;
@@ -57,6 +81,14 @@ FabricationSettings fabrication_settings_from_json(std::string_view json) {
       width = &value;
     else if (name == "sheetHeight")
       height = &value;
+    else if (name == "panelThickness")
+      panel_thickness = &value;
+    else if (name == "boundaryCut")
+      boundary = &value;
+    else if (name == "boundaryBevelDeg")
+      bevel = &value;
+    else if (name == "upAxis")
+      up = &value;
     else
       throw InputError("unknown fabrication setting '" + name + "'");
   }
@@ -70,6 +102,21 @@ FabricationSettings fabrication_settings_from_json(std::string_view json) {
     if (v != "inside" && v != "outside") throw InputError("fabrication 'side' must be \"inside\" or \"outside\"");
     o.side = v == "outside" ? MaterialSide::Outside : MaterialSide::Inside;
   }
+  if (panel_thickness) read_panel_thickness(*panel_thickness, o);
+  if (boundary) {
+    const std::string v = text(*boundary, "boundaryCut");
+    if (v != "square" && v != "plumb" && v != "bevel")
+      throw InputError("fabrication 'boundaryCut' must be \"square\", \"plumb\" or \"bevel\"");
+    o.boundary.kind = v == "plumb"   ? BoundaryCut::Kind::Plumb
+                      : v == "bevel" ? BoundaryCut::Kind::Bevel
+                                     : BoundaryCut::Kind::Square;
+  }
+  if (bevel) {
+    if (bevel->type != JsonValue::Type::Number || !(std::abs(bevel->number) <= 60.0))
+      throw InputError("fabrication 'boundaryBevelDeg' must be a number from -60 to 60");
+    o.boundary.bevel_deg = bevel->number;
+  }
+  if (up) o.boundary.up = axis(*up);
   const double mm = unit_scale(LengthUnit::Millimetre, o.units);
   s.sheet.width = width ? length(*width, "sheetWidth", false) : 2440.0 * mm;
   s.sheet.height = height ? length(*height, "sheetHeight", false) : 1220.0 * mm;

@@ -1,18 +1,13 @@
 #include "core/fabricate/parts_list.h"
 
-#include <cstdio>
-
+#include "core/fabricate/number_text.h"
 #include "core/panels/polygon2d.h"
 
 namespace ff {
 
 namespace {
 
-std::string number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
+std::string number(double v) { return number_text(v, 17); }
 
 // "P12" for a whole panel; glass pieces of panel 12 are "P12a", "P12b", ... (they are
 // consecutive), numbered after the panel they were cut from, so the labels match the design.

@@ -5,6 +5,7 @@
 // columns with the same meaning, in the designer's units, plus thickness, per-edge lengths,
 // chamfers and neighbours, corner angles and the outer and inner outlines laid flat.
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/fabricate/chamfers.h"
@@ -36,6 +37,10 @@ struct FabricationOptions {
   LengthUnit units = LengthUnit::Metre;       // what the parts list is written in
   double thickness = 0.0;                     // in `units`; 0: no inner faces
   MaterialSide side = MaterialSide::Inside;
+  // Panels thicker or thinner than `thickness` (which must then be > 0), by label, in
+  // `units`: "P3" also covers the glass pieces "P3a", "P3b", ...; an exact label wins.
+  std::vector<std::pair<std::string, double>> panel_thickness;
+  BoundaryCut boundary;  // how boundary edges are cut (chamfers.h); `up` in mesh coordinates
 };
 
 struct PartRow {
@@ -62,9 +67,11 @@ struct PartsList {
   double max_node_spread = 0.0;
   int straight_corners = 0, projected_corners = 0;
   std::vector<NodeSpread> spread_nodes;  // spread above 1e-9 of the thickness, by vertex
+  std::vector<std::string> unmatched_labels;  // panel_thickness labels no panel has
 };
 
-// Throws InputError for a negative or non-finite thickness.
+// Throws InputError for a negative or non-finite thickness, a panel thickness not above 0, or
+// panel thicknesses without a thickness.
 PartsList make_parts_list(const PanelMesh& panels, const FabricationOptions& options);
 
 // CSV: header row; the nine basic columns (lengths in the designer's units, `area` in them

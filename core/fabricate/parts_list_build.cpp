@@ -24,25 +24,70 @@ std::vector<double> corner_angles(const std::vector<Vec2>& poly) {
   return angles;
 }
 
+bool is_piece_of(const std::string& label, const std::string& base) {
+  if (label.size() <= base.size() || label.compare(0, base.size(), base) != 0) return false;
+  for (size_t i = base.size(); i < label.size(); ++i)
+    if (label[i] < 'a' || label[i] > 'z') return false;
+  return true;
+}
+
+// Per panel thickness in the designer's units: the overrides by label (exact labels after
+// base labels, so "P3a" wins over "P3"), else the default.
+std::vector<double> resolve_thickness(const std::vector<PanelPart>& parts, const FabricationOptions& o,
+                                      std::vector<std::string>& unmatched) {
+  std::vector<double> t(parts.size(), o.thickness);
+  for (const bool exact : {false, true})
+    for (const auto& [label, value] : o.panel_thickness) {
+      bool matched = false;
+      for (size_t p = 0; p < parts.size(); ++p)
+        if (exact ? parts[p].label == label : is_piece_of(parts[p].label, label)) {
+          t[p] = value;
+          matched = true;
+        }
+      if (exact && !matched) {
+        bool piece = false;
+        for (const PanelPart& part : parts) piece = piece || is_piece_of(part.label, label);
+        if (!piece) unmatched.push_back(label);
+      }
+    }
+  return t;
+}
+
 }  // namespace
 
 PartsList make_parts_list(const PanelMesh& pm, const FabricationOptions& options) {
   if (!(options.thickness >= 0.0) || !std::isfinite(options.thickness))
     throw InputError("thickness: expected a positive number, got " + std::to_string(options.thickness));
+  for (const auto& [label, value] : options.panel_thickness) {
+    if (!(value > 0.0) || !std::isfinite(value))
+      throw InputError("panel thickness of " + label + ": expected a positive number, got " + std::to_string(value));
+    if (!(options.thickness > 0.0))
+      throw InputError("panel thickness of " + label + ": set a thickness for the other panels too");
+  }
   PartsList list;
   list.options = options;
   const double scale = unit_scale(options.mesh_units, options.units);  // mesh -> designer
   const PanelEdges edges = panel_edges(pm);
-  const std::vector<std::vector<EdgeChamfer>> chamfers = edge_chamfers(pm, edges);
+  const std::vector<PanelPart> basic = panel_parts(pm);
+  const std::vector<double> thickness = resolve_thickness(basic, options, list.unmatched_labels);
+  // Uniform thickness and square boundary cuts: the plain chamfers, bit for bit.
+  const bool plain = options.panel_thickness.empty() && options.boundary.kind == BoundaryCut::Kind::Square;
+  const std::vector<std::vector<EdgeChamfer>> chamfers =
+      plain ? edge_chamfers(pm, edges) : edge_chamfers(pm, edges, thickness, options.boundary, options.side);
   ThickPanels thick;
   const bool has_thickness = options.thickness > 0.0;
   if (has_thickness) {
-    thick = thicken_panels(pm, edges, options.thickness / scale, options.side);
+    ThickOptions to;
+    to.thickness = options.thickness / scale;
+    to.side = options.side;
+    to.boundary = options.boundary;
+    if (!options.panel_thickness.empty())
+      for (const double t : thickness) to.panel_thickness.push_back(t / scale);
+    thick = thicken_panels(pm, edges, to);
     list.max_node_spread = thick.max_spread * scale;
     list.straight_corners = thick.straight_corners;
     list.projected_corners = thick.projected_corners;
   }
-  const std::vector<PanelPart> basic = panel_parts(pm);
   if (has_thickness) {
     for (size_t v = 0; v < pm.vertices.size(); ++v) {
       if (!(thick.node_spread[v] > 1e-9 * thick.thickness)) continue;
@@ -64,7 +109,7 @@ PartsList make_parts_list(const PanelMesh& pm, const FabricationOptions& options
     PanelOutline& o = row.outline;
     o.panel = row.part.panel;
     o.label = row.part.label;
-    o.thickness = has_thickness ? options.thickness : 0.0;
+    o.thickness = has_thickness ? thickness[p] : 0.0;
     const std::vector<int>& poly = pm.panels[p];
     // The frame sits at the first corner, its normal the panel's: counter-clockwise panels
     // stay counter-clockwise in 2D (PlaneFrame is right-handed).

@@ -1,7 +1,7 @@
 // The fabrication parts list as CSV and JSON.
-#include <cstdio>
 #include <string>
 
+#include "core/fabricate/number_text.h"
 #include "core/fabricate/parts_list.h"
 
 namespace ff {
@@ -9,11 +9,7 @@ namespace ff {
 namespace {
 
 // 12 significant digits: far below any cutting tolerance, and readable in a spreadsheet.
-std::string num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.12g", v);
-  return buf;
-}
+std::string num(double v) { return number_text(v, 12); }
 
 template <typename T, typename F>
 std::string joined(const std::vector<T>& items, const char* sep, F format) {

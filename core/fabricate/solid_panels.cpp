@@ -2,23 +2,36 @@
 
 #include <cstdio>
 
+#include "core/fabricate/parts_list.h"
+
 namespace ff {
 
 std::string solid_panels_obj(const PanelMesh& pm, double thickness, MaterialSide side) {
-  const ThickPanels thick = thicken_panels(pm, panel_edges(pm), thickness, side);
+  ThickOptions options;
+  options.thickness = thickness;
+  options.side = side;
+  return solid_panels_obj(pm, options, 1.0, "");
+}
+
+std::string solid_panels_obj(const PanelMesh& pm, const ThickOptions& options, double scale, const std::string& units) {
+  const MaterialSide side = options.side;
+  const ThickPanels thick = thicken_panels(pm, panel_edges(pm), options);
+  const std::vector<PanelPart> parts = panel_parts(pm);
   std::string obj = "# flatfacet solid panels: outer face, inner face, edge cuts; one object per panel\n";
+  if (!units.empty()) obj += "# units: " + units + "\n";
   char buf[128];
   long base = 1;
   for (size_t p = 0; p < pm.panels.size(); ++p) {
     const std::vector<int>& poly = pm.panels[p];
     const long k = static_cast<long>(poly.size());
-    obj += "o P" + std::to_string(p + 1) + "\n";
+    obj += "o " + parts[p].label + "\n";
     for (const int v : poly) {
-      const Vec3& x = pm.vertices[static_cast<size_t>(v)];
+      const Vec3 x = pm.vertices[static_cast<size_t>(v)] * scale;
       std::snprintf(buf, sizeof buf, "v %.17g %.17g %.17g\n", x.x(), x.y(), x.z());
       obj += buf;
     }
-    for (const Vec3& x : thick.inner[p]) {
+    for (const Vec3& inner : thick.inner[p]) {
+      const Vec3 x = inner * scale;
       std::snprintf(buf, sizeof buf, "v %.17g %.17g %.17g\n", x.x(), x.y(), x.z());
       obj += buf;
     }

@@ -42,15 +42,61 @@ Plane edge_cut_plane(const Vec3& n, const Vec3* neighbour, const Vec3& a, const 
   return Plane{m, m.dot(0.5 * (a + b))};
 }
 
+Plane unequal_cut_plane(const Vec3& n, const Plane& own_offset, const Plane& other_offset, const Vec3& a,
+                        const Vec3& b) {
+  const Vec3 e = (b - a).normalized();
+  const Vec3 mid = 0.5 * (a + b);
+  Vec3 y;
+  if (!solve3(own_offset.normal, own_offset.offset, other_offset.normal, other_offset.offset, e, e.dot(mid), y))
+    return edge_cut_plane(n, nullptr, a, b);
+  Vec3 d = y - mid;
+  d -= d.dot(e) * e;
+  const Vec3 m = e.cross(d).normalized();
+  if (!m.allFinite()) return edge_cut_plane(n, nullptr, a, b);
+  return Plane{m, m.dot(mid)};
+}
+
 ThickPanels thicken_panels(const PanelMesh& pm, const PanelEdges& edges, double thickness, MaterialSide side) {
-  if (!(thickness > 0.0) || !std::isfinite(thickness))
-    throw InputError("thickness: expected a positive number, got " + std::to_string(thickness));
+  ThickOptions options;
+  options.thickness = thickness;
+  options.side = side;
+  return thicken_panels(pm, edges, options);
+}
+
+ThickPanels thicken_panels(const PanelMesh& pm, const PanelEdges& edges, const ThickOptions& options) {
+  const double thickness = options.thickness;
+  const MaterialSide side = options.side;
+  auto check = [](double t) {
+    if (!(t > 0.0) || !std::isfinite(t))
+      throw InputError("thickness: expected a positive number, got " + std::to_string(t));
+  };
+  check(thickness);
   ThickPanels out;
   out.thickness = thickness;
   out.side = side;
-  const double shift = side == MaterialSide::Inside ? -thickness : thickness;
   const size_t np = pm.panels.size();
-  for (size_t p = 0; p < np; ++p) out.offset_planes.push_back({pm.plane_normals[p], pm.plane_offsets[p] + shift});
+  if (!options.panel_thickness.empty() && options.panel_thickness.size() != np)
+    throw InputError("panel thickness: expected one per panel (" + std::to_string(np) + "), got " +
+                     std::to_string(options.panel_thickness.size()));
+  out.panel_thickness = options.panel_thickness.empty() ? std::vector<double>(np, thickness) : options.panel_thickness;
+  for (size_t p = 0; p < np; ++p) {
+    check(out.panel_thickness[p]);
+    const double shift = side == MaterialSide::Inside ? -out.panel_thickness[p] : out.panel_thickness[p];
+    out.offset_planes.push_back({pm.plane_normals[p], pm.plane_offsets[p] + shift});
+  }
+  // The cut plane of panel p's edge a -> b against panel q (-1: boundary).
+  auto cut_plane = [&](size_t p, int q, const Vec3& a, const Vec3& b) {
+    const Vec3& n = pm.plane_normals[p];
+    if (q < 0) {
+      if (options.boundary.kind == BoundaryCut::Kind::Square) return edge_cut_plane(n, nullptr, a, b);
+      const Vec3 e = (b - a).normalized();
+      const Vec3 m = e.cross(boundary_cut_direction(n, e, options.boundary, side)).normalized();
+      return Plane{m, m.dot(0.5 * (a + b))};
+    }
+    const size_t qi = static_cast<size_t>(q);
+    if (out.panel_thickness[p] == out.panel_thickness[qi]) return edge_cut_plane(n, &pm.plane_normals[qi], a, b);
+    return unequal_cut_plane(n, out.offset_planes[p], out.offset_planes[qi], a, b);
+  };
   out.inner.resize(np);
   out.corner_fallback.resize(np);
   out.node_spread.assign(pm.vertices.size(), 0.0);
@@ -101,8 +147,8 @@ ThickPanels thicken_panels(const PanelMesh& pm, const PanelEdges& edges, double 
       const Vec3& prev = pm.vertices[static_cast<size_t>(poly[(i + k - 1) % k])];
       const Vec3& next = pm.vertices[static_cast<size_t>(poly[(i + 1) % k])];
       const int qp = edges.neighbour[p][(i + k - 1) % k], qn = edges.neighbour[p][i];
-      const Plane cut_prev = edge_cut_plane(n, qp >= 0 ? &pm.plane_normals[static_cast<size_t>(qp)] : nullptr, prev, x);
-      const Plane cut_next = edge_cut_plane(n, qn >= 0 ? &pm.plane_normals[static_cast<size_t>(qn)] : nullptr, x, next);
+      const Plane cut_prev = cut_plane(p, qp, prev, x);
+      const Plane cut_next = cut_plane(p, qn, x, next);
       Vec3& y = out.inner[p][i];
       if (solve3(n, own.offset, cut_prev.normal, cut_prev.offset, cut_next.normal, cut_next.offset, y)) continue;
       // Straight corner: the edges run on (nearly) one line, so cut across it at the corner.

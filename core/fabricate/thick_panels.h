@@ -20,22 +20,32 @@
 // corner: collinear edges) the plane through the corner perpendicular to the edges stands
 // in for one; where even that fails (a panel folded back onto its neighbour), the corner is
 // projected onto the offset plane and counted in `projected_corners`.
+//
+// Per-panel thickness (chamfers.h): between panels of different thickness the cut plane holds
+// the outer edge and the line where the two offset planes meet, which is still on both, so
+// valence-3 nodes still get the one point of the three offset planes. Boundary edges may be
+// cut other than square (BoundaryCut, chamfers.h).
 #include <vector>
 
+#include "core/fabricate/chamfers.h"
 #include "core/fabricate/panel_edges.h"
 #include "core/panels/panel_mesh.h"
 #include "core/panels/plane.h"
 
 namespace ff {
 
-// Inside: the material lies behind the panels' normals (for a closed, outward-oriented
-// shape: inwards), the outer faces are the designed surface. Outside: in front of them.
-enum class MaterialSide { Inside, Outside };
+struct ThickOptions {
+  double thickness = 0.0;  // > 0, in the panel mesh's units
+  MaterialSide side = MaterialSide::Inside;
+  std::vector<double> panel_thickness;  // empty, or one per panel (> 0, mesh units) instead of `thickness`
+  BoundaryCut boundary;
+};
 
 struct ThickPanels {
-  double thickness = 0.0;  // in the panel mesh's units
+  double thickness = 0.0;  // in the panel mesh's units (the default of ThickOptions)
   MaterialSide side = MaterialSide::Inside;
-  std::vector<Plane> offset_planes;      // per panel: its plane moved by t towards the material
+  std::vector<double> panel_thickness;   // per panel, mesh units
+  std::vector<Plane> offset_planes;      // per panel: its plane moved by its t towards the material
   std::vector<std::vector<Vec3>> inner;  // per panel, per corner (the panel's order)
   // Per panel, per corner: 0 solved exactly, 1 straight corner (see above), 2 projected.
   std::vector<std::vector<char>> corner_fallback;
@@ -51,9 +61,17 @@ struct ThickPanels {
 // thickness > 0 (throws InputError otherwise), in the units of the panel mesh.
 ThickPanels thicken_panels(const PanelMesh& panels, const PanelEdges& edges, double thickness,
                            MaterialSide side = MaterialSide::Inside);
+// The same with per-panel thicknesses and a boundary cut (each thickness checked likewise).
+ThickPanels thicken_panels(const PanelMesh& panels, const PanelEdges& edges, const ThickOptions& options);
 
 // The cut plane of panel edge a -> b (see above): the bisector with the neighbour's unit
 // normal, or the square cut when `neighbour` is null or (near) parallel. Exposed for tests.
 Plane edge_cut_plane(const Vec3& normal, const Vec3* neighbour, const Vec3& a, const Vec3& b);
+
+// The cut plane of edge a -> b of a panel (unit `normal`, offset plane `own_offset`) against
+// a neighbour of another thickness (offset plane `other_offset`): through the edge and the
+// line where the offset planes meet; the square cut where they do not (coplanar).
+Plane unequal_cut_plane(const Vec3& normal, const Plane& own_offset, const Plane& other_offset, const Vec3& a,
+                        const Vec3& b);
 
 }  // namespace ff

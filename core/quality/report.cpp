@@ -263,9 +263,12 @@ QualityReport measure_quality(const TriMesh& input, const MeshTopology& input_to
     min_angle = std::min(min_angle, min_interior_angle_deg(poly2d));
     // Glass: judged on the counter-clockwise outline (a clockwise one is flipped anyway).
     const bool concave = signed_area(poly2d) > 0.0 && !reflex_corners(poly2d).empty();
-    const int acute = options.min_corner_angle_deg > 0.0
-                          ? static_cast<int>(acute_corners(poly2d, options.min_corner_angle_deg).size())
-                          : 0;
+    int acute = 0;
+    if (options.min_corner_angle_deg > 0.0) {
+      const std::vector<int> corners = acute_corners(poly2d, options.min_corner_angle_deg);
+      acute = static_cast<int>(corners.size());
+      for (const int i : corners) r.acute_corner_vertex_ids.push_back(poly[static_cast<size_t>(i)]);
+    }
     r.concave_panels += concave;
     r.acute_corners += acute;
 

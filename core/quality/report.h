@@ -75,6 +75,8 @@ struct QualityReport {
   int concave_panels = 0;
   int acute_corners = 0;
   double min_corner_angle_target_deg = 0.0;
+  // The panel vertices at those acute corners (one entry per corner, in panel order).
+  std::vector<int> acute_corner_vertex_ids;
 };
 
 // input_topology = build_topology(input). D = sqrt(total_area(input) / panels). Throws

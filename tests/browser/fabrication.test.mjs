@@ -1,32 +1,17 @@
 // Fabrication on the page, in headless Chromium against the built site: a 20 mm thickness,
 // the parts list, cut sheets (SVG, parsed by the browser's DOMParser) and solid panels
 // downloaded and checked; the thick-panel view; a share link carrying the settings.
+// Glass mode (convex panels, acute corners marked), a panel's own thickness set by clicking
+// it (in the parts list and carried by a share link).
 // Screenshots: the thick panels and the cut sheets (the SVG rendered in a page).
 import assert from 'node:assert/strict';
 import { join } from 'node:path';
-import { after, before, test } from 'node:test';
-import { download, launchBrowser, openPage, parseObj, remesh, repo, screenshot, selectExample, setPanels, solveAfter, startServer, waitForDone } from './harness.mjs';
+import { test } from 'node:test';
+import { browserSuite, download, parseObj, remesh, repo, screenshot, selectExample, setPanels, solveAfter, waitForDone } from './harness.mjs';
 
-let server;
-let browser;
-before(async () => {
-  server = await startServer();
-  browser = await launchBrowser();
-});
-after(async () => {
-  await browser?.close();
-  await server?.close();
-});
-
-async function withPage(url, run) {
-  const { context, page, errors } = await openPage(browser, url);
-  try {
-    await run(page);
-    assert.deepEqual(errors, [], 'no page or console errors');
-  } finally {
-    await context.close();
-  }
-}
+const suite = browserSuite();
+const { withPage } = suite;
+const server = suite; // server.url: the built site
 
 const fabrications = (page) => page.evaluate(() => Number(document.body.dataset.fabrications ?? 0));
 
@@ -39,8 +24,8 @@ async function fabricatedAfter(page, action) {
 
 async function setThickness(page, value) {
   await fabricatedAfter(page, async () => {
-    await page.getByLabel('Thickness').fill(String(value));
-    await page.getByLabel('Thickness').press('Tab');
+    await page.getByLabel('Thickness', { exact: true }).fill(String(value));
+    await page.getByLabel('Thickness', { exact: true }).press('Tab');
   });
 }
 
@@ -130,7 +115,7 @@ test('a share link carries the fabrication settings', () =>
     const link = await page.getByLabel('Share link').inputValue();
     await withPage(link, async (opened) => {
       assert.equal(await waitForDone(opened), 30);
-      assert.equal(await opened.getByLabel('Thickness').inputValue(), '18');
+      assert.equal(await opened.getByLabel('Thickness', { exact: true }).inputValue(), '18');
       assert.equal(await opened.locator('#fab-side').inputValue(), 'outside');
       const parts = JSON.parse((await download(opened, 'Parts list JSON')).text);
       assert.equal(parts.thickness, 18);
@@ -151,4 +136,99 @@ test('nodes needing extra chamfer are marked, with a legend line', () =>
     await page.getByLabel('Show thick panels').check();
     await page.waitForTimeout(300);
     await screenshot(page, 'barrel-vault-120-thick-spread-nodes');
+  }));
+
+// Every face of a panels OBJ is convex in its own plane (Newell normal; collinear corners
+// allowed).
+function allConvex({ vertices, faces }) {
+  for (const face of faces) {
+    const p = face.map((i) => vertices[i]);
+    const n = [0, 0, 0];
+    for (let i = 0; i < p.length; i++) {
+      const a = p[i];
+      const b = p[(i + 1) % p.length];
+      n[0] += (a[1] - b[1]) * (a[2] + b[2]);
+      n[1] += (a[2] - b[2]) * (a[0] + b[0]);
+      n[2] += (a[0] - b[0]) * (a[1] + b[1]);
+    }
+    const size = Math.hypot(...n);
+    for (let i = 0; i < p.length; i++) {
+      const a = p[(i + p.length - 1) % p.length];
+      const b = p[i];
+      const c = p[(i + 1) % p.length];
+      const u = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
+      const v = [c[0] - b[0], c[1] - b[1], c[2] - b[2]];
+      const turn = (u[1] * v[2] - u[2] * v[1]) * n[0] + (u[2] * v[0] - u[0] * v[2]) * n[1] + (u[0] * v[1] - u[1] * v[0]) * n[2];
+      if (turn < -1e-9 * size * Math.hypot(...u) * Math.hypot(...v)) return false;
+    }
+  }
+  return true;
+}
+
+test('glass mode gives convex panels; a minimum corner angle marks the acute corners left', () =>
+  withPage(server.url, async (page) => {
+    await waitForDone(page);
+    assert.equal(await solveAfter(page, () => selectExample(page, 'freeform_roof')), 120);
+    const plain = parseObj((await download(page, 'Export OBJ')).text);
+    await page.getByLabel('Glass mode').check();
+    await setPanels(page, 60);
+    assert.ok((await solveAfter(page, () => remesh(page))) >= 60, 'glass pieces add panels');
+    const glass = parseObj((await download(page, 'Export OBJ')).text);
+    assert.ok(allConvex(glass), 'every glass panel is convex');
+    assert.equal(await page.locator('#viewport').getAttribute('data-acute-corners'), '0', 'no minimum angle: nothing marked');
+    // A minimum the solver cannot meet everywhere: what remains is marked and counted.
+    await page.getByLabel('Min corner angle').fill('50');
+    await page.getByLabel('Min corner angle').press('Tab');
+    await solveAfter(page, () => remesh(page));
+    const marked = Number(await page.locator('#viewport').getAttribute('data-acute-corners'));
+    assert.ok(marked > 0, 'acute corners are marked');
+    assert.match(await page.locator('#stats').textContent(), new RegExp(`Acute corners\\s*${marked}`));
+    await screenshot(page, 'freeform-roof-glass-acute-corners');
+    assert.ok(plain.faces.length > 0);
+  }));
+
+test('a clicked panel gets its own thickness, boundary edges a bevel: in the parts list and in a share link', () =>
+  withPage(server.url, async (page) => {
+    await saddle(page, 30);
+    await setThickness(page, 20);
+    const input = page.getByLabel('Panel thickness');
+    assert.equal(await input.isDisabled(), true, 'nothing selected yet');
+    const box = await page.locator('#viewport canvas').boundingBox();
+    await page.mouse.click(box.x + box.width / 2, box.y + box.height / 2);
+    const label = await page.waitForFunction(() => document.body.dataset.selectedPanel).then((h) => h.jsonValue());
+    assert.match(label, /^P\d+$/);
+    assert.equal(await input.isDisabled(), false);
+    await fabricatedAfter(page, async () => {
+      await input.fill('35');
+      await input.press('Tab');
+    });
+    assert.match(await page.locator('#fab-selected-panel').textContent(), new RegExp(`${label} \\(35 mm\\)`));
+    const rowsOf = (text) => text.trim().split('\n');
+    const parts = rowsOf((await download(page, 'Export parts list')).text);
+    const thickness = Object.fromEntries(parts.slice(1).filter((row) => /^\d+,P\d+,/.test(row)).map((row) => [row.split(',')[1], csvColumn([parts[0], row], 'thickness')[0]]));
+    assert.equal(thickness[label], '35');
+    assert.equal(Object.values(thickness).filter((t) => t === '20').length, 29);
+    await page.getByLabel('Show thick panels').check();
+    await page.waitForTimeout(300);
+    await screenshot(page, 'saddle-30-one-panel-35mm');
+    // Boundary edges bevelled 15 degrees from square; the interior chamfers stay.
+    await fabricatedAfter(page, () => page.getByLabel('Boundary edges').selectOption('bevel'));
+    await fabricatedAfter(page, async () => {
+      await page.getByLabel('Boundary bevel (degrees)').fill('15');
+      await page.getByLabel('Boundary bevel (degrees)').press('Tab');
+    });
+    const bevelled = JSON.parse((await download(page, 'Parts list JSON')).text);
+    const boundary = bevelled.panels.flatMap((p) => p.edges).filter((e) => e.neighbour === null);
+    assert.ok(boundary.length > 0 && boundary.every((e) => Math.abs(e.chamfer_deg - 15) < 1e-9));
+
+    await page.getByRole('button', { name: 'Copy share link' }).click();
+    await page.waitForFunction(() => location.hash.startsWith('#v1='));
+    const link = await page.getByLabel('Share link').inputValue();
+    await withPage(link, async (opened) => {
+      assert.equal(await waitForDone(opened), 30);
+      const json = JSON.parse((await download(opened, 'Parts list JSON')).text);
+      assert.equal(json.panels.find((p) => p.label === label).thickness, 35);
+      assert.equal(await opened.getByLabel('Boundary edges').inputValue(), 'bevel');
+      assert.ok(json.panels.flatMap((p) => p.edges).some((e) => e.neighbour === null && Math.abs(e.chamfer_deg - 15) < 1e-9));
+    });
   }));

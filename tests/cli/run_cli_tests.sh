@@ -265,6 +265,26 @@ assert all(n == 1 and c[(b, a)] == 1 for c in objects for (a, b), n in c.items()
 PY
 grep -q "<svg" "$tmp/fab.svg" && ok || bad "remesh --sheets wrote no SVG"
 
+# Per-panel thickness, a boundary bevel, and the solid panels in the --units (mm here).
+"$bin" remesh "$meshes/epcot.off" --panels 30 --out "$tmp/pt.obj" --parts "$tmp/pt.json" --thickness 20 --units mm \
+  --panel-thickness P1=40,P2=10 --boundary-cut 15 --solid "$tmp/pt.solid.obj" 2>/dev/null
+code=$?
+[ "$code" = 0 ] || [ "$code" = 3 ] && python3 - "$tmp/pt.obj" "$tmp/pt.json" "$tmp/pt.solid.obj" <<'PY' && ok || bad "remesh --panel-thickness (exit $code)"
+import sys
+obj, parts, solid = sys.argv[1:]
+import json
+d = json.load(open(parts))
+t = {p["label"]: p["thickness"] for p in d["panels"]}
+assert t["P1"] == 40 and t["P2"] == 10 and all(v == 20 for k, v in t.items() if k not in ("P1", "P2")), t
+def coords(path):
+    return [float(x) for line in open(path) if line.startswith("v ") for x in line.split()[1:]]
+assert "# units: mm" in open(solid).read()
+ratio = max(map(abs, coords(solid))) / max(map(abs, coords(obj)))
+assert 990 < ratio < 1010, ratio  # metres -> millimetres
+PY
+"$bin" remesh "$meshes/epcot.off" --panels 30 --parts "$tmp/bad.json" --thickness 20 --panel-thickness P99=3 >/dev/null 2>"$tmp/err.txt"
+[ "$?" != 0 ] && grep -q "P99" "$tmp/err.txt" && ok || bad "remesh --panel-thickness with an unknown label"
+
 # Neither --out nor --report: one summary line on stdout and nothing written.
 mkdir -p "$tmp/quiet"
 (cd "$tmp/quiet" && "$bin" remesh "$meshes/epcot.off" --panels 30 >"$tmp/stdout.txt" 2>"$tmp/err.txt")

@@ -53,5 +53,27 @@ TEST(FabricationParamsJson, ErrorsNameTheField) {
   EXPECT_NE(error_of("[]").find("object"), std::string::npos);
 }
 
+TEST(FabricationParamsJson, PanelThicknessAndBoundaryCut) {
+  const FabricationSettings s = fabrication_settings_from_json(
+      R"({"thickness": 20, "panelThickness": {"P3": 30, "P12a": 8}, "boundaryCut": "bevel", "boundaryBevelDeg": -15})");
+  ASSERT_EQ(s.options.panel_thickness.size(), 2u);
+  EXPECT_EQ(s.options.panel_thickness[0].first, "P3");
+  EXPECT_EQ(s.options.panel_thickness[0].second, 30.0);
+  EXPECT_EQ(s.options.panel_thickness[1].first, "P12a");
+  EXPECT_EQ(s.options.boundary.kind, BoundaryCut::Kind::Bevel);
+  EXPECT_EQ(s.options.boundary.bevel_deg, -15.0);
+  const FabricationSettings plumb = fabrication_settings_from_json(R"({"boundaryCut": "plumb", "upAxis": "y"})");
+  EXPECT_EQ(plumb.options.boundary.kind, BoundaryCut::Kind::Plumb);
+  EXPECT_EQ(plumb.options.boundary.up, Vec3::UnitY());
+  EXPECT_EQ(fabrication_settings_from_json("{}").options.boundary.kind, BoundaryCut::Kind::Square);
+  EXPECT_NE(error_of(R"({"panelThickness": {"P3": 0}})").find("'panelThickness.P3'"), std::string::npos);
+  EXPECT_NE(error_of(R"({"panelThickness": {"Q3": 1}})").find("not a panel label"), std::string::npos);
+  EXPECT_NE(error_of(R"({"panelThickness": {"P0": 1}})").find("not a panel label"), std::string::npos);
+  EXPECT_NE(error_of(R"({"panelThickness": [1]})").find("'panelThickness'"), std::string::npos);
+  EXPECT_NE(error_of(R"({"boundaryCut": "round"})").find("'boundaryCut'"), std::string::npos);
+  EXPECT_NE(error_of(R"({"boundaryBevelDeg": 70})").find("'boundaryBevelDeg'"), std::string::npos);
+  EXPECT_NE(error_of(R"({"upAxis": "w"})").find("'upAxis'"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace ff

@@ -2,8 +2,8 @@
 // validation by field against LIMITS, a round trip, and old links without them.
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
-import { DEFAULT_FABRICATION, validateFabrication } from '../../build/web-tests/fabricationParams.js';
-import { DEFAULT_PARAMS, LIMITS } from '../../build/web-tests/params.js';
+import { DEFAULT_FABRICATION, toFabricationParams, validateFabrication } from '../../build/web-tests/fabricationParams.js';
+import { DEFAULT_PARAMS, LIMITS, toRemeshParams, validateParams } from '../../build/web-tests/params.js';
 import { hashToState, stateToHash } from '../../build/web-tests/share.js';
 
 const mesh = { kind: 'example', id: 'saddle' };
@@ -43,4 +43,48 @@ test('a link carries the fabrication settings; an old link without them still op
   const hostile = hashToState(stateToHash({ mesh, params: DEFAULT_PARAMS, history: [], fabrication: { ...fabrication, thickness: -5 } }));
   assert.equal(hostile.ok, false);
   assert.match(hostile.message, /in the link, Thickness/);
+});
+
+test('per-panel thickness and boundary cuts: validated, sorted, carried by links, sent with a thickness only', () => {
+  const fabrication = { ...DEFAULT_FABRICATION, thickness: 20, panelThickness: { P7: 12, P3a: 30 }, boundaryCut: 'bevel', boundaryBevelDeg: -10, upAxis: 'y' };
+  const checked = validateFabrication(fabrication);
+  assert.equal(checked.ok, true, checked.message);
+  assert.deepEqual(Object.keys(checked.value.panelThickness), ['P3a', 'P7'], 'keys sorted: equal settings stringify equally');
+  const decoded = hashToState(stateToHash({ mesh, params: DEFAULT_PARAMS, history: [], fabrication: checked.value }));
+  assert.equal(decoded.ok, true, decoded.message);
+  assert.deepEqual(decoded.value.fabrication, checked.value);
+  assert.deepEqual(toFabricationParams(checked.value).panelThickness, { P3a: 30, P7: 12 });
+  assert.equal(toFabricationParams({ ...checked.value, thickness: 0 }).panelThickness, undefined, 'the core needs a common thickness');
+  // Settings stored before these fields existed still validate, to the defaults.
+  const { panelThickness, boundaryCut, boundaryBevelDeg, upAxis, ...old } = DEFAULT_FABRICATION;
+  assert.deepEqual(validateFabrication(old), { ok: true, value: DEFAULT_FABRICATION });
+  const bad = [
+    [{ panelThickness: { Q1: 3 } }, /not a panel label/],
+    [{ panelThickness: { P0: 3 } }, /not a panel label/],
+    [{ panelThickness: { P1: 0 } }, /Panel thickness of P1/],
+    [{ panelThickness: [3] }, /Panel thickness/],
+    [{ boundaryCut: 'round' }, /Boundary edges/],
+    [{ boundaryBevelDeg: 61 }, /Boundary bevel/],
+    [{ upAxis: 'w' }, /Up axis/],
+  ];
+  for (const [change, pattern] of bad) {
+    const result = validateFabrication({ ...DEFAULT_FABRICATION, ...change });
+    assert.equal(result.ok, false, JSON.stringify(change));
+    assert.match(result.message, pattern);
+  }
+});
+
+test('glass mode and the minimum corner angle: validated, defaulted for old links, sent to the core', () => {
+  const glass = validateParams({ ...DEFAULT_PARAMS, glass: true, minCornerAngleDeg: 15 });
+  assert.equal(glass.ok, true, glass.message);
+  assert.equal(toRemeshParams(glass.value).glass, true);
+  assert.equal(toRemeshParams(glass.value).minCornerAngleDeg, 15);
+  const { glass: _g, minCornerAngleDeg: _m, ...old } = DEFAULT_PARAMS;
+  assert.deepEqual(validateParams(old), { ok: true, value: DEFAULT_PARAMS });
+  assert.match(validateParams({ ...DEFAULT_PARAMS, minCornerAngleDeg: 61 }).message, /Min corner angle/);
+  assert.match(validateParams({ ...DEFAULT_PARAMS, minCornerAngleDeg: -1 }).message, /Min corner angle/);
+  assert.match(validateParams({ ...DEFAULT_PARAMS, glass: 'yes' }).message, /Glass mode/);
+  const link = hashToState(stateToHash({ mesh, params: glass.value, history: [] }));
+  assert.equal(link.ok, true, link.message);
+  assert.deepEqual(link.value.params, glass.value);
 });

@@ -157,6 +157,8 @@ test('form values are validated the same way, and map onto the wasm parameters',
     teleport: true,
     singlePointNodes: false,
     optimizePlanes: true,
+    glass: false,
+    minCornerAngleDeg: 0,
   });
 });
 

@@ -405,7 +405,7 @@ export class App {
     this.save({ mesh: mesh.design, params, history: solved?.chain ? solved.chain.slice(0, -1) : [], fabrication: this.fabrication.current });
   }
 
-  private exportFile(kind: 'obj' | 'csv'): void {
+  private exportFile(kind: 'obj'): void {
     const mesh = this.machine.mesh;
     const solved = this.machine.solved;
     if (mesh && solved) this.outputs.exportFile(kind, mesh.fileName, solved.result);

@@ -2,6 +2,7 @@
 // (fabricationParams.ts); the number inputs' ranges come from LIMITS.
 import type { LengthUnitName } from '@flatfacet/wasm';
 import { element } from './dom.ts';
+import { readNumber, setRange } from './formInputs.ts';
 import { validateFabrication, type FabricationSettings } from './fabricationParams.ts';
 import { LIMITS, type Checked } from './params.ts';
 
@@ -12,22 +13,31 @@ export class FabricationForm {
   private readonly side = element('fab-side', HTMLSelectElement);
   private readonly sheetWidth = element('fab-sheet-width', HTMLInputElement);
   private readonly sheetHeight = element('fab-sheet-height', HTMLInputElement);
+  private readonly boundaryCut = element('fab-boundary-cut', HTMLSelectElement);
+  private readonly boundaryBevel = element('fab-boundary-bevel', HTMLInputElement);
+  private readonly upAxis = element('fab-up-axis', HTMLSelectElement);
+  private panelThickness: Record<string, number> = {}; // set by clicking panels (panelThickness.ts)
 
   constructor() {
-    this.thickness.min = String(LIMITS.thickness.min);
-    this.thickness.max = String(LIMITS.thickness.max);
-    for (const input of [this.sheetWidth, this.sheetHeight]) {
-      input.min = String(LIMITS.sheetSize.min);
-      input.max = String(LIMITS.sheetSize.max);
-    }
+    setRange(this.thickness, LIMITS.thickness);
+    setRange(this.sheetWidth, LIMITS.sheetSize);
+    setRange(this.sheetHeight, LIMITS.sheetSize);
+    setRange(this.boundaryBevel, LIMITS.boundaryBevelDeg);
+    this.boundaryCut.addEventListener('change', () => this.showBoundaryInputs());
+  }
+
+  // The bevel angle only for a bevel, the up axis only for a plumb cut.
+  private showBoundaryInputs(): void {
+    this.boundaryBevel.hidden = this.boundaryCut.value !== 'bevel';
+    this.upAxis.hidden = this.boundaryCut.value !== 'plumb';
   }
 
   onChange(callback: () => void): void {
-    for (const input of [this.thickness, this.units, this.meshUnits, this.side, this.sheetWidth, this.sheetHeight]) input.addEventListener('change', callback);
+    for (const input of [this.thickness, this.units, this.meshUnits, this.side, this.sheetWidth, this.sheetHeight, this.boundaryCut, this.boundaryBevel, this.upAxis]) input.addEventListener('change', callback);
   }
 
   read(): Checked<FabricationSettings> {
-    const number = (input: HTMLInputElement): number | string => (input.value.trim() === '' ? '' : Number(input.value));
+    const number = readNumber;
     return validateFabrication({
       thickness: number(this.thickness),
       side: this.side.value,
@@ -35,6 +45,10 @@ export class FabricationForm {
       meshUnits: this.meshUnits.value,
       sheetWidth: number(this.sheetWidth),
       sheetHeight: number(this.sheetHeight),
+      panelThickness: this.panelThickness,
+      boundaryCut: this.boundaryCut.value,
+      boundaryBevelDeg: number(this.boundaryBevel),
+      upAxis: this.upAxis.value,
     });
   }
 
@@ -45,5 +59,10 @@ export class FabricationForm {
     this.side.value = settings.side;
     this.sheetWidth.value = String(settings.sheetWidth);
     this.sheetHeight.value = String(settings.sheetHeight);
+    this.panelThickness = { ...settings.panelThickness };
+    this.boundaryCut.value = settings.boundaryCut;
+    this.boundaryBevel.value = String(settings.boundaryBevelDeg);
+    this.upAxis.value = settings.upAxis;
+    this.showBoundaryInputs();
   }
 }

@@ -2,7 +2,8 @@
 // show, their downloads, numbers, and the thick-panel view. The controller (app.ts) says when
 // the panels change and forwards the worker's answers; this asks the worker for outputs.
 import { countOutcome, element } from './dom.ts';
-import { DEFAULT_FABRICATION, toFabricationParams, type FabricationSettings } from './fabricationParams.ts';
+import { DEFAULT_FABRICATION, toFabricationParams, validateFabrication, type FabricationSettings } from './fabricationParams.ts';
+import { PanelThicknessControl } from './panelThickness.ts';
 import { FabricationForm } from './fabricationForm.ts';
 import { renderFabricationStats } from './fabricationStats.ts';
 import { downloadText } from './exports.ts';
@@ -34,9 +35,12 @@ export class FabricationPanel {
   private hasPanels = false;
   private job: number | null = null; // the request whose answer is awaited
   private result: FabricationResult | null = null;
+  private readonly panelThickness: PanelThicknessControl;
 
   constructor(private readonly host: FabricationHost) {
+    this.panelThickness = new PanelThicknessControl(host.viewer, (label, value) => this.setPanelThickness(label, value));
     this.form.write(this.settings);
+    this.panelThickness.setValues(this.settings.panelThickness, this.settings.units);
     this.form.onChange(() => this.formChanged());
     this.buttons.csv.addEventListener('click', () => this.download('csv'));
     this.buttons.json.addEventListener('click', () => this.download('json'));
@@ -54,6 +58,7 @@ export class FabricationPanel {
   write(settings: FabricationSettings): void {
     this.settings = { ...settings };
     this.form.write(this.settings);
+    this.panelThickness.setValues(this.settings.panelThickness, this.settings.units);
     if (this.hasPanels) this.request();
   }
 
@@ -61,6 +66,7 @@ export class FabricationPanel {
   panelsChanged(hasPanels: boolean): void {
     this.hasPanels = hasPanels;
     this.result = null;
+    this.panelThickness.clear();
     this.job = null;
     if (hasPanels) this.request();
     else this.show();
@@ -95,8 +101,23 @@ export class FabricationPanel {
       return;
     }
     this.settings = checked.value;
+    this.panelThickness.setValues(this.settings.panelThickness, this.settings.units);
     this.host.settingsChanged();
     if (this.hasPanels) this.request();
+  }
+
+  // A clicked panel's own thickness (null: the common one again).
+  private setPanelThickness(label: string, value: number | null): void {
+    const panelThickness = { ...this.settings.panelThickness };
+    if (value === null) delete panelThickness[label];
+    else panelThickness[label] = value;
+    const checked = validateFabrication({ ...this.settings, panelThickness });
+    if (!checked.ok) {
+      this.host.error(checked.message);
+      return;
+    }
+    this.write(checked.value);
+    this.host.settingsChanged();
   }
 
   private request(): void {
@@ -105,7 +126,8 @@ export class FabricationPanel {
   }
 
   private show(): void {
-    renderFabricationStats(this.statsBox, this.result);
+    this.panelThickness.setResult(this.result);
+    renderFabricationStats(this.statsBox, this.result, this.settings.meshUnits);
     const marked = this.host.viewer.setFabrication(this.result?.innerPositions ?? null, this.result?.spread ?? null);
     this.legend.hidden = marked === 0;
     this.legendText.textContent = `${marked} node${marked === 1 ? '' : 's'} needing extra chamfer (inner corners up to ${this.result ? Number(this.result.spread.maxSpread.toPrecision(3)) : 0} ${this.result?.spread.units ?? ''} apart)`;

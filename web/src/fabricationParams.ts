@@ -14,7 +14,16 @@ export interface FabricationSettings {
   meshUnits: LengthUnitName;
   sheetWidth: number; // in `units`
   sheetHeight: number;
+  panelThickness: Record<string, number>; // by panel label ("P3", "P12a"), in `units`; keys sorted
+  boundaryCut: BoundaryCutName;
+  boundaryBevelDeg: number; // for 'bevel': from square, positive makes the inner face smaller
+  upAxis: 'x' | 'y' | 'z'; // for 'plumb'
 }
+
+export type BoundaryCutName = 'square' | 'plumb' | 'bevel';
+export const BOUNDARY_CUTS: readonly BoundaryCutName[] = ['square', 'plumb', 'bevel'];
+const PANEL_LABEL = /^P[1-9][0-9]*[a-z]*$/;
+const MAX_PANEL_THICKNESSES = 100_000;
 
 export const DEFAULT_FABRICATION: FabricationSettings = {
   thickness: 0,
@@ -23,9 +32,30 @@ export const DEFAULT_FABRICATION: FabricationSettings = {
   meshUnits: 'm',
   sheetWidth: 2440,
   sheetHeight: 1220,
+  panelThickness: {},
+  boundaryCut: 'square',
+  boundaryBevelDeg: 0,
+  upAxis: 'z',
 };
 
-const FIELDS = ['thickness', 'side', 'units', 'meshUnits', 'sheetWidth', 'sheetHeight'];
+const FIELDS = ['thickness', 'side', 'units', 'meshUnits', 'sheetWidth', 'sheetHeight', 'panelThickness', 'boundaryCut', 'boundaryBevelDeg', 'upAxis'];
+
+// The per-panel thicknesses, keys sorted so equal settings stringify equally.
+function checkPanelThickness(value: unknown): Checked<Record<string, number>> {
+  if (value === undefined) return { ok: true, value: {} };
+  if (!isRecord(value)) return failure('Panel thickness must be an object of panel labels');
+  const keys = Object.keys(value).sort();
+  if (keys.length > MAX_PANEL_THICKNESSES) return failure(`Panel thickness: at most ${MAX_PANEL_THICKNESSES} panels`);
+  const out: Record<string, number> = {};
+  for (const key of keys) {
+    if (!PANEL_LABEL.test(key)) return failure(`Panel thickness: "${key.slice(0, 20)}" is not a panel label`);
+    const t = checkNumber(value[key], `Panel thickness of ${key}`, LIMITS.thickness);
+    if (!t.ok) return t;
+    if (t.value <= 0) return failure(`Panel thickness of ${key} must be above 0`);
+    out[key] = t.value;
+  }
+  return { ok: true, value: out };
+}
 
 function checkUnit(value: unknown, what: string): Checked<LengthUnitName> {
   return typeof value === 'string' && (UNIT_NAMES as readonly string[]).includes(value) ? { ok: true, value: value as LengthUnitName } : failure(`${what} must be one of ${UNIT_NAMES.join(', ')}`);
@@ -48,7 +78,30 @@ export function validateFabrication(value: unknown, where = 'fabrication'): Chec
   if (!width.ok) return width;
   const height = checkNumber(value.sheetHeight, 'Sheet height', LIMITS.sheetSize);
   if (!height.ok) return height;
-  return { ok: true, value: { thickness: thickness.value, side: value.side, units: units.value, meshUnits: meshUnits.value, sheetWidth: width.value, sheetHeight: height.value } };
+  const panelThickness = checkPanelThickness(value.panelThickness);
+  if (!panelThickness.ok) return panelThickness;
+  // Absent in links and sessions made before these came to the page: the defaults.
+  const boundaryCut = value.boundaryCut ?? 'square';
+  if (!(BOUNDARY_CUTS as readonly unknown[]).includes(boundaryCut)) return failure('Boundary edges must be "square", "plumb" or "bevel"');
+  const bevel = value.boundaryBevelDeg === undefined ? { ok: true as const, value: 0 } : checkNumber(value.boundaryBevelDeg, 'Boundary bevel', LIMITS.boundaryBevelDeg);
+  if (!bevel.ok) return bevel;
+  const upAxis = value.upAxis ?? 'z';
+  if (upAxis !== 'x' && upAxis !== 'y' && upAxis !== 'z') return failure('Up axis must be x, y or z');
+  return {
+    ok: true,
+    value: {
+      thickness: thickness.value,
+      side: value.side,
+      units: units.value,
+      meshUnits: meshUnits.value,
+      sheetWidth: width.value,
+      sheetHeight: height.value,
+      panelThickness: panelThickness.value,
+      boundaryCut: boundaryCut as BoundaryCutName,
+      boundaryBevelDeg: bevel.value,
+      upAxis,
+    },
+  };
 }
 
 // Absent (an older link or stored session): the defaults.
@@ -58,6 +111,8 @@ export function fabricationOrDefault(value: unknown, where: string): Checked<Fab
   return checked.ok ? checked : failure(`in ${where}, ${checked.message}`);
 }
 
+// Panel thicknesses wait for a thickness of the other panels (the core needs one).
 export function toFabricationParams(settings: FabricationSettings): FabricationParams {
-  return { ...settings };
+  const { panelThickness, ...rest } = settings;
+  return settings.thickness > 0 && Object.keys(panelThickness).length > 0 ? { ...rest, panelThickness: { ...panelThickness } } : rest;
 }

@@ -1,11 +1,8 @@
 // The Fabrication section's numbers: max node spread, sheets, material use.
 import type { FabricationResult } from './protocol.ts';
+import { statsList, type StatRow } from './statsList.ts';
 
-export interface FabricationRow {
-  label: string;
-  value: string;
-  hint: string;
-}
+export type FabricationRow = StatRow;
 
 function length(value: number, units: string): string {
   return `${Number(value.toPrecision(3))} ${units}`;
@@ -29,18 +26,23 @@ export function fabricationRows(result: FabricationResult): FabricationRow[] {
   return rows;
 }
 
-export function renderFabricationStats(container: HTMLElement, result: FabricationResult | null): void {
+// Why parts may not fit, in words: the page cannot know what a mesh unit is, and a
+// generated example read in metres has panels metres wide.
+export function sheetFitHint(result: FabricationResult, meshUnits: string): string | null {
+  if (result.sheets.ok) return null;
+  return `${result.sheets.message}. The mesh is read in ${meshUnits} (Mesh units): if it was modelled in other units, set them; otherwise choose a larger sheet.`;
+}
+
+export function renderFabricationStats(container: HTMLElement, result: FabricationResult | null, meshUnits = 'm'): void {
   container.replaceChildren();
   if (!result) return;
-  const list = document.createElement('dl');
-  for (const row of fabricationRows(result)) {
-    const term = document.createElement('dt');
-    term.textContent = row.label;
-    term.title = row.hint;
-    const detail = document.createElement('dd');
-    detail.textContent = row.value;
-    detail.title = row.hint;
-    list.append(term, detail);
+  container.append(statsList(fabricationRows(result)));
+  const hint = sheetFitHint(result, meshUnits);
+  if (hint) {
+    const note = document.createElement('p');
+    note.className = 'hint note';
+    note.id = 'fab-fit-hint';
+    note.textContent = hint;
+    container.append(note);
   }
-  container.append(list);
 }

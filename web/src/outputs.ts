@@ -21,10 +21,9 @@ export class Outputs {
     return this.lastWrittenHash;
   }
 
-  exportFile(kind: 'obj' | 'csv', meshFileName: string, result: SolveResult): void {
-    const stem = designStem(meshFileName);
-    if (kind === 'obj') downloadText(`${stem}-panels.obj`, result.objText, 'model/obj');
-    else downloadText(`${stem}-parts.csv`, result.partsCsv, 'text/csv');
+  // The parts list comes from the Fabrication section (fabricationPanel.ts).
+  exportFile(kind: 'obj', meshFileName: string, result: SolveResult): void {
+    if (kind === 'obj') downloadText(`${designStem(meshFileName)}-panels.obj`, result.objText, 'model/obj');
   }
 
   // `lost`: why the result's warm-start chain cannot be replayed (the link then solves afresh).

@@ -37,6 +37,8 @@ export interface DesignParams {
   // The painted density field (brush/densityField.ts): its content key, '' for none. The
   // field itself travels beside the parameters (DesignState.paint), once per key.
   paint: string;
+  glass: boolean; // glass mode: concave panels cut into coplanar convex pieces
+  minCornerAngleDeg: number; // 0: no minimum corner angle
 }
 
 export const DEFAULT_PARAMS: DesignParams = {
@@ -52,6 +54,8 @@ export const DEFAULT_PARAMS: DesignParams = {
   densityExpression: '',
   anisotropy: { direction: 'none', stretch: 1 },
   paint: '',
+  glass: false,
+  minCornerAngleDeg: 0,
 };
 
 // The one set of limits: the form's inputs take their min/max from here (paramsForm.ts), and
@@ -65,12 +69,14 @@ export const LIMITS = {
   weight: { min: 0, max: 1000 },
   lloydIterations: { min: 0, max: 200 },
   panelRounds: { min: 1, max: 100 },
+  minCornerAngleDeg: { min: 0, max: 60 }, // as the core and the CLI's --min-angle
   // Fabrication (fabricationParams.ts), in the designer's units; inside the core's 0..1e9.
   thickness: { min: 0, max: 100_000 },
   sheetSize: { min: 0.001, max: 1_000_000 },
   // Density expression length (the core takes up to 4096 characters) and the stretch factor.
   expressionLength: { min: 0, max: 1000 },
   stretch: { min: 1, max: 10 },
+  boundaryBevelDeg: { min: -60, max: 60 },
 } as const;
 
 // The names an expression may use (core/density/expression.h); anything else is refused on
@@ -158,7 +164,7 @@ function checkBoolean(value: unknown, what: string): Checked<boolean> {
 // Unknown fields are rejected too: a link from a newer version must not half-apply.
 export function validateParams(value: unknown, where = 'parameters'): Checked<DesignParams> {
   if (!isRecord(value)) return failure(`${where} must be an object`);
-  const known = new Set(['panels', 'seed', 'weights', 'lloydIterations', 'panelRounds', 'seeding', 'teleport', 'singlePointNodes', 'optimizePlanes', 'densityExpression', 'anisotropy', 'paint']);
+  const known = new Set(['panels', 'seed', 'weights', 'lloydIterations', 'panelRounds', 'seeding', 'teleport', 'singlePointNodes', 'optimizePlanes', 'densityExpression', 'anisotropy', 'paint', 'glass', 'minCornerAngleDeg']);
   for (const key of Object.keys(value)) {
     if (!known.has(key)) return failure(`${where}: unknown field "${key.slice(0, 40)}"`);
   }
@@ -177,6 +183,11 @@ export function validateParams(value: unknown, where = 'parameters'): Checked<De
     if (!checked.ok) return checked;
     flags[flag] = checked.value;
   }
+  // Absent in links and sessions made before glass mode came to the page: off.
+  const glass = value.glass === undefined ? { ok: true as const, value: false } : checkBoolean(value.glass, 'Glass mode');
+  if (!glass.ok) return glass;
+  const minAngle = value.minCornerAngleDeg === undefined ? { ok: true as const, value: 0 } : checkNumber(value.minCornerAngleDeg, 'Min corner angle', LIMITS.minCornerAngleDeg);
+  if (!minAngle.ok) return minAngle;
   const weightsValue = value.weights;
   if (!isRecord(weightsValue)) return failure('weights must be an object');
   for (const key of Object.keys(weightsValue)) {
@@ -209,6 +220,8 @@ export function validateParams(value: unknown, where = 'parameters'): Checked<De
       densityExpression: expression.value,
       anisotropy: anisotropy.value,
       paint,
+      glass: glass.value,
+      minCornerAngleDeg: minAngle.value,
     },
   };
 }
@@ -235,6 +248,8 @@ export function toRemeshParams(params: DesignParams): RemeshParams {
     teleport: params.teleport,
     singlePointNodes: params.singlePointNodes,
     optimizePlanes: params.optimizePlanes,
+    glass: params.glass,
+    minCornerAngleDeg: params.minCornerAngleDeg,
     ...(params.densityExpression !== '' ? { densityExpression: params.densityExpression } : {}),
     ...(params.anisotropy.direction !== 'none' ? { anisotropy: { ...params.anisotropy } } : {}),
   };

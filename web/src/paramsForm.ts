@@ -1,6 +1,7 @@
 // The parameter inputs of the side panel <-> DesignParams. Reading validates through
 // params.ts, so the form, links and stored sessions share one set of rules.
 import { element } from './dom.ts';
+import { readNumber, setRange } from './formInputs.ts';
 import { DENSITY_PRESETS, LIMITS, validateParams, type Checked, type DesignParams } from './params.ts';
 
 export class ParamsForm {
@@ -22,6 +23,8 @@ export class ParamsForm {
   private readonly stretch = element('anisotropy-stretch', HTMLInputElement);
   // The painted field's key (brush/densityField.ts): set by the brush, not typed.
   private paintKey = '';
+  private readonly glass = element('glass', HTMLInputElement);
+  private readonly minCornerAngle = element('min-corner-angle', HTMLInputElement);
 
   constructor() {
     // The inputs' ranges come from LIMITS (params.ts), the same rules links are checked by.
@@ -34,11 +37,9 @@ export class ParamsForm {
       [this.boundary, LIMITS.weight],
       [this.lloydIterations, LIMITS.lloydIterations],
       [this.panelRounds, LIMITS.panelRounds],
+      [this.minCornerAngle, LIMITS.minCornerAngleDeg],
     ];
-    for (const [input, range] of ranges) {
-      input.min = String(range.min);
-      input.max = String(range.max);
-    }
+    for (const [input, range] of ranges) setRange(input, range);
     this.seed.title = `a whole number from ${LIMITS.seed.min} to 2^53 − 1 (${LIMITS.seed.max}); the same seed gives the same panels`;
     this.lloydIterations.title = `clustering iterations, ${LIMITS.lloydIterations.min} to ${LIMITS.lloydIterations.max}`;
     this.panelRounds.title = `panel rounds, ${LIMITS.panelRounds.min} to ${LIMITS.panelRounds.max}`;
@@ -63,19 +64,19 @@ export class ParamsForm {
   }
 
   private get numberInputs(): HTMLInputElement[] {
-    return [this.panels, this.seed, this.euclidean, this.l2, this.l21, this.boundary, this.lloydIterations, this.panelRounds];
+    return [this.panels, this.seed, this.euclidean, this.l2, this.l21, this.boundary, this.lloydIterations, this.panelRounds, this.minCornerAngle];
   }
 
   // Calls back on committed changes (enter, blur, spinner, checkbox), not on every keystroke.
   onChange(callback: () => void): void {
-    for (const input of [...this.numberInputs, this.teleport, this.singlePointNodes, this.optimizePlanes, this.seeding, this.expression, this.preset, this.direction, this.stretch]) {
+    for (const input of [...this.numberInputs, this.teleport, this.singlePointNodes, this.optimizePlanes, this.glass, this.seeding, this.expression, this.preset, this.direction, this.stretch]) {
       input.addEventListener('change', callback);
     }
   }
 
   read(): Checked<DesignParams> {
     for (const input of [...this.numberInputs, this.expression, this.stretch]) input.removeAttribute('aria-invalid');
-    const number = (input: HTMLInputElement): number => (input.value.trim() === '' ? Number.NaN : Number(input.value));
+    const number = readNumber;
     const checked = validateParams({
       panels: number(this.panels),
       seed: number(this.seed),
@@ -89,6 +90,8 @@ export class ParamsForm {
       densityExpression: this.expression.value,
       anisotropy: { direction: this.direction.value, stretch: number(this.stretch) },
       paint: this.paintKey,
+      glass: this.glass.checked,
+      minCornerAngleDeg: number(this.minCornerAngle),
     });
     if (!checked.ok) this.markInvalid(checked.message);
     return checked;
@@ -106,6 +109,7 @@ export class ParamsForm {
       ['Panel rounds', this.panelRounds],
       ['Density expression', this.expression],
       ['Stretch', this.stretch],
+      ['Min corner angle', this.minCornerAngle],
     ];
     const match = byName.find(([name]) => message.includes(name));
     match?.[1].setAttribute('aria-invalid', 'true');
@@ -124,6 +128,8 @@ export class ParamsForm {
     this.teleport.checked = params.teleport;
     this.singlePointNodes.checked = params.singlePointNodes;
     this.optimizePlanes.checked = params.optimizePlanes;
+    this.glass.checked = params.glass;
+    this.minCornerAngle.value = String(params.minCornerAngleDeg);
     this.expression.value = params.densityExpression;
     this.syncPreset();
     this.direction.value = params.anisotropy.direction;

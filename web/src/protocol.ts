@@ -54,7 +54,6 @@ export interface SolveResult {
   problems: Problems;
   report: QualityReport;
   objText: string;
-  partsCsv: string;
   solveSeconds: number; // wall time in the worker, first step to last
   steps: number;
 }

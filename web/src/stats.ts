@@ -1,5 +1,6 @@
 // The quality panel: the report's numbers in words a designer reads (DESIGN.md 5 targets).
 import type { QualityReport, SolveResult } from './protocol.ts';
+import { statsList, type StatRow } from './statsList.ts';
 
 function numberAt(report: QualityReport, key: string): number | null {
   const value = report[key];
@@ -51,12 +52,7 @@ function superscript(exponent: string): string {
   return [...exponent].map((c) => map[c] ?? c).join('');
 }
 
-interface Row {
-  label: string;
-  value: string;
-  hint: string;
-  warn?: boolean;
-}
+type Row = StatRow;
 
 export function statsRows(result: SolveResult): Row[] {
   const report = result.report;
@@ -67,6 +63,8 @@ export function statsRows(result: SolveResult): Row[] {
   const topology = report.topology_preserved;
   const minAngle = numberAt(report, 'min_corner_angle_deg');
   const hausdorff = numberAt(report, 'hausdorff');
+  const minAngleTarget = numberAt(report, 'min_corner_angle_target_deg') ?? 0;
+  const acute = numberAt(report, 'acute_corners');
   const before = result.cornerPlanarity.length > 0 ? result.cornerPlanarity.reduce((worst, value) => Math.max(worst, value), 0) : null;
   return [
     { label: 'Panels', value: String(numberAt(report, 'panels') ?? '–'), hint: 'planar panels in the result' },
@@ -75,6 +73,9 @@ export function statsRows(result: SolveResult): Row[] {
     { label: 'Hausdorff', value: hausdorff === null ? '–' : `${(hausdorff * 100).toFixed(2)} %`, hint: 'two-sided distance to the input surface, relative to the bounding-box diagonal' },
     { label: 'Valence 3', value: share === null ? '–' : `${(share * 100).toFixed(1)} %`, hint: 'interior nodes where exactly three panels meet' },
     { label: 'Min angle', value: minAngle === null ? '–' : `${minAngle.toFixed(1)}°`, hint: 'smallest corner angle of any panel' },
+    ...(minAngleTarget > 0
+      ? [{ label: 'Acute corners', value: acute === null ? '–' : String(acute), hint: `panel corners below the minimum corner angle of ${minAngleTarget}° (marked amber)`, warn: (acute ?? 0) > 0 }]
+      : []),
     { label: 'Invalid', value: invalid === null ? '–' : String(invalid), hint: 'panels that are not simple, star-shaped and spike-free (shown red)', warn: (invalid ?? 0) > 0 },
     { label: 'Topology', value: topology === true ? 'preserved' : topology === false ? 'changed' : '–', hint: 'same Euler characteristic and boundary loops as the input', warn: topology === false },
     { label: 'Solve time', value: `${result.solveSeconds.toFixed(2)} s`, hint: total === null ? 'in the worker' : `in the worker; the core reports ${total.toFixed(2)} s` },
@@ -90,18 +91,7 @@ export function renderStats(container: HTMLElement, result: SolveResult | null):
     container.append(empty);
     return;
   }
-  const list = document.createElement('dl');
-  for (const row of statsRows(result)) {
-    const term = document.createElement('dt');
-    term.textContent = row.label;
-    term.title = row.hint;
-    const detail = document.createElement('dd');
-    detail.textContent = row.value;
-    detail.title = row.hint;
-    if (row.warn) detail.classList.add('warn');
-    list.append(term, detail);
-  }
-  container.append(list);
+  container.append(statsList(statsRows(result)));
   // For bench/browser_bench.mjs: the worker's wall time and the core's own total.
   container.dataset.solveSeconds = result.solveSeconds.toFixed(4);
   const timings = result.report.timings_s;

@@ -61,7 +61,7 @@ function checked<T extends Status>(text: string, what: string): T {
   return status;
 }
 
-// objText() and partsCsv() return a Status JSON on failure; an OBJ or CSV never starts with '{'.
+// objText() returns a Status JSON on failure; an OBJ never starts with '{'.
 function checkedText(text: string, what: string): string {
   if (text.startsWith('{')) checked<Status>(text, what);
   return text;
@@ -112,7 +112,6 @@ function collectResult(target: Session, solveSeconds: number, steps: number): So
     problems,
     report,
     objText: checkedText(target.objText(), 'the panels OBJ'),
-    partsCsv: checkedText(target.partsCsv(), 'the parts list'),
     solveSeconds,
     steps,
   };

@@ -1,6 +1,7 @@
 // Problem markers (paper fig. 6): spike vertices as red points, flipped edges as thick red
-// lines (screen-space width, since WebGL lines are one pixel wide). Invalid panels are tinted
-// by the panel layer.
+// lines (screen-space width, since WebGL lines are one pixel wide), corners below the minimum
+// corner angle (glass mode) as larger amber points. Invalid panels are tinted by the panel
+// layer.
 import * as THREE from 'three';
 import { LineMaterial } from 'three/examples/jsm/lines/LineMaterial.js';
 import { LineSegments2 } from 'three/examples/jsm/lines/LineSegments2.js';
@@ -8,11 +9,21 @@ import { LineSegmentsGeometry } from 'three/examples/jsm/lines/LineSegmentsGeome
 import type { Problems } from '@flatfacet/wasm';
 
 const RED = 0xee2924;
+const AMBER = 0xffb000;
+
+function shiftedPoints(values: number[], origin: THREE.Vector3): THREE.BufferGeometry {
+  const positions = new Float32Array(values.length);
+  for (let i = 0; i < values.length; i++) positions[i] = values[i]! - origin.getComponent(i % 3);
+  const geometry = new THREE.BufferGeometry();
+  geometry.setAttribute('position', new THREE.BufferAttribute(positions, 3));
+  return geometry;
+}
 
 export class ProblemLayer {
   readonly group = new THREE.Group();
   private readonly spikes: THREE.Points<THREE.BufferGeometry, THREE.PointsMaterial>;
   private readonly flipped: LineSegments2;
+  readonly acute: THREE.Points<THREE.BufferGeometry, THREE.PointsMaterial>;
   private readonly lineMaterial: LineMaterial;
 
   constructor() {
@@ -23,9 +34,15 @@ export class ProblemLayer {
     );
     this.lineMaterial = new LineMaterial({ color: RED, linewidth: 4, depthTest: false });
     this.flipped = new LineSegments2(new LineSegmentsGeometry(), this.lineMaterial);
+    this.acute = new THREE.Points(
+      new THREE.BufferGeometry(),
+      new THREE.PointsMaterial({ color: AMBER, size: 13, sizeAttenuation: false, depthTest: false }),
+    );
+    this.acute.name = 'acute-corners';
     this.spikes.renderOrder = 10;
     this.flipped.renderOrder = 10;
-    this.group.add(this.spikes, this.flipped);
+    this.acute.renderOrder = 9;
+    this.group.add(this.acute, this.spikes, this.flipped);
   }
 
   set(problems: Problems | null, origin: THREE.Vector3): void {
@@ -45,6 +62,16 @@ export class ProblemLayer {
     this.flipped.geometry = geometry;
     this.flipped.visible = edgePositions.length >= 6;
     this.spikes.visible = spikePositions.length >= 3;
+
+    const acute = problems?.acuteCorners ?? [];
+    this.acute.geometry.dispose();
+    this.acute.geometry = shiftedPoints(acute, origin);
+    this.acute.visible = acute.length >= 3;
+  }
+
+  // Corners below the minimum corner angle on show (for the legend and tests).
+  get acuteCorners(): number {
+    return this.acute.visible ? this.acute.geometry.getAttribute('position').count : 0;
   }
 
   // LineMaterial measures its width in pixels of the drawing buffer.

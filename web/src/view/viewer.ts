@@ -44,6 +44,7 @@ export class Viewer {
   // The surface in the view's frame (shifted to the origin), for the density brush's picking.
   private surfaceValue: { positions: Float32Array; indices: Uint32Array; diagonal: number } | null = null;
   private densityView = false; // the density paint's colour map instead of the panels
+  private readonly selection = new THREE.LineLoop(new THREE.BufferGeometry(), new THREE.LineBasicMaterial({ color: 0xffe14d, depthTest: false }));
 
   constructor(private readonly container: HTMLElement) {
     const software = isSoftwareRenderer();
@@ -61,6 +62,9 @@ export class Viewer {
     this.camera.add(headlight); // lights what the camera sees, from any side
     this.scene.add(this.camera);
     this.scene.add(this.input.mesh, this.panels.faces, this.panels.edges, this.problems.group, this.thick.solid, this.thick.markers);
+    this.selection.renderOrder = 11;
+    this.selection.name = 'selected-panel';
+    this.scene.add(this.selection);
 
     this.controls = new OrbitControls(this.camera, this.renderer.domElement);
     this.controls.addEventListener('change', () => this.requestRender());
@@ -178,6 +182,8 @@ export class Viewer {
     this.result = result;
     this.panels.set(result, this.origin, this.toggles.beforeFix);
     this.problems.set(result?.problems ?? null, this.origin);
+    this.container.dataset.acuteCorners = String(this.problems.acuteCorners);
+    this.setSelectedPanel(null);
     this.thick.set(null, null, null, this.origin); // until the fabrication of these panels arrives
     this.hasPanels = result !== null && result.panelTriangles.length > 0;
     if (result) this.setClusters(result.clusterIds);
@@ -190,6 +196,35 @@ export class Viewer {
     const marked = this.thick.set(this.result, inner, spread, this.origin);
     this.applyVisibility();
     return marked;
+  }
+
+  // The panel under a point of the canvas (client coordinates), or null.
+  panelAt(clientX: number, clientY: number): number | null {
+    if (!this.result || !this.panels.faces.visible) return null;
+    const rect = this.renderer.domElement.getBoundingClientRect();
+    const ndc = new THREE.Vector2(((clientX - rect.left) / rect.width) * 2 - 1, -((clientY - rect.top) / rect.height) * 2 + 1);
+    const raycaster = new THREE.Raycaster();
+    raycaster.setFromCamera(ndc, this.camera);
+    const hit = raycaster.intersectObject(this.panels.faces, false)[0];
+    // The faces are unindexed triangles in panelTriangles order: face t is triangle t.
+    return hit?.faceIndex != null ? (this.result.panelTriangleIds[hit.faceIndex] ?? null) : null;
+  }
+
+  // Outlines one panel (null: none) on the panels on show.
+  setSelectedPanel(panel: number | null): void {
+    this.selection.geometry.dispose();
+    const geometry = new THREE.BufferGeometry();
+    const r = this.result;
+    if (r && panel !== null && panel + 1 < r.panelOffsets.length) {
+      const begin = r.panelOffsets[panel]!;
+      const end = r.panelOffsets[panel + 1]!;
+      const positions = new Float32Array((end - begin) * 3);
+      for (let i = begin; i < end; i++)
+        for (let k = 0; k < 3; k++) positions[(i - begin) * 3 + k] = r.panelPositions[r.panelIndices[i]! * 3 + k]! - this.origin.getComponent(k);
+      geometry.setAttribute('position', new THREE.BufferAttribute(positions, 3));
+    }
+    this.selection.geometry = geometry;
+    this.requestRender();
   }
 
   // While solving, the clusters converging on the input are the view (paper fig. 5 b-c).
@@ -219,6 +254,7 @@ export class Viewer {
     this.problems.group.visible = showPanels && this.toggles.problems && !this.toggles.beforeFix;
     this.thick.solid.visible = showPanels && this.toggles.thick && !this.toggles.beforeFix;
     this.thick.markers.visible = showPanels && this.toggles.problems && !this.toggles.beforeFix;
+    this.selection.visible = showPanels && !this.toggles.beforeFix;
     // The surface shows when panels do not cover it: during a solve, before any, or on request.
     this.input.mesh.visible = this.solving || !showPanels || this.toggles.clusters || !this.toggles.panels;
     if (this.densityView) {
@@ -227,6 +263,7 @@ export class Viewer {
       this.problems.group.visible = false;
       this.thick.solid.visible = false;
       this.thick.markers.visible = false;
+      this.selection.visible = false;
     }
     this.requestRender();
   }
