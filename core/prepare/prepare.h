@@ -49,7 +49,7 @@ constexpr int kPrepareMinTrianglesPerPanel = 20;
 constexpr int kPrepareCoarsenTrianglesPerPanel = 100;
 constexpr int kPrepareHugeTrianglesPerPanel = 1000;
 constexpr int kPrepareHugeTriangles = 400000;
-constexpr int kPrepareMaxTriangles = 5000000;  // the most the preparation makes (memory)
+constexpr int kPrepareMaxTriangles = 2000000;  // the most the preparation makes (time and memory)
 
 // mesh: clean (clean_mesh). density: empty, one value > 0 per vertex or one per face (per
 // vertex wins when the counts coincide, as in the Remesher). Throws InputError for a panel

@@ -116,7 +116,7 @@ TEST(Prepare, DensityMakesShorterEdgesWhereItIsHigherAndIsCarriedOver) {
 TEST(Prepare, ImpossibleRequestsAreClearErrors) {
   const TriMesh epcot = test::load_clean("epcot.off");
   EXPECT_THROW(prepare_surface(epcot, 0, {}), InputError);
-  EXPECT_THROW(prepare_surface(epcot, 1000000, {}), InputError);  // 20M triangles at least
+  EXPECT_THROW(prepare_surface(epcot, 1000000, {}), InputError);  // 20M triangles at least, over the cap
   PrepareOptions o;
   o.edge_length = 10.0;  // a handful of triangles for 100 panels
   EXPECT_THROW(prepare_surface(epcot, 100, {}, o), InputError);
@@ -132,7 +132,7 @@ TEST(Prepare, ImpossibleRequestsAreClearErrors) {
   try {
     prepare_surface(epcot, 1000000, {});
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("ask for at most 250,000 panels"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("ask for at most 100,000 panels"), std::string::npos) << e.what();
   }
 }
 
