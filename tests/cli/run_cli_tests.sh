@@ -359,6 +359,7 @@ expect_error 2 "edge-length.*positive" remesh "$e" --panels 10 --edge-length -1 
 expect_error 2 "edge-length.*not a finite number" remesh "$e" --panels 10 --edge-length abc "${o[@]}"
 expect_error 2 "edge-length.*prepare off" remesh "$e" --panels 10 --edge-length 0.1 --prepare off "${o[@]}"
 expect_error 2 "fewer than the 100 panels" remesh "$e" --panels 100 --edge-length 5 "${o[@]}"
+expect_error 2 "edits.*prepare auto" remesh "$e" --panels 10 --edits "$tmp/never.json" --edge-length 0.1 "${o[@]}"
 # Glass mode: epcot at 38 is valid with a 10-degree minimum (exit 0): no concave panel, no
 # corner below 10, the report says so, and the parts list labels pieces after their panel.
 "$bin" remesh "$e" --panels 38 --glass --min-angle 10 --report "$tmp/glass.json" --parts "$tmp/glass.csv" \
