@@ -18,6 +18,7 @@
 #include "cli/remesh_report.h"
 #include "core/mesh/mesh_io.h"
 #include "core/panels/panel_export.h"
+#include "core/prepare/prepare.h"
 #include "core/quality/report.h"
 #include "core/quality/report_json.h"
 #include "core/remesh_params_json.h"
@@ -51,11 +52,13 @@ struct Options {
   std::string density;  // a file, read once the mesh is loaded (its length is checked against it)
   SubdivisionRequest subdivision;
   std::string edits;    // a JSON file: the edits array (remesh_params_json.h)
+  PrepareOptions prepare;
 };
 
 Options parse_options(const std::vector<std::string>& argv) {
   std::set<std::string> with_value = {"panels", "seed",   "weights", "density",  "iterations",
-                                      "out",    "report", "seeding", "min-angle", "edits"};
+                                      "out",    "report", "seeding", "min-angle", "edits", "prepare",
+                                      "edge-length"};
   with_value.insert(fabrication_option_names().begin(), fabrication_option_names().end());
   with_value.insert(subdivision_option_names().begin(), subdivision_option_names().end());
   const Args args = parse_args(argv, with_value, {"single-point-nodes", "no-optimize", "no-teleport", "glass"});
@@ -99,6 +102,24 @@ Options parse_options(const std::vector<std::string>& argv) {
     o.edits = args.get("edits");
     if (o.edits.empty()) throw UsageError("--edits: empty file name");
   }
+  const std::string prepare = args.get("prepare", "auto");
+  if (prepare == "off")
+    o.prepare.mode = PrepareMode::Off;
+  else if (prepare != "auto")
+    throw UsageError("--prepare: expected auto or off, got '" + prepare + "'");
+  if (args.has("edge-length")) {
+    o.prepare.edge_length = parse_double(args.get("edge-length"), "--edge-length");
+    if (!(o.prepare.edge_length > 0.0))
+      throw UsageError("--edge-length: expected a positive length, got '" + args.get("edge-length") + "'");
+    if (o.prepare.mode == PrepareMode::Off)
+      throw UsageError("--edge-length remeshes the surface: it cannot go with --prepare off");
+  }
+  // Edits name triangles of the cleaned mesh, which preparation would renumber.
+  if (!o.edits.empty()) {
+    if (args.has("edge-length") || (args.has("prepare") && prepare == "auto"))
+      throw UsageError("--edits names triangles of the cleaned mesh: it cannot go with --prepare auto or --edge-length");
+    o.prepare.mode = PrepareMode::Off;
+  }
   if (args.has("density")) {
     o.density = args.get("density");
     if (o.density.empty()) throw UsageError("--density: empty file name");
@@ -127,8 +148,11 @@ int run_remesh(const std::vector<std::string>& argv) {
     o.params.edits = panel_edits_from_json(text.str());  // faces: of the cleaned mesh
   }
   const int requested = o.params.panels;
+  // Preparation: the resolution the panel count needs (prepare.h); the density follows.
+  PreparedSurface prepared = prepare_surface(in.clean.mesh, o.params.panels, o.params.density, o.prepare);
+  o.params.density = std::move(prepared.density);
   // Building the Remesher builds the topology and the face data: part of preparing.
-  Remesher remesher(in.clean.mesh, o.params);
+  Remesher remesher(std::move(prepared.mesh), o.params);
   timings.prepare = seconds_since(t_start);
 
   // Step the state machine ourselves to time the Lloyd and the panel stages apart.
@@ -148,7 +172,7 @@ int run_remesh(const std::vector<std::string>& argv) {
   timings.quality = seconds_since(t_quality);
   timings.total = seconds_since(t_start);
 
-  const RemeshRun run{in, remesher, quality, requested, o.seeding, timings};
+  const RemeshRun run{in, remesher, quality, requested, o.seeding, timings, prepared.report};
   std::vector<OutputFile> outputs;
   if (!o.out.empty()) {
     // measure_quality has checked every index, so the remapping cannot go out of range.

@@ -44,6 +44,16 @@ std::string remesh_report_json(const RemeshRun& run) {
   j.end_array();
   write_subdivision(j, run.input.subdivision);
 
+  const PrepareReport& prep = run.prepare;
+  j.begin_object("prepare");
+  j.value("applied", prep.applied);
+  j.value("triangles_in", prep.triangles_in).value("triangles_out", prep.triangles_out);
+  j.value("target_edge", prep.target_edge);
+  j.begin_array("messages");
+  for (const std::string& m : prep.messages) j.value(nullptr, m);
+  j.end_array();
+  j.end_object();
+
   j.value("status", status(run));
   j.value("requested_panels", run.requested_panels);
   j.value("panels", run.quality.panels);

@@ -7,13 +7,14 @@
 
 #include "cli/input.h"
 #include "core/panels/panel_mesh.h"
+#include "core/prepare/prepare.h"
 #include "core/quality/report.h"
 #include "core/remesher.h"
 
 namespace ff::cli {
 
 struct RemeshTimings {
-  double prepare = 0.0;  // read + clean + topology and face data
+  double prepare = 0.0;  // read + clean + resolution (prepare.h) + topology and face data
   double cluster = 0.0;  // seeding + Lloyd phase
   double panels = 0.0;   // panel rounds + plane optimisation
   double quality = 0.0;  // measuring the result
@@ -27,6 +28,7 @@ struct RemeshRun {
   int requested_panels = 0;
   std::string seeding;  // "farthest" or "random", as given
   RemeshTimings timings;
+  const PrepareReport& prepare;
 };
 
 std::string remesh_report_json(const RemeshRun& run);

@@ -216,6 +216,52 @@ code=$?
 [ "$code" = 0 ] || [ "$code" = 3 ] && python3 -c "import json; json.load(open('$tmp/rd.json'))" && ok ||
   bad "remesh with --density (exit $code)"
 
+# Preparation (issue 7). YasIsland (1952 triangles) at 300 panels: refined to 20-100
+# triangles per panel, said so in the report, and a full result like any other.
+ya="$meshes/YasIsland.off"
+"$bin" remesh "$ya" --panels 300 --out "$tmp/prep.obj" --report "$tmp/prep.json" 2>"$tmp/err.txt"
+code=$?
+check_remesh "$code" "$tmp/prep.obj" "$tmp/prep.json" 300 && ok || bad "remesh with preparation: check (exit $code)"
+python3 - "$tmp/prep.json" <<'PY' && ok || bad "remesh: the prepare report"
+import json, sys
+r = json.load(open(sys.argv[1]))
+p = r["prepare"]
+assert p["applied"] is True and p["triangles_in"] == 1952 and p["triangles_out"] == r["triangles"], p
+assert 20 <= p["triangles_out"] / 300 <= 100 and p["target_edge"] > 0, p
+assert p["messages"][0].startswith("refined 1,952 triangles to "), p["messages"]
+assert r["input_triangles"] == 1952 and r["topology_preserved"], r
+assert r["timings_s"]["prepare"] > 0
+PY
+# --prepare off: the mesh as it is; an explicit edge length: remeshed to it.
+"$bin" remesh "$ya" --panels 300 --prepare off --report "$tmp/prep_off.json" 2>/dev/null
+"$bin" remesh "$ya" --panels 30 --edge-length 0.5 --report "$tmp/prep_len.json" 2>/dev/null
+python3 - "$tmp/prep_off.json" "$tmp/prep_len.json" <<'PY' && ok || bad "remesh --prepare off / --edge-length"
+import json, sys
+off, length = (json.load(open(p)) for p in sys.argv[1:])
+assert off["prepare"]["applied"] is False and off["triangles"] == 1952, off["prepare"]
+assert off["prepare"]["messages"][0].startswith("preparation off"), off["prepare"]
+assert length["prepare"]["applied"] is True and length["prepare"]["target_edge"] == 0.5, length["prepare"]
+PY
+# Meshes with enough triangles per panel are untouched: the same OBJ bytes with and without.
+"$bin" remesh "$mi" --panels 60 --seed 2 --prepare off --out "$tmp/p3.obj" 2>/dev/null
+cmp -s "$tmp/p1.obj" "$tmp/p3.obj" && ok || bad "remesh: preparation changed a mesh that needed none"
+python3 -c "import json; p = json.load(open('$tmp/r1.json'))['prepare']; assert not p['applied'] and p['target_edge'] == 0, p" &&
+  ok || bad "remesh: inspired_mesh at 60 panels should not be prepared"
+# A density per input vertex follows the refined mesh.
+python3 - "$ya" "$tmp/ya_density.txt" <<'PY'
+import sys
+lines = [l.split() for l in open(sys.argv[1]) if l.strip() and not l.startswith("#")]
+nv = int(lines[1][0])
+xs = [float(l[0]) for l in lines[2:2 + nv]]
+mid = sorted(xs)[nv // 2]
+open(sys.argv[2], "w").write("\n".join("4" if x < mid else "1" for x in xs) + "\n")
+PY
+"$bin" remesh "$ya" --panels 300 --density "$tmp/ya_density.txt" --report "$tmp/prep_d.json" 2>"$tmp/err.txt"
+code=$?
+[ "$code" = 0 ] || [ "$code" = 3 ] && python3 -c "
+import json; r = json.load(open('$tmp/prep_d.json')); assert r['prepare']['applied'] and r['density_file'], r['prepare']" &&
+  ok || bad "remesh with --density and preparation (exit $code) $(cat "$tmp/err.txt")"
+
 # --parts: the basic parts list, one row per panel of the OBJ, and its totals row.
 "$bin" remesh "$meshes/epcot.off" --panels 30 --out "$tmp/pp.obj" --parts "$tmp/pp.csv" 2>/dev/null
 code=$?
@@ -325,7 +371,15 @@ expect_error 2 "same file" remesh "$e" --panels 10 --out "$tmp/never.x" --parts 
 expect_error 2 "seeding" remesh "$e" --panels 10 --seeding spiral "${o[@]}"
 expect_error 2 "weights" remesh "$e" --panels 10 --weights boundary=x "${o[@]}"
 expect_error 2 "same file" remesh "$e" --panels 10 --out "$tmp/never.x" --report "$tmp/never.x"
-expect_error 2 "panels.*triangles|triangles.*panels" remesh "$e" --panels 99999 "${o[@]}"
+expect_error 2 "panels.*triangles|triangles.*panels" remesh "$e" --panels 99999 --prepare off "${o[@]}"
+# Preparation (issue 7): refining makes any count up to 100,000 panels possible, no more.
+expect_error 2 "ask for at most 100,000 panels" remesh "$e" --panels 10000000 "${o[@]}"
+expect_error 2 "prepare.*auto or off" remesh "$e" --panels 10 --prepare maybe "${o[@]}"
+expect_error 2 "edge-length.*positive" remesh "$e" --panels 10 --edge-length -1 "${o[@]}"
+expect_error 2 "edge-length.*not a finite number" remesh "$e" --panels 10 --edge-length abc "${o[@]}"
+expect_error 2 "edge-length.*prepare off" remesh "$e" --panels 10 --edge-length 0.1 --prepare off "${o[@]}"
+expect_error 2 "fewer than the 100 panels" remesh "$e" --panels 100 --edge-length 5 "${o[@]}"
+expect_error 2 "edits.*prepare auto" remesh "$e" --panels 10 --edits "$tmp/never.json" --edge-length 0.1 "${o[@]}"
 # Glass mode: epcot at 38 is valid with a 10-degree minimum (exit 0): no concave panel, no
 # corner below 10, the report says so, and the parts list labels pieces after their panel.
 "$bin" remesh "$e" --panels 38 --glass --min-angle 10 --report "$tmp/glass.json" --parts "$tmp/glass.csv" \

@@ -1,0 +1,191 @@
+#include "core/prepare/prepare.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <utility>
+
+#include "core/prepare/isotropic_remesh.h"
+#include "core/util/error.h"
+
+namespace ff {
+
+namespace {
+
+size_t at(int i) { return static_cast<size_t>(i); }
+
+// 12345678 -> "12,345,678".
+std::string with_commas(long long n) {
+  std::string digits = std::to_string(n < 0 ? -n : n);
+  std::string out;
+  for (size_t i = 0; i < digits.size(); ++i) {
+    if (i > 0 && (digits.size() - i) % 3 == 0) out += ',';
+    out += digits[i];
+  }
+  return n < 0 ? "-" + out : out;
+}
+
+std::string number(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", x);
+  return buf;
+}
+
+// Area of an equilateral triangle with edge L.
+double equilateral_area(double L) { return std::sqrt(3.0) / 4.0 * L * L; }
+double edge_for_area(double a) { return std::sqrt(a / (std::sqrt(3.0) / 4.0)); }
+
+// Per-vertex values for the remeshing's sizing: as given, or per face averaged onto the
+// vertices by area.
+std::vector<double> sizing_density(const TriMesh& mesh, const std::vector<double>& density, bool per_vertex) {
+  if (density.empty() || per_vertex) return density;
+  std::vector<double> sum(mesh.positions.size(), 0.0), weight(mesh.positions.size(), 0.0);
+  for (int f = 0; f < mesh.num_faces(); ++f) {
+    const double a = std::max(face_area(mesh, f), 1e-300);
+    for (const int v : mesh.triangles[at(f)]) {
+      sum[at(v)] += a * density[at(f)];
+      weight[at(v)] += a;
+    }
+  }
+  std::vector<double> out(sum.size(), 1.0);
+  for (size_t v = 0; v < out.size(); ++v)
+    if (weight[v] > 0.0) out[v] = sum[v] / weight[v];
+  return out;
+}
+
+// How much denser than average the dense panels are: the area-weighted 90th percentile of
+// density / mean density (1 for a uniform or missing density).
+double dense_factor(const TriMesh& mesh, const std::vector<double>& vertex_density) {
+  if (vertex_density.empty()) return 1.0;
+  std::vector<std::pair<double, double>> samples;  // (face density, area)
+  double area = 0.0, weighted = 0.0;
+  for (int f = 0; f < mesh.num_faces(); ++f) {
+    double d = 0.0;
+    for (const int v : mesh.triangles[at(f)]) d += vertex_density[at(v)] / 3.0;
+    const double a = face_area(mesh, f);
+    samples.emplace_back(d, a);
+    area += a;
+    weighted += a * d;
+  }
+  if (!(area > 0.0) || !(weighted > 0.0)) return 1.0;
+  std::sort(samples.begin(), samples.end());
+  double below = 0.0, p90 = samples.back().first;
+  for (const auto& [d, a] : samples) {
+    below += a;
+    if (below >= 0.9 * area) {
+      p90 = d;
+      break;
+    }
+  }
+  return std::max(1.0, p90 / (weighted / area));
+}
+
+void check_density(const TriMesh& mesh, const std::vector<double>& density) {
+  if (density.empty()) return;
+  if (density.size() != mesh.positions.size() && density.size() != mesh.triangles.size())
+    throw InputError("density has " + std::to_string(density.size()) + " values; expected one per vertex (" +
+                     std::to_string(mesh.num_vertices()) + ") or one per triangle (" +
+                     std::to_string(mesh.num_faces()) + ")");
+  for (size_t i = 0; i < density.size(); ++i)
+    if (!(density[i] > 0.0) || !std::isfinite(density[i]))
+      throw InputError("density value " + std::to_string(i + 1) + " is " + std::to_string(density[i]) +
+                       "; densities must be finite and greater than 0");
+}
+
+}  // namespace
+
+PreparedSurface prepare_surface(const TriMesh& mesh, int panels, const std::vector<double>& density,
+                                const PrepareOptions& options) {
+  if (panels < 1) throw InputError("the number of panels must be at least 1");
+  check_density(mesh, density);
+  const bool explicit_length = options.edge_length != 0.0;
+  if (explicit_length && (!(options.edge_length > 0.0) || !std::isfinite(options.edge_length)))
+    throw InputError("the edge length must be a positive number, got " + number(options.edge_length));
+  if (explicit_length && options.mode == PrepareMode::Off)
+    throw InputError("an edge length needs preparation on (it remeshes to that length)");
+
+  PreparedSurface out;
+  PrepareReport& r = out.report;
+  r.triangles_in = mesh.num_faces();
+  const long long faces = mesh.num_faces();
+  const double per_panel = static_cast<double>(faces) / panels;
+  const double area = total_area(mesh);
+  const bool per_vertex = density.size() == mesh.positions.size();
+  const std::vector<double> sizing = sizing_density(mesh, density, per_vertex);
+  const double dense = dense_factor(mesh, sizing);
+  const double dense_per_panel = per_panel / dense;
+  const std::string panels_text = with_commas(panels) + (panels == 1 ? " panel" : " panels");
+
+  auto keep = [&](const std::string& why) {
+    out.mesh = mesh;
+    out.density = density;
+    r.triangles_out = r.triangles_in;
+    r.messages.push_back(why);
+    return out;
+  };
+
+  double target = 0.0;
+  std::string reason;
+  if (options.mode == PrepareMode::Off) {
+    return keep("preparation off: the " + with_commas(faces) + " triangles are used as they are (" +
+                number(per_panel) + " per panel; 20 to 100 work best)");
+  }
+  if (explicit_length) {
+    target = options.edge_length;
+    const double estimate = area / equilateral_area(target);
+    if (estimate > kPrepareMaxTriangles)
+      throw InputError("an edge length of " + number(target) + " needs about " + with_commas(std::llround(estimate)) +
+                       " triangles, more than the " + with_commas(kPrepareMaxTriangles) + " the preparation makes");
+    if (estimate < panels)
+      throw InputError("an edge length of " + number(target) + " gives about " + with_commas(std::llround(estimate)) +
+                       " triangles, fewer than the " + panels_text + " asked for");
+    reason = " triangles each, at the edge length asked for";
+  } else if (dense_per_panel < kPrepareMinTrianglesPerPanel) {
+    if (static_cast<double>(panels) * dense * kPrepareMinTrianglesPerPanel > kPrepareMaxTriangles)
+      throw InputError(panels_text + " need at least " + with_commas(std::llround(panels * dense * kPrepareMinTrianglesPerPanel)) +
+                       " triangles (20 per panel), more than the " + with_commas(kPrepareMaxTriangles) +
+                       " the preparation makes; ask for at most " +
+                       with_commas(static_cast<long long>(kPrepareMaxTriangles / (dense * kPrepareMinTrianglesPerPanel))) +
+                       " panels");
+    const double wanted = std::min<double>(static_cast<double>(panels) * kPrepareTargetTrianglesPerPanel,
+                                           kPrepareMaxTriangles / dense);
+    target = edge_for_area(area / wanted);
+    reason = " triangles each (" + number(dense_per_panel) + (dense > 1.0 ? " where the density is highest" : "") +
+             " before; 20 to 100 work best)";
+  } else if (per_panel > kPrepareHugeTrianglesPerPanel && faces > kPrepareHugeTriangles) {
+    target = edge_for_area(area / (static_cast<double>(panels) * kPrepareCoarsenTrianglesPerPanel));
+    reason = " triangles each instead of " + with_commas(std::llround(per_panel)) +
+             ": a mesh this fine costs time and memory the panels cannot show";
+  } else {
+    return keep("kept the " + with_commas(faces) + " triangles as they are: " + panels_text + " get about " +
+                number(dense_per_panel) + " each" + (dense > 1.0 ? " where the density is highest" : ""));
+  }
+
+  IsotropicRemeshOptions remesh;
+  remesh.target_edge_length = target;
+  remesh.feature_angle_deg = options.feature_angle_deg;
+  remesh.vertex_density = sizing;
+  IsotropicRemeshResult result = isotropic_remesh(mesh, remesh);
+  out.mesh = std::move(result.mesh);
+  if (!density.empty())
+    out.density = per_vertex ? std::move(result.vertex_density) : transfer_face_field(mesh, density, out.mesh);
+  r.applied = true;
+  r.triangles_out = out.mesh.num_faces();
+  r.target_edge = target;
+  const std::string verb = explicit_length ? "remeshed" : (r.triangles_out >= r.triangles_in ? "refined" : "coarsened");
+  r.messages.push_back(verb + " " + with_commas(faces) + " triangles to " + with_commas(r.triangles_out) +
+                       " (target edge " + number(target) + (density.empty() ? "" : ", shorter where the density is higher") +
+                       ") so " + panels_text + " get about " + number(static_cast<double>(r.triangles_out) / panels) +
+                       reason);
+  if (result.feature_edges > 0)
+    r.messages.push_back("kept " + with_commas(result.feature_edges) + " boundary and crease edges (sharper than " +
+                         number(options.feature_angle_deg) + " degrees) as curves, " +
+                         with_commas(result.feature_corners) + (result.feature_corners == 1 ? " corner" : " corners") +
+                         " fixed");
+  if (out.mesh.num_faces() < panels)
+    throw InputError("the remeshed surface has " + with_commas(out.mesh.num_faces()) + " triangles, fewer than the " +
+                     panels_text + " asked for; use a shorter edge length");
+  return out;
+}
+
+}  // namespace ff

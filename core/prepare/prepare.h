@@ -1,0 +1,62 @@
+#pragma once
+// Preparation: the mesh the clustering sees, at a resolution that suits the panel count
+// (DESIGN.md 2; paper 3.1 and 5: 20-100 triangles per panel, and the longest edge bounds how
+// well a panel outline can follow its planes).
+//
+// Policy (automatic mode):
+// - fewer than 20 triangles per panel: isotropic remeshing (isotropic_remesh.h) to the edge
+//   length whose equilateral triangles give about 50 per panel;
+// - more than 1000 triangles per panel AND more than 400,000 triangles: remeshing to about
+//   100 per panel (the paper's upper end: a huge mesh costs time and memory and buys nothing
+//   the panels can show, while keeping twice the refinement target keeps the fidelity);
+// - otherwise the mesh is used as it is, bit for bit.
+// With a non-uniform density the count that decides is the one in the dense panels: the
+// triangles per panel divided by the area-weighted 90th percentile of density / mean density.
+// An explicit edge length always remeshes to it. Every decision is one sentence in the report.
+#include <string>
+#include <vector>
+
+#include "core/mesh/tri_mesh.h"
+
+namespace ff {
+
+enum class PrepareMode { Auto, Off };
+
+struct PrepareOptions {
+  PrepareMode mode = PrepareMode::Auto;
+  double edge_length = 0.0;  // > 0: remesh to this target edge length (Auto mode only)
+  double feature_angle_deg = 44.0;  // creases kept by the remeshing (isotropic_remesh.h)
+};
+
+struct PrepareReport {
+  bool applied = false;  // the mesh was remeshed
+  int triangles_in = 0;
+  int triangles_out = 0;
+  double target_edge = 0.0;  // the remeshing target (0 when not applied)
+  std::vector<std::string> messages;  // one human sentence each
+};
+
+struct PreparedSurface {
+  TriMesh mesh;  // the input itself when not applied
+  // The density on `mesh`, of the same kind as given (per vertex or per face; empty if none).
+  std::vector<double> density;
+  PrepareReport report;
+};
+
+// Policy numbers, public so callers and tests name them rather than repeat them.
+constexpr int kPrepareTargetTrianglesPerPanel = 50;
+constexpr int kPrepareMinTrianglesPerPanel = 20;
+constexpr int kPrepareCoarsenTrianglesPerPanel = 100;
+constexpr int kPrepareHugeTrianglesPerPanel = 1000;
+constexpr int kPrepareHugeTriangles = 400000;
+constexpr int kPrepareMaxTriangles = 2000000;  // the most the preparation makes (time and memory)
+
+// mesh: clean (clean_mesh). density: empty, one value > 0 per vertex or one per face (per
+// vertex wins when the counts coincide, as in the Remesher). Throws InputError for a panel
+// count below 1 or one that would need more than kPrepareMaxTriangles at 20 per panel, an
+// edge length that is not positive or would need more than that, or gives fewer triangles
+// than panels, an edge length with mode Off, or a density of the wrong size.
+PreparedSurface prepare_surface(const TriMesh& mesh, int panels, const std::vector<double>& density,
+                                const PrepareOptions& options = {});
+
+}  // namespace ff

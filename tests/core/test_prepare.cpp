@@ -1,0 +1,170 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "core/prepare/prepare.h"
+#include "core/remesher.h"
+#include "core/shapes/hard_cases.h"
+#include "core/util/error.h"
+#include "panel_checks.h"
+#include "remesh_checks.h"
+#include "test_meshes.h"
+
+namespace ff {
+namespace {
+
+bool contains(const std::vector<std::string>& messages, const std::string& word) {
+  for (const std::string& m : messages)
+    if (m.find(word) != std::string::npos) return true;
+  return false;
+}
+
+double mean_edge_length(const TriMesh& m, bool (*select)(const Vec3&)) {
+  double sum = 0.0;
+  int n = 0;
+  for (const Triangle& t : m.triangles) {
+    for (size_t i = 0; i < 3; ++i) {
+      const Vec3& a = m.positions[static_cast<size_t>(t[i])];
+      const Vec3& b = m.positions[static_cast<size_t>(t[(i + 1) % 3])];
+      if (!select(a) || !select(b)) continue;
+      sum += (a - b).norm();
+      ++n;
+    }
+  }
+  return n > 0 ? sum / n : 0.0;
+}
+
+TEST(Prepare, KeepsAMeshWithEnoughTrianglesPerPanelBitForBit) {
+  const TriMesh bunny = test::load_clean("bunny.off");
+  const std::vector<double> density(bunny.positions.size(), 2.0);
+  for (const int panels : {1, 100, 348}) {  // 6966 triangles: 20 per panel down to 348 panels
+    const PreparedSurface p = prepare_surface(bunny, panels, density);
+    EXPECT_FALSE(p.report.applied);
+    EXPECT_EQ(p.mesh.positions, bunny.positions);
+    EXPECT_EQ(p.mesh.triangles, bunny.triangles);
+    EXPECT_EQ(p.density, density);
+    EXPECT_EQ(p.report.triangles_out, bunny.num_faces());
+    EXPECT_TRUE(contains(p.report.messages, "as they are"));
+  }
+  PrepareOptions off;
+  off.mode = PrepareMode::Off;
+  const PreparedSurface p = prepare_surface(bunny, 3000, {}, off);
+  EXPECT_FALSE(p.report.applied);
+  EXPECT_EQ(p.mesh.triangles, bunny.triangles);
+}
+
+TEST(Prepare, RefinesACoarseMeshToAboutFiftyTrianglesPerPanel) {
+  const TriMesh epcot = test::load_clean("epcot.off");  // 1536 triangles
+  const PreparedSurface p = prepare_surface(epcot, 400, {});
+  ASSERT_TRUE(p.report.applied);
+  const double per_panel = static_cast<double>(p.mesh.num_faces()) / 400;
+  std::printf("[ prepare  ] epcot 400 panels: %s\n", p.report.messages[0].c_str());
+  EXPECT_GE(per_panel, 20.0);
+  EXPECT_LE(per_panel, 100.0);
+  EXPECT_TRUE(contains(p.report.messages, "refined 1,536 triangles to"));
+  EXPECT_TRUE(test::summarize(p.mesh) == test::summarize(epcot));
+  EXPECT_GT(p.report.target_edge, 0.0);
+}
+
+TEST(Prepare, AnExplicitEdgeLengthRemeshesToIt) {
+  const TriMesh bumpy = test::load_clean("bumpy.off");
+  PrepareOptions o;
+  o.edge_length = test::edge_length_for(bumpy, 8000);
+  const PreparedSurface p = prepare_surface(bumpy, 50, {}, o);
+  ASSERT_TRUE(p.report.applied);
+  EXPECT_EQ(p.report.target_edge, o.edge_length);
+  EXPECT_GE(test::edge_stats(p.mesh, o.edge_length).share(), 0.99);
+}
+
+TEST(Prepare, DensityMakesShorterEdgesWhereItIsHigherAndIsCarriedOver) {
+  // A coarse saddle, density 4 on x < 0 and 1 on x > 0: edges there about half as long.
+  const TriMesh saddle = make_saddle(200);
+  std::vector<double> density;
+  for (const Vec3& p : saddle.positions) density.push_back(p.x() < 0.0 ? 4.0 : 1.0);
+  const PreparedSurface p = prepare_surface(saddle, 60, density);
+  ASSERT_TRUE(p.report.applied);
+  ASSERT_EQ(p.density.size(), p.mesh.positions.size());
+  for (size_t v = 0; v < p.density.size(); ++v) {
+    const double x = p.mesh.positions[v].x();
+    if (x < -3.0) {  // beyond the input triangles that straddle x = 0
+      EXPECT_NEAR(p.density[v], 4.0, 1e-9);
+    } else if (x > 3.0) {
+      EXPECT_NEAR(p.density[v], 1.0, 1e-9);
+    }
+  }
+  const double left = mean_edge_length(p.mesh, [](const Vec3& q) { return q.x() < -4.0; });
+  const double right = mean_edge_length(p.mesh, [](const Vec3& q) { return q.x() > 4.0; });
+  std::printf("[ prepare  ] density 4 vs 1: mean edges %.3g vs %.3g (ratio %.2f)\n", left, right, left / right);
+  EXPECT_NEAR(left / right, 0.5, 0.1);
+
+  // Per face: one value per new face, from the input face under it.
+  std::vector<double> face_density;
+  for (int f = 0; f < saddle.num_faces(); ++f) face_density.push_back(face_centroid(saddle, f).x() < 0.0 ? 4.0 : 1.0);
+  const PreparedSurface q = prepare_surface(saddle, 60, face_density);
+  ASSERT_EQ(q.density.size(), q.mesh.triangles.size());
+  for (int f = 0; f < q.mesh.num_faces(); ++f) {
+    const double x = face_centroid(q.mesh, f).x();
+    if (std::abs(x) > 3.0) {
+      EXPECT_EQ(q.density[static_cast<size_t>(f)], x < 0.0 ? 4.0 : 1.0);
+    }
+  }
+}
+
+TEST(Prepare, ImpossibleRequestsAreClearErrors) {
+  const TriMesh epcot = test::load_clean("epcot.off");
+  EXPECT_THROW(prepare_surface(epcot, 0, {}), InputError);
+  EXPECT_THROW(prepare_surface(epcot, 1000000, {}), InputError);  // 20M triangles at least, over the cap
+  PrepareOptions o;
+  o.edge_length = 10.0;  // a handful of triangles for 100 panels
+  EXPECT_THROW(prepare_surface(epcot, 100, {}, o), InputError);
+  o.edge_length = 1e-6;  // billions of triangles
+  EXPECT_THROW(prepare_surface(epcot, 100, {}, o), InputError);
+  o.edge_length = -1.0;
+  EXPECT_THROW(prepare_surface(epcot, 100, {}, o), InputError);
+  o.edge_length = 0.1;
+  o.mode = PrepareMode::Off;
+  EXPECT_THROW(prepare_surface(epcot, 100, {}, o), InputError);
+  EXPECT_THROW(prepare_surface(epcot, 100, std::vector<double>(7, 1.0)), InputError);
+  EXPECT_THROW(prepare_surface(epcot, 100, std::vector<double>(epcot.positions.size(), 0.0)), InputError);
+  try {
+    prepare_surface(epcot, 1000000, {});
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("ask for at most 100,000 panels"), std::string::npos) << e.what();
+  }
+}
+
+// The coarse quads of YasIsland (976 quads, 1952 triangles) at 2500 panels: refined, then a
+// valid panelization with the input's topology.
+TEST(PrepareEndToEnd, CoarseYasIslandAtMorePanelsThanFaces) {
+  const TriMesh yas = test::load_clean("YasIsland.off");
+  const int panels = 2500;
+  PreparedSurface p = prepare_surface(yas, panels, {});
+  ASSERT_TRUE(p.report.applied);
+  EXPECT_TRUE(test::summarize(p.mesh) == test::summarize(yas));
+  RemeshParams params;
+  params.panels = panels;
+  Remesher r(std::move(p.mesh), params);
+  r.run();
+  EXPECT_TRUE(test::valid_panels(r, panels, 0.01));
+}
+
+// A coarse roof with a courtyard (2 boundary loops, 150 triangles) at 400 panels.
+TEST(PrepareEndToEnd, CoarseRoofWithHoleAtMorePanelsThanFaces) {
+  const TriMesh roof = make_roof_with_hole(150);
+  const int panels = 400;
+  ASSERT_LT(roof.num_faces(), panels);
+  PreparedSurface p = prepare_surface(roof, panels, {});
+  ASSERT_TRUE(p.report.applied);
+  EXPECT_TRUE(test::summarize(p.mesh) == test::summarize(roof));
+  RemeshParams params;
+  params.panels = panels;
+  Remesher r(std::move(p.mesh), params);
+  r.run();
+  EXPECT_TRUE(test::valid_panels(r, panels, 0.02));
+}
+
+}  // namespace
+}  // namespace ff
