@@ -52,10 +52,59 @@ void read_weights(const JsonValue& w, MetricWeights& weights) {
     throw InputError("parameter 'weights': at least one of euclidean, l2, l21 must be positive");
 }
 
+// The `edits` array (remesh_params_json.h): strict, by name.
+std::vector<PanelEdit> read_edits(const JsonValue& v) {
+  if (v.type != JsonValue::Type::Array) throw InputError("parameter 'edits' must be an array");
+  if (v.array.size() > static_cast<size_t>(kMaxEdits))
+    throw InputError("parameter 'edits': at most " + std::to_string(kMaxEdits) + " edits");
+  std::vector<PanelEdit> out;
+  for (size_t i = 0; i < v.array.size(); ++i) {
+    const JsonValue& e = v.array[i];
+    const std::string at = "edits[" + std::to_string(i) + "]";
+    if (e.type != JsonValue::Type::Object) throw InputError("parameter '" + at + "' must be an object");
+    const JsonValue* op = e.find("op");
+    if (!op || op->type != JsonValue::Type::String)
+      throw InputError("parameter '" + at + ".op' must be \"split\", \"merge\", \"lock\" or \"unlock\"");
+    PanelEdit edit;
+    if (op->string == "split")
+      edit.op = PanelEdit::Op::Split;
+    else if (op->string == "merge")
+      edit.op = PanelEdit::Op::Merge;
+    else if (op->string == "lock")
+      edit.op = PanelEdit::Op::Lock;
+    else if (op->string == "unlock")
+      edit.op = PanelEdit::Op::Unlock;
+    else
+      throw InputError("parameter '" + at + ".op' must be \"split\", \"merge\", \"lock\" or \"unlock\"");
+    const bool merge = edit.op == PanelEdit::Op::Merge;
+    bool has_face = false, has_with = false;
+    for (const auto& [name, value] : e.object) {
+      if (name == "op") continue;
+      if (name == "face") {
+        edit.face = static_cast<int>(number(value, at + ".face", 0, 2147483647, true));
+        has_face = true;
+      } else if (name == "with" && merge) {
+        edit.with = static_cast<int>(number(value, at + ".with", 0, 2147483647, true));
+        has_with = true;
+      } else {
+        throw InputError("unknown parameter '" + at + "." + name + "'");
+      }
+    }
+    if (!has_face) throw InputError("parameter '" + at + ".face' is missing");
+    if (merge && !has_with) throw InputError("parameter '" + at + ".with' is missing (the face on the other panel)");
+    out.push_back(edit);
+  }
+  return out;
+}
+
 }  // namespace
 
+std::vector<PanelEdit> panel_edits_from_json(std::string_view json) {
+  return read_edits(parse_json(json, 4, 1 << 20));
+}
+
 RemeshParams remesh_params_from_json(std::string_view json, const RemeshParams& base) {
-  const JsonValue root = parse_json(json, 4, 64 * 1024);
+  const JsonValue root = parse_json(json, 4, 1 << 20);  // 1 MB: up to kMaxEdits edits
   if (root.type != JsonValue::Type::Object) throw InputError("parameters must be a JSON object");
   RemeshParams p = base;
   for (const auto& [name, value] : root.object) {
@@ -80,6 +129,8 @@ RemeshParams remesh_params_from_json(std::string_view json, const RemeshParams& 
       p.single_point_nodes = boolean(value, name);
     } else if (name == "optimizePlanes") {
       p.optimize_planes = boolean(value, name);
+    } else if (name == "edits") {
+      p.edits = read_edits(value);
     } else {
       throw InputError("unknown parameter '" + name + "'");
     }

@@ -55,6 +55,8 @@ void Remesher::validate(const RemeshParams& p) const {
   if (!(p.min_corner_angle_deg >= 0.0 && p.min_corner_angle_deg <= 60.0))
     throw InputError("the minimum corner angle must be between 0 and 60 degrees");
   seeds_per_component(faces_, topology_, p.panels);  // throws on too many / too few panels
+  validate_edits(p.edits);
+  if (!p.make_panels && !p.edits.empty()) throw InputError("edits need panels (the panel phase is off)");
 }
 
 void Remesher::start_lloyd() {
@@ -99,6 +101,8 @@ void Remesher::panel_round() {
   options.layout.glass = params_.glass;
   options.fixed = settled_;
   options.fixed_planes = settled_planes_;
+  hold(options.fixed, options.fixed_planes);  // locked panels and their neighbours
+  options.layout.held_nodes = held_nodes();
   auto attempt = std::make_unique<PanelAttempt>(mesh_, topology_, local_positions_, faces_, clustering_, options);
   const int invalid = attempt->num_invalid();
   ++panel_rounds_done_;
@@ -121,6 +125,9 @@ void Remesher::fix_panels(const PanelAttempt& attempt) {
   // round works where panels are still invalid and does not undo progress elsewhere.
   settled_ = attempt.settled_clusters();
   settled_planes_ = attempt.cluster_planes();
+  hold(settled_, settled_planes_);
+  const std::vector<char> held = held_clusters();
+  const auto is_held = [&](int c) { return !held.empty() && held[static_cast<size_t>(c)]; };
   // Clusters that are not disks split at once; enclosed ones move elsewhere. Invalid panels
   // get a split near their problem (merging elsewhere to keep n) only when the rounds stall:
   // a split refloods its neighbourhood, while the boundary term alone converges steadily
@@ -131,12 +138,15 @@ void Remesher::fix_panels(const PanelAttempt& attempt) {
   // Acute corners do not move with the boundary term (it shifts faces, not where clusters
   // meet), so with a minimum angle a stall splits at up to three of them at once.
   const int splits = stalled ? (params_.min_corner_angle_deg > 0.0 ? 3 : 1) : 0;
-  const std::vector<std::pair<int, int>> requests = split_requests(mesh_, topology_, attempt, splits);
+  std::vector<std::pair<int, int>> requests = split_requests(mesh_, topology_, attempt, splits);
+  requests.erase(std::remove_if(requests.begin(), requests.end(), [&](const auto& r) { return is_held(r.first); }),
+                 requests.end());
   // Merges happen away from the splits; a settled pair may merge (then it is unsettled below).
   const std::vector<int> seeds_before = clustering_.seeds;
   const std::vector<Proxy> proxies_before = clustering_.proxies;
   if (!requests.empty()) {
-    std::vector<char> protect(settled_.size(), 0);
+    std::vector<char> protect = held;
+    protect.resize(settled_.size(), 0);
     std::vector<char> requested(settled_.size(), 0);
     for (const auto& request : requests) requested[static_cast<size_t>(request.first)] = 1;
     for (const auto& [a, b] : adjacent_cluster_pairs(topology_, clustering_.labels)) {
@@ -145,7 +155,9 @@ void Remesher::fix_panels(const PanelAttempt& attempt) {
     }
     split_near(metric_, topology_, clustering_, requests, protect, 3, /*reflood_after=*/false);
   }
-  relocate_clusters(metric_, clustering_, enclosed_clusters(attempt), settled_);
+  std::vector<int> enclosed = enclosed_clusters(attempt);
+  enclosed.erase(std::remove_if(enclosed.begin(), enclosed.end(), is_held), enclosed.end());
+  relocate_clusters(metric_, clustering_, enclosed, settled_);
   settled_.resize(static_cast<size_t>(clustering_.num_clusters()), 0);
   settled_planes_.resize(settled_.size());
   // Then a Lloyd iteration with the boundary term of this attempt's panels; clusters the
@@ -172,7 +184,7 @@ void Remesher::finish_panels() {
   const bool optimize = (params_.optimize_planes || params_.single_point_nodes) && panels_.num_invalid() == 0;
   progress_.stage = optimize ? Stage::Optimize : Stage::Done;
   if (optimize) progress_ = Progress{Stage::Optimize, 0, 1, progress_.energy, 0};
-  if (!optimize) cut_glass();
+  if (!optimize) record_planes(), cut_glass();
 }
 
 void Remesher::cut_glass() {
@@ -185,8 +197,15 @@ void Remesher::optimize_planes() {
   PanelLayout& layout = best_->layout();
   if (params_.optimize_planes) {
     const PanelLayout& settled = layout;
-    layout.try_planes(
-        surface_fit_planes(faces_, best_->clustering().labels, settled.planes(), settled.node_constraints()));
+    std::vector<Plane> fitted =
+        surface_fit_planes(faces_, best_->clustering().labels, settled.planes(), settled.node_constraints());
+    // Locked panels and their neighbours keep their planes.
+    const std::vector<char> held = held_clusters();
+    for (size_t c = 0; c < held.size(); ++c) {
+      const int master = settled.planes().master_of[c];
+      if (held[c]) fitted[static_cast<size_t>(master)] = settled.planes().planes[static_cast<size_t>(master)];
+    }
+    layout.try_planes(fitted);
   }
   // Last: it pins planes to points, which the fit above would undo.
   if (params_.single_point_nodes) layout.make_single_point_nodes();
@@ -194,6 +213,7 @@ void Remesher::optimize_planes() {
   progress_.iteration = 1;
   progress_.invalid_panels = panels_.num_invalid();
   progress_.stage = Stage::Done;
+  record_planes();
   cut_glass();
 }
 
@@ -207,6 +227,10 @@ Progress Remesher::step() {
       break;
     }
     case Stage::Lloyd: {
+      if (!locks_.empty()) {  // held clusters keep their faces; no teleports
+        lloyd_step_held();
+        break;
+      }
       const int it = lloyd_done_ + 1;
       int moves = 0;
       // Teleport early and mid-phase, never in the last iterations, so Lloyd settles after.
@@ -234,6 +258,7 @@ Progress Remesher::step() {
       optimize_planes();
       break;
     case Stage::Done:
+      apply_pending_edits();
       break;
   }
   return progress_;
@@ -259,8 +284,11 @@ void Remesher::set_params(RemeshParams params) {
   std::optional<FaceData> faces;
   if (params.density != params_.density) faces = make_face_data(mesh_, params.density);
   Metric(faces ? *faces : faces_, params.weights, params.panels);  // throws on bad weights
-  const bool restart = clustering_.labels.empty() || params.seed != params_.seed || params.seeding != params_.seeding;
-  const int old_panels = params_.panels;
+  // A changed edit list replays on a fresh solve (set_edits is the incremental way).
+  const bool restart = clustering_.labels.empty() || params.seed != params_.seed ||
+                       params.seeding != params_.seeding || !(params.edits == params_.edits);
+  // After edits the clustering has its own count: the new one is reached from there.
+  const int old_panels = next_edit_ > 0 ? clustering_.num_clusters() : params_.panels;
   params_ = std::move(params);
   if (faces) faces_ = std::move(*faces);
   metric_ = Metric(faces_, params_.weights, params_.panels);
@@ -269,7 +297,16 @@ void Remesher::set_params(RemeshParams params) {
     teleports_ = 0;
     lloyd_done_ = 0;
     converged_ = false;
+    clear_edits();
     progress_ = Progress{Stage::Seeding, 0, 1, 0.0, 0};
+    return;
+  }
+  // The edits so far are part of the design now: undo replays from the next solve.
+  base_edits_ = next_edit_;
+  base_.reset();
+  if (!locks_.empty()) {
+    change_count_held(params_.panels);
+    start_lloyd();
     return;
   }
   if (params_.panels > old_panels) add_clusters(metric_, topology_, clustering_, params_.panels - old_panels);

@@ -6,6 +6,7 @@
 // Stages: Seeding -> Lloyd (k1 iterations, teleports every few) -> Panels (up to k2 rounds of
 // corners -> intersect planes -> validate -> fix -> Lloyd with the boundary term) ->
 // Optimize (the planes themselves, least squares, once the combinatorics settled) -> Done.
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -19,8 +20,23 @@
 #include "core/mesh/tri_mesh.h"
 #include "core/panels/panel_attempt.h"
 #include "core/panels/panel_mesh.h"
+#include "core/panels/plane.h"
 
 namespace ff {
+
+// A designer's edit of one panel (paper 6, future work), naming panels by a face inside them:
+// face ids are stable for a mesh, cluster ids change between solves. Applied in order to the
+// solved design (remesher_edits.cpp): split cuts the panel in two, merge joins it with the
+// neighbouring panel containing `with`, lock holds it (its faces, plane and outline) through
+// every later re-solve, unlock releases it.
+struct PanelEdit {
+  enum class Op { Split, Merge, Lock, Unlock };
+  Op op = Op::Split;
+  int face = 0;
+  int with = -1;  // merge only
+  bool operator==(const PanelEdit& o) const { return op == o.op && face == o.face && with == o.with; }
+};
+const char* edit_name(PanelEdit::Op op);
 
 struct RemeshParams {
   int panels = 100;
@@ -44,6 +60,8 @@ struct RemeshParams {
   // The designer's smallest corner angle in degrees (0 = off, at most 60): a panel corner
   // below it is a problem the panel rounds fix like the others; what remains is reported.
   double min_corner_angle_deg = 0.0;
+  // Per-panel edits, applied in order once the solve is done (PanelEdit; DESIGN.md 3).
+  std::vector<PanelEdit> edits;
 };
 
 enum class Stage { Seeding, Lloyd, Panels, Optimize, Done };
@@ -68,7 +86,8 @@ class Remesher {
   Remesher& operator=(const Remesher&) = delete;
 
   Progress step();
-  bool done() const { return progress_.stage == Stage::Done; }
+  // Done: the solve finished and every edit of params().edits is applied.
+  bool done() const { return progress_.stage == Stage::Done && next_edit_ >= params_.edits.size(); }
   // Steps until done; returns the final progress.
   Progress run();
   const Progress& progress() const { return progress_; }
@@ -77,8 +96,23 @@ class Remesher {
   // the worst or merges the cheapest clusters, changed weights or density refit the proxies;
   // then the Lloyd phase runs again. A changed seed or seeding method starts over (and the
   // clustering is empty until the next step()). Throws InputError for bad parameters and
-  // then leaves everything as it was.
+  // then leaves everything as it was. Locked panels keep their faces and planes (set_edits).
   void set_params(RemeshParams params);
+
+  // The edit list (params().edits) changes: if it is the current list plus more edits, the
+  // new ones are applied to the current design; otherwise the design from before the first
+  // edit since the last parameter change is restored and the list replayed from there (undo,
+  // redo); a list that differs before that point is replayed on a fresh solve. A changed
+  // edit list in set_params also solves fresh, then replays. Runs to done before returning.
+  // Throws InputError naming the edit (face out of range, merge of panels that are not
+  // neighbours, split or merge of a locked panel, unlock of a panel not locked) and then
+  // leaves everything as it was.
+  void set_edits(std::vector<PanelEdit> edits);
+
+  // The number of panels (clusters) now: params().panels plus splits minus merges.
+  int num_panels() const { return clustering_.num_clusters(); }
+  // The clusters locked by an edit, sorted (empty before panels).
+  std::vector<int> locked_clusters() const;
 
   const TriMesh& mesh() const { return mesh_; }
   const MeshTopology& topology() const { return topology_; }
@@ -105,6 +139,37 @@ class Remesher {
   void finish_panels();
   void cut_glass();  // glass mode, last: the pieces of concave panels (glass_split.h)
 
+  // Edits (remesher_edits.cpp). A held cluster keeps exactly these faces and this plane.
+  struct Held {
+    int face = -1;  // one of its faces: its id is that face's label
+    std::vector<int> faces;
+    Plane plane;
+  };
+  // A locked cluster and the clusters around it (their planes make its outline): held[0] is
+  // the locked one.
+  struct Lock {
+    std::vector<Held> held;
+    // Its outline's nodes, each named by a face of each of its three clusters (-1: the border).
+    std::vector<std::array<int, 3>> nodes;
+  };
+  // Everything an edit changes, to restore on failure or undo.
+  struct EditState;
+  EditState save() const;
+  void restore(const EditState& state);
+  void validate_edits(const std::vector<PanelEdit>& edits) const;
+  void apply_pending_edits();
+  void apply_edit(const PanelEdit& edit, size_t index);
+  void start_edited_panels(const std::vector<int>& edited);
+  void record_planes();
+  void clear_edits();
+  // Per cluster: held by a lock; and the held planes written into settled / planes.
+  std::vector<char> held_clusters() const;
+  void hold(std::vector<char>& settled, std::vector<Plane>& planes) const;
+  std::vector<int> held_labels() const;  // per face: its held cluster, or -1
+  std::vector<std::array<int, 3>> held_nodes() const;  // LayoutOptions::held_nodes
+  void lloyd_step_held();
+  void change_count_held(int target);
+
   TriMesh mesh_;
   MeshTopology topology_;
   RemeshParams params_;
@@ -123,6 +188,15 @@ class Remesher {
   int lloyd_done_ = 0;
   int teleports_ = 0;
   bool converged_ = false;
+  // Edits: planes per cluster of the finished design, locks, edits applied so far, the edits
+  // already in the design when the parameters last changed, and the design before the first
+  // edit after that (the base undo and redo replay from).
+  std::vector<Plane> cluster_planes_;
+  std::vector<std::vector<std::array<int, 3>>> cluster_nodes_;  // per cluster: its nodes' clusters
+  std::vector<Lock> locks_;
+  size_t next_edit_ = 0;
+  size_t base_edits_ = 0;
+  std::shared_ptr<const EditState> base_;
 };
 
 }  // namespace ff

@@ -78,7 +78,7 @@ int PanelLayout::switch_pairings() {
   int changes = 0;
   for (size_t g = 0; g < groups_.groups.size(); ++g) {
     const int k = static_cast<int>(groups_.groups[g].clusters.size());
-    if (k < 4) continue;
+    if (k < 4 || held_group_[g]) continue;
     const std::vector<int> around = clusters_of_group(static_cast<int>(g));
     const auto invalid_around = [&]() {
       int count = 0;

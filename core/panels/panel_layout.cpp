@@ -27,6 +27,37 @@ int position_of(const std::vector<int>& cycle, int cluster) {
 
 }  // namespace
 
+namespace {
+
+// Keeps in `options` the pairings whose nodes include every held cluster triple that lies in
+// the group (all three clusters in it); true when any did and some pairing has them all.
+bool hold_pairings(const std::vector<int>& clusters, const std::vector<std::array<int, 3>>& held,
+                   std::vector<Pairing>& options) {
+  std::vector<std::array<int, 3>> wanted;
+  for (const std::array<int, 3>& t : held) {
+    const auto in = [&](int c) { return std::find(clusters.begin(), clusters.end(), c) != clusters.end(); };
+    if (in(t[0]) && in(t[1]) && in(t[2])) wanted.push_back(t);
+  }
+  if (wanted.empty()) return false;
+  std::vector<Pairing> kept;
+  for (const Pairing& p : options) {
+    std::vector<std::array<int, 3>> nodes;
+    for (const NodeTriangle& tri : p) {
+      std::array<int, 3> t{clusters[static_cast<size_t>(tri[0])], clusters[static_cast<size_t>(tri[1])],
+                           clusters[static_cast<size_t>(tri[2])]};
+      std::sort(t.begin(), t.end());
+      nodes.push_back(t);
+    }
+    const auto has = [&](const std::array<int, 3>& t) { return std::find(nodes.begin(), nodes.end(), t) != nodes.end(); };
+    if (std::all_of(wanted.begin(), wanted.end(), has)) kept.push_back(p);
+  }
+  if (kept.empty()) return false;
+  options = std::move(kept);
+  return true;
+}
+
+}  // namespace
+
 PanelLayout::PanelLayout(const TriMesh& mesh, const MeshTopology& topology, const std::vector<int>& labels,
                          const std::vector<Vec3>& positions, const PanelGraph& graph, MasterPlanes planes,
                          const LayoutOptions& options, const std::vector<std::pair<int, int>>& forced)
@@ -42,6 +73,7 @@ PanelLayout::PanelLayout(const TriMesh& mesh, const MeshTopology& topology, cons
   const size_t groups = groups_.groups.size();
   const size_t clusters = graph_.problems.size();
   pairing_.resize(groups);
+  held_group_.assign(groups, 0);
   single_.assign(groups, 0);
   single_point_.assign(groups, Vec3::Zero());
   node_offset_.assign(groups + 1, 0);
@@ -66,7 +98,8 @@ PanelLayout::PanelLayout(const TriMesh& mesh, const MeshTopology& topology, cons
     } else {
       // The pairing whose nodes stay closest to where they belong (fig. 6); validation and
       // switch_pairings() correct it where it flips an edge.
-      const std::vector<Pairing> options = node_pairings(k);
+      std::vector<Pairing> options = node_pairings(k);
+      held_group_[g] = hold_pairings(group.clusters, options_.held_nodes, options);
       double best = std::numeric_limits<double>::infinity();
       Pairing chosen = options.front();  // even if every cost is infinite or NaN
       for (const Pairing& p : options) {
@@ -82,6 +115,16 @@ PanelLayout::PanelLayout(const TriMesh& mesh, const MeshTopology& topology, cons
   polygons_.resize(clusters);
   issues_.resize(clusters);
   for (size_t c = 0; c < clusters; ++c) build_panel(static_cast<int>(c));
+}
+
+std::array<int, 3> PanelLayout::node_clusters(int node) const {
+  const int g = node_group_[static_cast<size_t>(node)];
+  const NodeGroup& group = groups_.groups[static_cast<size_t>(g)];
+  const NodeTriangle& tri = pairing_[static_cast<size_t>(g)][static_cast<size_t>(node - node_offset_[static_cast<size_t>(g)])];
+  std::array<int, 3> out;
+  for (int t = 0; t < 3; ++t) out[static_cast<size_t>(t)] = group.clusters[static_cast<size_t>(tri[static_cast<size_t>(t)])];
+  std::sort(out.begin(), out.end());
+  return out;
 }
 
 int PanelLayout::num_invalid() const {

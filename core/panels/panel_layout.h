@@ -7,6 +7,7 @@
 // (paper 2.2-2.3). The fixes that need no reclustering live here too: switching pairings
 // (fig. 6) and tilting the planes of spikes (2.3). Everything is in the local frame of
 // FaceData.
+#include <array>
 #include <vector>
 
 #include "core/cluster/face_data.h"
@@ -27,6 +28,10 @@ struct LayoutOptions {
   double tolerance = 1e-9;            // lengths below this count as zero in the panel checks
   double min_corner_angle_deg = 0.0;  // a convex corner below this is a problem; 0 = off
   bool glass = false;                 // judge the corners of the convex pieces (glass_split.h)
+  // Cluster triples (sorted, kBoundary first) that must be nodes where a group can have them:
+  // the corners of locked panels (remesher_edits.cpp), so their outlines stay. A group with
+  // any keeps the pairing that has them all (none: as usual) and is never switched.
+  std::vector<std::array<int, 3>> held_nodes;
 };
 
 // A panel's polygon: its vertices (local frame) in counter-clockwise order.
@@ -50,6 +55,8 @@ class PanelLayout {
   int num_invalid() const;
   const MasterPlanes& planes() const { return planes_; }
   const PanelPolygon& polygon(int cluster) const { return polygons_[static_cast<size_t>(cluster)]; }
+  // The clusters of a node (PanelPolygon::node), sorted (kBoundary first when there).
+  std::array<int, 3> node_clusters(int node) const;
   // The mesh vertices where the panel of `cluster` has a problem (spikes, or every corner of
   // a panel that is flipped or not star-shaped): where a split should seed.
   std::vector<int> problem_corners(int cluster) const;
@@ -120,6 +127,7 @@ class PanelLayout {
   NodeGroups groups_;
 
   std::vector<Pairing> pairing_;  // per group
+  std::vector<char> held_group_;  // per group: its pairing holds LayoutOptions::held_nodes
   std::vector<int> node_offset_;  // per group, into the node arrays
   std::vector<Vec3> node_point_;  // per node
   std::vector<int> node_planes_;  // distinct planes defining it

@@ -1,0 +1,353 @@
+// Remesher: per-panel edits (paper 6, future work; DESIGN.md 3). Edits are data in
+// RemeshParams::edits, applied in order to the solved design, so a list replays to the same
+// panels: undo and redo are a shorter or longer list. Split and merge change the clustering
+// and re-run only the panel phase (the Lloyd phase would undo them), with every cluster away
+// from the edit settled, so the rest of the design stays as it was. A lock holds the
+// cluster's faces and plane, and those of every cluster around it: a panel's outline is made
+// of its neighbours' planes, so holding them is what keeps it exactly. Held clusters take no
+// part in later Lloyd steps, count changes, splits near problems or plane fits.
+#include <algorithm>
+#include <string>
+
+#include "core/cluster/cluster_edits.h"
+#include "core/panels/panel_graph.h"
+#include "core/remesher.h"
+#include "core/util/error.h"
+
+namespace ff {
+
+namespace {
+constexpr size_t kMaxEdits = 100000;
+}
+
+const char* edit_name(PanelEdit::Op op) {
+  switch (op) {
+    case PanelEdit::Op::Split:
+      return "split";
+    case PanelEdit::Op::Merge:
+      return "merge";
+    case PanelEdit::Op::Lock:
+      return "lock";
+    case PanelEdit::Op::Unlock:
+      return "unlock";
+  }
+  return "unknown";
+}
+
+struct Remesher::EditState {
+  RemeshParams params;
+  Clustering clustering;
+  Progress progress;
+  PanelMesh panels;
+  int panel_rounds_done = 0, stalled_rounds = 0, lloyd_done = 0, teleports = 0;
+  bool converged = false;
+  std::vector<char> settled;
+  std::vector<Plane> settled_planes, cluster_planes;
+  std::vector<std::vector<std::array<int, 3>>> cluster_nodes;
+  std::vector<Lock> locks;
+  size_t next_edit = 0, base_edits = 0;
+  std::shared_ptr<const EditState> base;
+};
+
+Remesher::EditState Remesher::save() const {
+  return EditState{params_,      clustering_, progress_,       panels_,         panel_rounds_done_,
+                   stalled_rounds_, lloyd_done_, teleports_,    converged_,      settled_,
+                   settled_planes_, cluster_planes_, cluster_nodes_, locks_, next_edit_, base_edits_,
+                   base_};
+}
+
+// Only ever called with a finished design (stage Done), which needs no panel attempt.
+void Remesher::restore(const EditState& s) {
+  params_ = s.params;
+  clustering_ = s.clustering;
+  progress_ = s.progress;
+  panels_ = s.panels;
+  panel_rounds_done_ = s.panel_rounds_done;
+  stalled_rounds_ = s.stalled_rounds;
+  lloyd_done_ = s.lloyd_done;
+  teleports_ = s.teleports;
+  converged_ = s.converged;
+  settled_ = s.settled;
+  settled_planes_ = s.settled_planes;
+  cluster_planes_ = s.cluster_planes;
+  cluster_nodes_ = s.cluster_nodes;
+  locks_ = s.locks;
+  next_edit_ = s.next_edit;
+  base_edits_ = s.base_edits;
+  base_ = s.base;
+  best_.reset();
+}
+
+void Remesher::clear_edits() {
+  locks_.clear();
+  base_.reset();
+  next_edit_ = 0;
+  base_edits_ = 0;
+  cluster_planes_.clear();
+  cluster_nodes_.clear();
+}
+
+void Remesher::validate_edits(const std::vector<PanelEdit>& edits) const {
+  if (edits.size() > kMaxEdits) throw InputError("at most " + std::to_string(kMaxEdits) + " edits");
+  const int faces = mesh_.num_faces();
+  for (size_t i = 0; i < edits.size(); ++i) {
+    const PanelEdit& e = edits[i];
+    const std::string where = "edit " + std::to_string(i + 1) + " (" + edit_name(e.op) + "): ";
+    const auto check = [&](int face) {
+      if (face < 0 || face >= faces)
+        throw InputError(where + "face " + std::to_string(face) + " is out of range (the mesh has " +
+                         std::to_string(faces) + " triangles)");
+    };
+    check(e.face);
+    if (e.op == PanelEdit::Op::Merge) check(e.with);
+  }
+}
+
+void Remesher::record_planes() {
+  cluster_planes_ = best_->cluster_planes();
+  const PanelLayout& layout = best_->layout();
+  cluster_nodes_.assign(cluster_planes_.size(), {});
+  for (int c = 0; c < layout.num_clusters(); ++c) {
+    for (int node : layout.polygon(c).node) {
+      if (node >= 0) cluster_nodes_[static_cast<size_t>(c)].push_back(layout.node_clusters(node));
+    }
+  }
+}
+
+std::vector<std::array<int, 3>> Remesher::held_nodes() const {
+  std::vector<std::array<int, 3>> out;
+  for (const Lock& lock : locks_) {
+    for (const std::array<int, 3>& named : lock.nodes) {
+      std::array<int, 3> t;
+      for (size_t k = 0; k < 3; ++k) t[k] = named[k] < 0 ? kBoundary : clustering_.labels[static_cast<size_t>(named[k])];
+      std::sort(t.begin(), t.end());
+      out.push_back(t);
+    }
+  }
+  return out;
+}
+
+std::vector<char> Remesher::held_clusters() const {
+  if (locks_.empty()) return {};
+  std::vector<char> out(static_cast<size_t>(clustering_.num_clusters()), 0);
+  for (const Lock& lock : locks_) {
+    for (const Held& h : lock.held) out[static_cast<size_t>(clustering_.labels[static_cast<size_t>(h.face)])] = 1;
+  }
+  return out;
+}
+
+void Remesher::hold(std::vector<char>& settled, std::vector<Plane>& planes) const {
+  if (locks_.empty()) return;
+  const size_t n = static_cast<size_t>(clustering_.num_clusters());
+  settled.resize(n, 0);
+  planes.resize(n);
+  for (const Lock& lock : locks_) {
+    for (const Held& h : lock.held) {
+      const size_t c = static_cast<size_t>(clustering_.labels[static_cast<size_t>(h.face)]);
+      settled[c] = 1;
+      planes[c] = h.plane;
+    }
+  }
+}
+
+std::vector<int> Remesher::held_labels() const {
+  std::vector<int> out(clustering_.labels.size(), -1);
+  for (const Lock& lock : locks_) {
+    for (const Held& h : lock.held) {
+      const int c = clustering_.labels[static_cast<size_t>(h.face)];
+      for (int f : h.faces) out[static_cast<size_t>(f)] = c;
+    }
+  }
+  return out;
+}
+
+std::vector<int> Remesher::locked_clusters() const {
+  std::vector<int> out;
+  if (clustering_.labels.empty()) return out;
+  for (const Lock& lock : locks_) out.push_back(clustering_.labels[static_cast<size_t>(lock.held[0].face)]);
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+// A Lloyd iteration that leaves held clusters as they are (their faces fixed in the flood).
+void Remesher::lloyd_step_held() {
+  const int it = lloyd_done_ + 1;
+  choose_seeds(metric_, clustering_);
+  const std::vector<int> before = clustering_.labels;
+  const FixedLabels fixed(held_labels());
+  flood(metric_, topology_, clustering_, &fixed);
+  refit(metric_, clustering_);
+  for (int& s : clustering_.sticky) {
+    if (s > 0) --s;
+  }
+  if (before == clustering_.labels) converged_ = true;
+  lloyd_done_ = it;
+  progress_.iteration = it;
+  progress_.energy = clustering_.energy * faces_.area_to_world();
+  if (converged_ || it >= params_.lloyd_iterations) after_lloyd();
+}
+
+// A new panel count with locks: split the worst or merge the cheapest clusters not held.
+void Remesher::change_count_held(int target) {
+  const int start = clustering_.num_clusters();
+  int n = start;
+  while (n < target) {
+    const int w = worst_free_cluster(metric_, clustering_, held_clusters());
+    if (w < 0) break;
+    split_cluster(metric_, topology_, clustering_, w);
+    ++n;
+  }
+  while (n > target) {
+    const auto [a, b] = cheapest_free_merge(metric_, topology_, clustering_, held_clusters());
+    if (a < 0) break;
+    merge_clusters(metric_, clustering_, a, b);
+    --n;
+  }
+  if (n == start) refit(metric_, clustering_);  // proxies and energy under the new metric
+}
+
+void Remesher::start_edited_panels(const std::vector<int>& edited) {
+  const size_t n = static_cast<size_t>(clustering_.num_clusters());
+  settled_.assign(n, 1);
+  for (int c : edited) {
+    settled_[static_cast<size_t>(c)] = 0;
+    for (int r : cluster_ring(mesh_, topology_, clustering_.labels, c)) settled_[static_cast<size_t>(r)] = 0;
+  }
+  settled_planes_ = cluster_planes_;
+  settled_planes_.resize(n);
+  hold(settled_, settled_planes_);
+  best_.reset();
+  panel_rounds_done_ = 0;
+  stalled_rounds_ = 0;
+  progress_ = Progress{Stage::Panels, 0, std::max(1, params_.panel_rounds), progress_.energy, 0};
+}
+
+void Remesher::apply_edit(const PanelEdit& e, size_t index) {
+  const std::string where = "edit " + std::to_string(index + 1) + " (" + edit_name(e.op) + "): ";
+  const std::string at = "the panel at face " + std::to_string(e.face);
+  const int n = clustering_.num_clusters();
+  if (panels_.num_panels() == 0 || static_cast<int>(cluster_planes_.size()) != n ||
+      static_cast<int>(cluster_nodes_.size()) != n)
+    throw InputError(where + "there are no panels to edit");
+  const std::vector<int>& labels = clustering_.labels;
+  const int c = labels[static_cast<size_t>(e.face)];
+  const std::vector<char> held = held_clusters();
+  const auto check_free = [&](int cluster, const std::string& panel) {
+    if (!held.empty() && held[static_cast<size_t>(cluster)])
+      throw InputError(where + panel + " is locked or next to a locked panel: unlock that first");
+  };
+  const auto find_lock = [&] {
+    return std::find_if(locks_.begin(), locks_.end(), [&](const Lock& l) {
+      return labels[static_cast<size_t>(l.held[0].face)] == c;
+    });
+  };
+  switch (e.op) {
+    case PanelEdit::Op::Split: {
+      check_free(c, at);
+      if (std::count(labels.begin(), labels.end(), c) < 2)
+        throw InputError(where + at + " has a single triangle and cannot be split");
+      const int added = split_cluster(metric_, topology_, clustering_, c);
+      cluster_planes_.push_back(cluster_planes_[static_cast<size_t>(c)]);
+      cluster_nodes_.clear();  // until the next Done; locks need a finished design
+      start_edited_panels({c, added});
+      break;
+    }
+    case PanelEdit::Op::Merge: {
+      const int d = labels[static_cast<size_t>(e.with)];
+      const std::string pair = "faces " + std::to_string(e.face) + " and " + std::to_string(e.with);
+      if (c == d) throw InputError(where + pair + " are on the same panel");
+      if (!clusters_share_edge(topology_, labels, c, d))
+        throw InputError(where + "the panels at " + pair + " are not neighbours (they share no edge)");
+      check_free(c, at);
+      check_free(d, "the panel at face " + std::to_string(e.with));
+      const int merged = merge_clusters(metric_, clustering_, c, d);
+      cluster_planes_.erase(cluster_planes_.begin() + d);
+      cluster_nodes_.clear();
+      start_edited_panels({merged});
+      break;
+    }
+    case PanelEdit::Op::Lock: {
+      if (find_lock() != locks_.end()) break;  // locked already
+      Lock lock;
+      std::vector<int> clusters{c};
+      for (int r : cluster_ring(mesh_, topology_, labels, c)) clusters.push_back(r);
+      for (int k : clusters) {
+        Held h;
+        for (size_t f = 0; f < labels.size(); ++f) {
+          if (labels[f] == k) h.faces.push_back(static_cast<int>(f));
+        }
+        h.face = k == c ? e.face : h.faces.front();
+        h.plane = cluster_planes_[static_cast<size_t>(k)];
+        lock.held.push_back(std::move(h));
+      }
+      for (const std::array<int, 3>& t : cluster_nodes_[static_cast<size_t>(c)]) {
+        std::array<int, 3> named{-1, -1, -1};
+        bool known = true;
+        for (size_t k = 0; k < 3; ++k) {
+          if (t[k] == kBoundary) continue;
+          const auto it = std::find(clusters.begin(), clusters.end(), t[k]);
+          known = known && it != clusters.end();
+          if (known) named[k] = lock.held[static_cast<size_t>(it - clusters.begin())].face;
+        }
+        if (known) lock.nodes.push_back(named);
+      }
+      locks_.push_back(std::move(lock));
+      break;
+    }
+    case PanelEdit::Op::Unlock: {
+      const auto it = find_lock();
+      if (it == locks_.end()) throw InputError(where + at + " is not locked");
+      locks_.erase(it);
+      break;
+    }
+  }
+}
+
+void Remesher::apply_pending_edits() {
+  while (progress_.stage == Stage::Done && next_edit_ < params_.edits.size()) {
+    if (next_edit_ == base_edits_ && !base_) base_ = std::make_shared<const EditState>(save());
+    try {
+      apply_edit(params_.edits[next_edit_], next_edit_);
+    } catch (...) {
+      params_.edits.resize(next_edit_);  // the design stays as it was before this edit
+      throw;
+    }
+    ++next_edit_;
+  }
+}
+
+void Remesher::set_edits(std::vector<PanelEdit> edits) {
+  validate_edits(edits);
+  if (!params_.make_panels && !edits.empty()) throw InputError("edits need panels (the panel phase is off)");
+  if (!done()) run();
+  if (edits == params_.edits) return;
+  const EditState before = save();
+  const auto starts_with = [&](size_t count) {
+    return count <= edits.size() && count <= params_.edits.size() &&
+           std::equal(params_.edits.begin(), params_.edits.begin() + static_cast<std::ptrdiff_t>(count), edits.begin());
+  };
+  try {
+    if (starts_with(params_.edits.size())) {
+      // More edits: applied to the current design.
+    } else if (base_ && starts_with(base_edits_)) {
+      const std::shared_ptr<const EditState> base = base_;
+      restore(*base);  // undo / redo: from the design before the first edit
+      base_ = base;
+    } else {
+      clustering_ = Clustering{};
+      teleports_ = 0;
+      lloyd_done_ = 0;
+      converged_ = false;
+      clear_edits();
+      progress_ = Progress{Stage::Seeding, 0, 1, 0.0, 0};
+    }
+    params_.edits = std::move(edits);
+    run();
+  } catch (...) {
+    restore(before);
+    throw;
+  }
+}
+
+}  // namespace ff

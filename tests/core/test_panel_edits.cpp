@@ -1,0 +1,318 @@
+// Per-panel edits (issue 6, paper 6): split adds a panel, merge removes one, both keep every
+// invariant of the planar panels (panel_checks.h); a locked panel keeps its faces, its plane
+// and its outline through re-solves at other counts and weights; edit lists replay to the
+// same bytes; bad edits throw InputError and leave the design as it was.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "cluster_checks.h"
+#include "core/cluster/cluster_edits.h"
+#include "core/panels/panel_export.h"
+#include "core/shapes/hard_cases.h"
+#include "core/util/error.h"
+#include "panel_checks.h"
+
+namespace ff {
+namespace {
+
+struct EditCase {
+  std::string name;
+  int panels;
+};
+
+void PrintTo(const EditCase& c, std::ostream* os) { *os << c.name << " at " << c.panels; }
+
+TriMesh case_mesh(const std::string& name) {
+  if (name.find('.') != std::string::npos) return test::load_clean(name);
+  for (NamedShape& s : hard_cases(8000)) {
+    if (s.name == name) return std::move(s.mesh);
+  }
+  ADD_FAILURE() << "no hard case " << name;
+  return {};
+}
+
+std::string obj(const Remesher& r) { return panels_obj(r.panels(), "edits test"); }
+
+int face_count(const Remesher& r, int cluster) {
+  const std::vector<int>& l = r.clustering().labels;
+  return static_cast<int>(std::count(l.begin(), l.end(), cluster));
+}
+
+// The seed face of the largest cluster: a panel worth splitting.
+int big_panel_face(const Remesher& r) {
+  int best = 0;
+  for (int c = 1; c < r.num_panels(); ++c) {
+    if (face_count(r, c) > face_count(r, best)) best = c;
+  }
+  return r.clustering().seeds[static_cast<size_t>(best)];
+}
+
+// Two faces on neighbouring panels (across an edge), from the middle of the face list.
+std::pair<int, int> neighbour_faces(const Remesher& r) {
+  const std::vector<int>& l = r.clustering().labels;
+  for (size_t k = 0; k < l.size(); ++k) {
+    const size_t f = (k + l.size() / 2) % l.size();
+    for (int g : r.topology().face_neighbors[f]) {
+      if (g >= 0 && l[static_cast<size_t>(g)] != l[f]) return {static_cast<int>(f), g};
+    }
+  }
+  return {-1, -1};
+}
+
+// Two faces on panels that share no edge.
+std::pair<int, int> distant_faces(const Remesher& r) {
+  const std::vector<int>& l = r.clustering().labels;
+  for (int f = 0; f < static_cast<int>(l.size()); ++f) {
+    const int c = l[static_cast<size_t>(f)], d = l[0];
+    if (c != d && !clusters_share_edge(r.topology(), l, d, c)) return {0, f};
+  }
+  return {-1, -1};
+}
+
+// A face on a panel away from the panel at `face` (not it, not around it).
+int face_away_from(const Remesher& r, int face) {
+  const std::vector<int>& l = r.clustering().labels;
+  const int c = l[static_cast<size_t>(face)];
+  std::vector<int> near = cluster_ring(r.mesh(), r.topology(), l, c);
+  near.push_back(c);
+  for (size_t k = 0; k < l.size(); ++k) {
+    const size_t f = (k + l.size() / 3) % l.size();
+    const std::vector<int> ring = cluster_ring(r.mesh(), r.topology(), l, l[f]);
+    if (std::find(near.begin(), near.end(), l[f]) == near.end() &&
+        std::find_first_of(ring.begin(), ring.end(), near.begin(), near.end()) == ring.end())
+      return static_cast<int>(f);
+  }
+  return -1;
+}
+
+double model_size(const Remesher& r) {
+  Vec3 lo = r.mesh().positions[0], hi = lo;
+  for (const Vec3& p : r.mesh().positions) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  return (hi - lo).norm();
+}
+
+// A locked panel as the design shows it: its faces, plane and polygon.
+struct PanelShot {
+  std::vector<int> faces;
+  Vec3 normal;
+  double offset = 0.0;
+  std::vector<Vec3> polygon;
+};
+
+PanelShot shot(const Remesher& r, int face) {
+  PanelShot s;
+  const int c = r.clustering().labels[static_cast<size_t>(face)];
+  for (size_t f = 0; f < r.clustering().labels.size(); ++f) {
+    if (r.clustering().labels[f] == c) s.faces.push_back(static_cast<int>(f));
+  }
+  const PanelMesh& pm = r.panels();
+  for (int p = 0; p < pm.num_panels(); ++p) {
+    if (pm.panel_cluster[static_cast<size_t>(p)] != c) continue;
+    s.normal = pm.plane_normals[static_cast<size_t>(p)];
+    s.offset = pm.plane_offsets[static_cast<size_t>(p)];
+    for (int v : pm.panels[static_cast<size_t>(p)]) s.polygon.push_back(pm.vertices[static_cast<size_t>(v)]);
+  }
+  return s;
+}
+
+// Same faces and plane exactly; the same polygon within `tol` (it may start at another vertex:
+// which corner a polygon starts from follows the node groups, which move with the count).
+::testing::AssertionResult same_panel(const PanelShot& a, const PanelShot& b, double tol) {
+  if (a.faces != b.faces) return ::testing::AssertionFailure() << "faces differ";
+  if (a.normal != b.normal || a.offset != b.offset)
+    return ::testing::AssertionFailure() << "plane differs by " << (a.normal - b.normal).norm() << ", "
+                                         << a.offset - b.offset;
+  if (a.polygon.size() != b.polygon.size() || a.polygon.empty())
+    return ::testing::AssertionFailure() << a.polygon.size() << " vs " << b.polygon.size() << " vertices";
+  const size_t n = a.polygon.size();
+  size_t shift = 0;
+  for (size_t k = 1; k < n; ++k) {
+    if ((b.polygon[k] - a.polygon[0]).norm() < (b.polygon[shift] - a.polygon[0]).norm()) shift = k;
+  }
+  double worst = 0.0;
+  for (size_t k = 0; k < n; ++k) worst = std::max(worst, (a.polygon[k] - b.polygon[(k + shift) % n]).norm());
+  if (!(worst <= tol)) return ::testing::AssertionFailure() << "a vertex moved by " << worst;
+  return ::testing::AssertionSuccess() << "vertices within " << worst;
+}
+
+PanelEdit edit(PanelEdit::Op op, int face, int with = -1) { return PanelEdit{op, face, with}; }
+
+class PanelEdits : public ::testing::TestWithParam<EditCase> {};
+
+TEST_P(PanelEdits, SplitAddsAPanelMergeRemovesOne) {
+  const EditCase& c = GetParam();
+  RemeshParams p;
+  p.panels = c.panels;
+  Remesher r(case_mesh(c.name), p);
+  r.run();
+  ASSERT_TRUE(test::valid_panels(r, c.panels, 0.08));
+  const int split = big_panel_face(r);
+  r.set_edits({edit(PanelEdit::Op::Split, split)});
+  EXPECT_EQ(r.num_panels(), c.panels + 1);
+  EXPECT_TRUE(clusters_are_contiguous(r.topology(), r.clustering().labels, r.num_panels()));
+  EXPECT_TRUE(test::valid_panels(r, c.panels + 1, 0.08)) << "after split";
+  const auto [a, b] = neighbour_faces(r);
+  ASSERT_GE(a, 0);
+  r.set_edits({edit(PanelEdit::Op::Split, split), edit(PanelEdit::Op::Merge, a, b)});
+  EXPECT_EQ(r.num_panels(), c.panels);
+  EXPECT_EQ(r.clustering().labels[static_cast<size_t>(a)], r.clustering().labels[static_cast<size_t>(b)]);
+  EXPECT_TRUE(test::valid_panels(r, c.panels, 0.08)) << "after merge";
+}
+
+TEST_P(PanelEdits, LockedPanelSurvivesReSolves) {
+  const EditCase& c = GetParam();
+  RemeshParams p;
+  p.panels = c.panels;
+  Remesher r(case_mesh(c.name), p);
+  r.run();
+  const int face = big_panel_face(r);
+  r.set_edits({edit(PanelEdit::Op::Lock, face)});
+  const PanelShot locked = shot(r, face);
+  ASSERT_EQ(r.locked_clusters(), std::vector<int>{r.clustering().labels[static_cast<size_t>(face)]});
+  const double tol = 1e-9 * model_size(r);
+  for (int step = 0; step < 3; ++step) {
+    RemeshParams q = r.params();
+    q.panels = step == 0 ? c.panels * 6 / 5 : c.panels * 4 / 5;
+    if (step == 2) q.weights.l21 = 0.5, q.weights.euclidean = 2.0;
+    r.set_params(q);
+    r.run();
+    EXPECT_EQ(r.num_panels(), q.panels) << "step " << step;
+    EXPECT_TRUE(same_panel(locked, shot(r, face), tol)) << "step " << step;
+    // The panels stay exactly planar and keep the topology; held neighbours leave the rounds
+    // less room, so a panel or two may stay invalid at some counts (as without locks).
+    const QualityReport quality = measure_quality(r.mesh(), r.topology(), r.panels());
+    EXPECT_LE(quality.max_planarity, 1e-9);
+    EXPECT_TRUE(quality.topology_preserved && quality.oriented_manifold) << "step " << step;
+    EXPECT_LE(r.panels().num_invalid(), 5) << "step " << step;
+    ASSERT_EQ(r.locked_clusters().size(), 1u);
+  }
+}
+
+const auto case_name = [](const auto& info) {
+  return test::test_name(info.param.name) + "_" + std::to_string(info.param.panels);
+};
+
+INSTANTIATE_TEST_SUITE_P(Cases, PanelEdits,
+                         ::testing::Values(EditCase{"inspired_mesh.obj", 42}, EditCase{"bunny.off", 69},
+                                           EditCase{"saddle", 60}, EditCase{"barrel_vault", 60}),
+                         case_name);
+
+// The dense case for split and merge only: its lock round trip takes two minutes, and its
+// locked outline is not kept exactly yet (8 vertices become 6 at +20%; see the report).
+class PanelEditsDense : public PanelEdits {};
+TEST_P(PanelEditsDense, SplitAddsAPanelMergeRemovesOne) {
+  const EditCase& c = GetParam();
+  RemeshParams p;
+  p.panels = c.panels;
+  Remesher r(case_mesh(c.name), p);
+  r.run();
+  ASSERT_TRUE(test::valid_panels(r, c.panels, 0.08));
+  const int split = big_panel_face(r);
+  r.set_edits({edit(PanelEdit::Op::Split, split)});
+  EXPECT_EQ(r.num_panels(), c.panels + 1);
+  EXPECT_TRUE(test::valid_panels(r, c.panels + 1, 0.08)) << "after split";
+  const auto [a, b] = neighbour_faces(r);
+  r.set_edits({edit(PanelEdit::Op::Split, split), edit(PanelEdit::Op::Merge, a, b)});
+  EXPECT_TRUE(test::valid_panels(r, c.panels, 0.08)) << "after merge";
+}
+INSTANTIATE_TEST_SUITE_P(Cases, PanelEditsDense, ::testing::Values(EditCase{"hyperboloid_s4.off", 300}), case_name);
+
+TEST(PanelEditLists, ReplayToTheSameBytes) {
+  const TriMesh mesh = test::load_clean("inspired_mesh.obj");
+  RemeshParams p;
+  p.panels = 42;
+  Remesher live(mesh, p);
+  live.run();
+  const int split = big_panel_face(live);
+  const int lock = face_away_from(live, split);
+  ASSERT_GE(lock, 0);
+  std::vector<PanelEdit> edits{edit(PanelEdit::Op::Lock, lock), edit(PanelEdit::Op::Split, split)};
+  // Applied one at a time, as a designer clicks; then the whole list on a fresh solve.
+  live.set_edits({edits[0]});
+  live.set_edits(edits);
+  p.edits = edits;
+  Remesher replay(mesh, p);
+  replay.run();
+  Remesher again(mesh, p);
+  again.run();
+  EXPECT_EQ(obj(replay), obj(again));
+  EXPECT_EQ(obj(live), obj(replay));
+  // Undo and redo: the shorter list gives what that list gives from scratch.
+  const std::string both = obj(live);
+  live.set_edits({edits[0]});
+  RemeshParams one = p;
+  one.edits = {edits[0]};
+  Remesher first(mesh, one);
+  first.run();
+  EXPECT_EQ(obj(live), obj(first));
+  live.set_edits(edits);
+  EXPECT_EQ(obj(live), both);
+  EXPECT_EQ(live.num_panels(), 43);
+}
+
+TEST(PanelEditLists, BadEditsThrowAndKeepTheDesign) {
+  RemeshParams p;
+  p.panels = 42;
+  Remesher r(test::load_clean("inspired_mesh.obj"), p);
+  r.run();
+  const int faces = r.mesh().num_faces();
+  const int lock = big_panel_face(r);
+  r.set_edits({edit(PanelEdit::Op::Lock, lock)});
+  const std::string before = obj(r);
+  const std::vector<int> labels = r.clustering().labels;
+  const auto [d0, d1] = distant_faces(r);
+  ASSERT_GE(d0, 0);
+  const std::vector<std::vector<PanelEdit>> bad = {
+      {edit(PanelEdit::Op::Lock, lock), edit(PanelEdit::Op::Split, faces)},
+      {edit(PanelEdit::Op::Lock, lock), edit(PanelEdit::Op::Lock, -1)},
+      {edit(PanelEdit::Op::Lock, lock), edit(PanelEdit::Op::Merge, d0, d1)},
+      {edit(PanelEdit::Op::Lock, lock), edit(PanelEdit::Op::Merge, lock, lock)},
+      {edit(PanelEdit::Op::Lock, lock), edit(PanelEdit::Op::Split, lock)},
+      {edit(PanelEdit::Op::Lock, lock), edit(PanelEdit::Op::Unlock, d1 == lock ? d0 : d1)},
+      {edit(PanelEdit::Op::Unlock, lock), edit(PanelEdit::Op::Unlock, lock)},
+  };
+  for (size_t k = 0; k < bad.size(); ++k) {
+    EXPECT_THROW(r.set_edits(bad[k]), InputError) << "bad list " << k;
+    EXPECT_EQ(obj(r), before) << "bad list " << k;
+    EXPECT_EQ(r.clustering().labels, labels) << "bad list " << k;
+    EXPECT_EQ(r.params().edits.size(), 1u);
+    EXPECT_EQ(r.locked_clusters().size(), 1u);
+  }
+  // Out of range is refused up front, also by the constructor.
+  RemeshParams q = p;
+  q.edits = {edit(PanelEdit::Op::Split, faces + 5)};
+  EXPECT_THROW(Remesher(r.mesh(), q), InputError);
+  // After all that, a good edit still works.
+  r.set_edits({edit(PanelEdit::Op::Lock, lock), edit(PanelEdit::Op::Unlock, lock)});
+  EXPECT_TRUE(r.locked_clusters().empty());
+}
+
+TEST(ClusterEdits, SplitAndMergeKeepTheInvariants) {
+  RemeshParams p;
+  p.panels = 20;
+  p.make_panels = false;
+  Remesher r(test::load_clean("bunny.off"), p);
+  r.run();
+  Clustering c = r.clustering();
+  const int added = split_cluster(r.metric(), r.topology(), c, 3);
+  ASSERT_EQ(added, 20);
+  EXPECT_TRUE(clusters_are_contiguous(r.topology(), c.labels, 21));
+  EXPECT_EQ(c.labels[static_cast<size_t>(c.seeds[3])], 3);
+  EXPECT_EQ(c.labels[static_cast<size_t>(c.seeds[20])], 20);
+  // The two halves are exactly the old cluster.
+  for (size_t f = 0; f < c.labels.size(); ++f) {
+    const bool was = r.clustering().labels[f] == 3, is = c.labels[f] == 3 || c.labels[f] == 20;
+    EXPECT_EQ(was, is) << f;
+  }
+  ASSERT_TRUE(clusters_share_edge(r.topology(), c.labels, 3, 20));
+  const int merged = merge_clusters(r.metric(), c, 3, 20);
+  EXPECT_EQ(merged, 3);
+  EXPECT_EQ(c.labels, r.clustering().labels);
+  const std::vector<int> ring = cluster_ring(r.mesh(), r.topology(), c.labels, 3);
+  EXPECT_GE(ring.size(), 3u);
+  EXPECT_TRUE(std::find(ring.begin(), ring.end(), 3) == ring.end());
+}
+
+}  // namespace
+}  // namespace ff
