@@ -2,6 +2,7 @@
 // the form, share links and the stored session, so a value from any of them is checked once,
 // here, before it reaches the worker. No DOM: unit-tested in Node.
 import type { RemeshParams } from '@flatfacet/wasm';
+import { checkEdits, type PanelEdit } from './edits/panelEdits.ts';
 
 export type Seeding = 'farthest' | 'random';
 
@@ -37,6 +38,8 @@ export interface DesignParams {
   // The painted density field (brush/densityField.ts): its content key, '' for none. The
   // field itself travels beside the parameters (DesignState.paint), once per key.
   paint: string;
+  // Per-panel edits in order (edits/panelEdits.ts): split, merge, lock, unlock by triangle.
+  edits: PanelEdit[];
 }
 
 export const DEFAULT_PARAMS: DesignParams = {
@@ -52,6 +55,7 @@ export const DEFAULT_PARAMS: DesignParams = {
   densityExpression: '',
   anisotropy: { direction: 'none', stretch: 1 },
   paint: '',
+  edits: [],
 };
 
 // The one set of limits: the form's inputs take their min/max from here (paramsForm.ts), and
@@ -158,7 +162,7 @@ function checkBoolean(value: unknown, what: string): Checked<boolean> {
 // Unknown fields are rejected too: a link from a newer version must not half-apply.
 export function validateParams(value: unknown, where = 'parameters'): Checked<DesignParams> {
   if (!isRecord(value)) return failure(`${where} must be an object`);
-  const known = new Set(['panels', 'seed', 'weights', 'lloydIterations', 'panelRounds', 'seeding', 'teleport', 'singlePointNodes', 'optimizePlanes', 'densityExpression', 'anisotropy', 'paint']);
+  const known = new Set(['panels', 'seed', 'weights', 'lloydIterations', 'panelRounds', 'seeding', 'teleport', 'singlePointNodes', 'optimizePlanes', 'densityExpression', 'anisotropy', 'paint', 'edits']);
   for (const key of Object.keys(value)) {
     if (!known.has(key)) return failure(`${where}: unknown field "${key.slice(0, 40)}"`);
   }
@@ -196,6 +200,9 @@ export function validateParams(value: unknown, where = 'parameters'): Checked<De
   if (!anisotropy.ok) return anisotropy;
   const paint = value.paint ?? '';
   if (typeof paint !== 'string' || (paint !== '' && !PAINT_KEY.test(paint))) return failure(`${where}: the density paint key is not valid`);
+  // Absent in links and sessions made before panel edits came to the page.
+  const edits = checkEdits(value.edits ?? []);
+  if (!edits.ok) return edits;
   return {
     ok: true,
     value: {
@@ -209,6 +216,7 @@ export function validateParams(value: unknown, where = 'parameters'): Checked<De
       densityExpression: expression.value,
       anisotropy: anisotropy.value,
       paint,
+      edits: edits.value,
     },
   };
 }
@@ -224,7 +232,8 @@ export function canWarmStart(from: DesignParams, to: DesignParams): boolean {
 
 // The paint goes to the worker as a field of its own (protocol.ts, SolveStep); the expression
 // and anisotropy only when set, so the JSON stays what a core without them reads.
-export function toRemeshParams(params: DesignParams): RemeshParams {
+// The edits only when there are some, so the JSON stays what a core without them reads.
+export function toRemeshParams(params: DesignParams): RemeshParams & { edits?: PanelEdit[] } {
   return {
     panels: params.panels,
     seed: params.seed,
@@ -237,5 +246,6 @@ export function toRemeshParams(params: DesignParams): RemeshParams {
     optimizePlanes: params.optimizePlanes,
     ...(params.densityExpression !== '' ? { densityExpression: params.densityExpression } : {}),
     ...(params.anisotropy.direction !== 'none' ? { anisotropy: { ...params.anisotropy } } : {}),
+    ...(params.edits.length > 0 ? { edits: params.edits.map((edit) => ({ ...edit })) } : {}),
   };
 }

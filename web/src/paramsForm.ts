@@ -1,6 +1,7 @@
 // The parameter inputs of the side panel <-> DesignParams. Reading validates through
 // params.ts, so the form, links and stored sessions share one set of rules.
 import { element } from './dom.ts';
+import type { PanelEdit } from './edits/panelEdits.ts';
 import { DENSITY_PRESETS, LIMITS, validateParams, type Checked, type DesignParams } from './params.ts';
 
 export class ParamsForm {
@@ -22,6 +23,8 @@ export class ParamsForm {
   private readonly stretch = element('anisotropy-stretch', HTMLInputElement);
   // The painted field's key (brush/densityField.ts): set by the brush, not typed.
   private paintKey = '';
+  // The per-panel edits (edits/editPanel.ts): made by clicking panels, not typed.
+  private editList: PanelEdit[] = [];
 
   constructor() {
     // The inputs' ranges come from LIMITS (params.ts), the same rules links are checked by.
@@ -89,6 +92,7 @@ export class ParamsForm {
       densityExpression: this.expression.value,
       anisotropy: { direction: this.direction.value, stretch: number(this.stretch) },
       paint: this.paintKey,
+      edits: this.editList,
     });
     if (!checked.ok) this.markInvalid(checked.message);
     return checked;
@@ -129,6 +133,7 @@ export class ParamsForm {
     this.direction.value = params.anisotropy.direction;
     this.stretch.value = String(params.anisotropy.stretch);
     this.paintKey = params.paint;
+    this.editList = params.edits.map((edit) => ({ ...edit }));
     for (const input of [...this.numberInputs, this.expression, this.stretch]) input.removeAttribute('aria-invalid');
   }
 
@@ -138,6 +143,14 @@ export class ParamsForm {
 
   setPaint(key: string): void {
     this.paintKey = key;
+  }
+
+  get edits(): readonly PanelEdit[] {
+    return this.editList;
+  }
+
+  setEdits(edits: readonly PanelEdit[]): void {
+    this.editList = edits.map((edit) => ({ ...edit }));
   }
 
   setPanels(panels: number): void {
