@@ -135,6 +135,15 @@ test('edits: each edit is one history step; undo and redo walk them; a new edit 
   assert.equal(history.canRedo, false, 'the lock is gone from the redo branch');
   assert.ok(sameParams(history.current.params, merged));
   assert.ok(!sameParams(split, locked), 'designs differing in edits differ');
+  // An edit the core refused is dropped, with whatever was ahead of it.
+  history.push({ kind: 'edit', params: { ...merged, edits: [...merged.edits, { op: 'merge', face: 1, with: 2 }] }, chain: null });
+  assert.ok(sameParams(history.discardCurrent().params, merged));
+  assert.equal(history.canRedo, false);
+  assert.ok(sameParams(history.current.params, merged));
+  const single = new History(10);
+  single.reset('only');
+  assert.equal(single.discardCurrent(), null, 'the first state stays');
+  assert.equal(single.current, 'only');
 });
 
 test('edits: a warm-started edit extends the chain of the result on show, folded', () => {

@@ -368,6 +368,7 @@ export class App {
       return;
     }
     if (what === 'solve') {
+      this.editor.solveFailed();
       this.viewer.setSolving(false);
       const solved = this.machine.solved;
       if (solved) this.viewer.setClusters(solved.result.clusterIds);

@@ -107,6 +107,17 @@ export class DesignEditor {
     this.updateButtons();
   }
 
+  // A solve failed (the core refused it; the previous panels stay): a panel edit that made it
+  // (merge with a locked panel, say) is taken back, so the design's edit list stays one the
+  // core accepts.
+  solveFailed(): void {
+    const current = this.history.current;
+    if (!current || current.kind !== 'edit' || current.chain !== null) return;
+    const previous = this.history.discardCurrent();
+    if (previous) this.host.form.write(previous.params);
+    this.updateButtons();
+  }
+
   // The worker's request for one solve of a chain.
   solveStep(params: DesignParams): SolveStep {
     return { params: toRemeshParams(params), paint: params.paint === '' ? null : (this.fields.get(params.paint) ?? null) };

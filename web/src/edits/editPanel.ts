@@ -106,13 +106,16 @@ export class EditPanel {
     const panel = face === null ? -1 : (result.clusterIds[face] ?? -1);
     const selected = this.selectedPanel();
     if (this.merging && selected !== null && face !== null && panel >= 0 && panel !== selected) {
-      this.merging = false;
       const surface = this.host.viewer.surface!;
-      if (!neighbourPanels(selected, result.clusterIds, surface.indices).has(panel)) {
-        this.show('That panel does not touch the selected one: click a neighbour (Esc to stop merging).');
-        this.merging = true;
+      if (lockedPanels(this.host.edits(), result.clusterIds).has(panel)) {
+        this.show('That panel is locked: unlock it first, or click another neighbour (Esc to stop merging).');
         return;
       }
+      if (!neighbourPanels(selected, result.clusterIds, surface.indices).has(panel)) {
+        this.show('That panel does not touch the selected one: click a neighbour (Esc to stop merging).');
+        return;
+      }
+      this.merging = false;
       this.host.apply({ op: 'merge', face: this.selectedFace!, with: face });
       return;
     }
