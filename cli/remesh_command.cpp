@@ -2,6 +2,8 @@
 // writing the panels OBJ and the report JSON (DESIGN.md 4).
 #include <chrono>
 #include <cstdio>
+#include <fstream>
+#include <sstream>
 #include <set>
 #include <string>
 #include <tuple>
@@ -18,6 +20,7 @@
 #include "core/panels/panel_export.h"
 #include "core/quality/report.h"
 #include "core/quality/report_json.h"
+#include "core/remesh_params_json.h"
 #include "core/remesher.h"
 
 namespace ff::cli {
@@ -47,11 +50,12 @@ struct Options {
   FabricationRequest fabrication;
   std::string density;  // a file, read once the mesh is loaded (its length is checked against it)
   SubdivisionRequest subdivision;
+  std::string edits;    // a JSON file: the edits array (remesh_params_json.h)
 };
 
 Options parse_options(const std::vector<std::string>& argv) {
   std::set<std::string> with_value = {"panels", "seed",   "weights", "density",  "iterations",
-                                      "out",    "report", "seeding", "min-angle"};
+                                      "out",    "report", "seeding", "min-angle", "edits"};
   with_value.insert(fabrication_option_names().begin(), fabrication_option_names().end());
   with_value.insert(subdivision_option_names().begin(), subdivision_option_names().end());
   const Args args = parse_args(argv, with_value, {"single-point-nodes", "no-optimize", "no-teleport", "glass"});
@@ -91,6 +95,10 @@ Options parse_options(const std::vector<std::string>& argv) {
     for (int b = a + 1; b < 5; ++b)
       if (!names[a]->empty() && *names[a] == *names[b])
         throw UsageError("--out, --report, --parts, --sheets and --solid name the same file '" + *names[a] + "'");
+  if (args.has("edits")) {
+    o.edits = args.get("edits");
+    if (o.edits.empty()) throw UsageError("--edits: empty file name");
+  }
   if (args.has("density")) {
     o.density = args.get("density");
     if (o.density.empty()) throw UsageError("--density: empty file name");
@@ -111,6 +119,13 @@ int run_remesh(const std::vector<std::string>& argv) {
   LoadedInput in = load_input(o.input);
   subdivide_input(in, o.subdivision);
   if (!o.density.empty()) o.params.density = load_density(o.density, in);
+  if (!o.edits.empty()) {
+    std::ifstream file(o.edits, std::ios::binary);
+    if (!file) throw UsageError("--edits: cannot open '" + o.edits + "'");
+    std::ostringstream text;
+    text << file.rdbuf();
+    o.params.edits = panel_edits_from_json(text.str());  // faces: of the cleaned mesh
+  }
   const int requested = o.params.panels;
   // Building the Remesher builds the topology and the face data: part of preparing.
   Remesher remesher(in.clean.mesh, o.params);

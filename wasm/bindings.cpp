@@ -34,6 +34,11 @@ std::string load_arrays(Session& s, const std::string& name, const val& position
   return s.load_arrays(name, from_typed_array<double>(positions), from_typed_array<std::uint32_t>(indices));
 }
 
+std::string load_surfaces(Session& s, const std::string& name, const std::string& json, const val& positions,
+                          const val& indices) {
+  return s.load_surfaces(name, json, from_typed_array<double>(positions), from_typed_array<std::uint32_t>(indices));
+}
+
 std::string version() { return ff::kVersion; }
 
 }  // namespace
@@ -45,6 +50,7 @@ EMSCRIPTEN_BINDINGS(flatfacet) {
       .function("loadMesh", &load_mesh)
       .function("loadArrays", &load_arrays)
       .function("loadShape", &Session::load_shape)
+      .function("loadSurfaces", &load_surfaces)
       .function("setParams", &Session::set_params)
       .function(
           "setDensity", +[](Session& s, const val& density) { return s.set_density(from_typed_array<double>(density)); })
@@ -83,5 +89,10 @@ EMSCRIPTEN_BINDINGS(flatfacet) {
       .function("solidObj", &Session::solid_obj)
       .function(
           "innerPositions", +[](const Session& s) { return to_typed_array(s.inner_positions(), "Float64Array"); })
-      .function("spreadNodes", &Session::spread_nodes);
+      .function("spreadNodes", &Session::spread_nodes)
+      .function("panelOfFace", &Session::panel_of_face)
+      .function("panelFace", &Session::panel_face)
+      .function(
+          "lockedPanels", +[](const Session& s) { return to_typed_array(s.locked_panels(), "Int32Array"); })
+      .function("panelCount", &Session::panel_count);
 }

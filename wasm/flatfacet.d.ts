@@ -38,7 +38,19 @@ export interface RemeshParams {
   densityExpression?: string;
   // Panels stretched along a direction (stretch 1..10).
   anisotropy?: { direction: 'none' | 'x' | 'y' | 'z' | 'maxCurvature' | 'minCurvature'; stretch: number };
+  // Per-panel edits, applied in order to the solved design (at most 10000); panels are named
+  // by a cleaned triangle inside them. A setParams that changes only `edits` edits the design
+  // in place: more edits apply to it, a shorter or different list (undo / redo) replays from
+  // the design before the first edit. Locked panels keep their triangles, plane and outline
+  // through later re-solves (panel count, weights). A failing edit leaves the previous result.
+  edits?: PanelEdit[];
 }
+
+export type PanelEdit =
+  | { op: 'split'; face: number }
+  | { op: 'merge'; face: number; with: number } // `with`: a triangle of a neighbouring panel
+  | { op: 'lock'; face: number }
+  | { op: 'unlock'; face: number };
 
 export type LengthUnitName = 'mm' | 'cm' | 'm' | 'in' | 'ft';
 
@@ -67,6 +79,35 @@ export interface SpreadNodes extends Status {
   nodes: { vertex: number; position: [number, number, number]; spread: number; panels: string[] }[];
 }
 
+// NURBS surfaces for Session.loadSurfaces (core/prepare/nurbs_json.h). Control point (i, j) is
+// points[3 * (i * countV + j) ..] (i along u), Euclidean (not multiplied by its weight). Knots in
+// either convention: Rhino's countU + degreeU - 1, or the textbook countU + degreeU + 1.
+export interface SurfaceDescription {
+  name?: string; // as used in messages and the note, e.g. "'Vault'", "face 2 of 'Tank'"; default "surface <k>"
+  degreeU: number; // 1 .. 11
+  degreeV: number;
+  countU: number;
+  countV: number;
+  knotsU: number[];
+  knotsV: number[];
+  points: number[]; // xyz per control point
+  weights?: number[]; // one per control point, > 0; absent: all 1
+}
+
+export interface SurfaceSet {
+  surfaces: SurfaceDescription[];
+  targetTriangles?: number; // 100 .. 2e6, default 30000: picks one edge length for all surfaces
+  edgeLength?: number; // > 0: overrides targetTriangles
+  weldTolerance?: number; // >= 0: vertices on open edges this close are joined (default 0: exact)
+}
+
+export interface SurfacesInfo extends MeshInfo {
+  edgeLength: number; // the tessellation's target edge length
+  // Per surface, in order: its name as given (or "surface 2"), its triangles
+  // (before the joint clean-up), grid intervals along u / v, border points merged (seam, pole).
+  surfaces: { name: string; triangles: number; samplesU: number; samplesV: number; seamWelded: number }[];
+}
+
 export type StageName = 'Seeding' | 'Lloyd' | 'Panels' | 'Optimize' | 'Done'; // capitalised for display
 
 export interface Progress extends Status {
@@ -92,6 +133,9 @@ export interface Session {
   loadMesh(name: string, bytes: Uint8Array): string;
   // A triangle soup from a three.js loader (glTF/GLB): xyz per vertex, 3 indices per triangle.
   loadArrays(name: string, positions: Float64Array, indices: Uint32Array): string;
+  // NURBS surfaces (JSON of SurfaceSet), tessellated in the core, plus a triangle soup loaded
+  // with them (meshes, render meshes; may be empty). Returns SurfacesInfo JSON or a Status.
+  loadSurfaces(name: string, surfacesJson: string, positions: Float64Array, indices: Uint32Array): string;
   // A generated example: 'saddle' | 'barrel_vault' | 'groin_vault' | 'helicoid' | 'freeform_roof'
   // | 'torus' | 'bump' | 'roof_with_hole' | 'twisted_strip', with about `triangles` triangles.
   loadShape(name: string, triangles: number): string;
@@ -115,6 +159,14 @@ export interface Session {
   inputIndices(): Uint32Array; // 3 per triangle
   // Per cleaned triangle: its cluster (-1 unassigned), valid after any step.
   clusterIds(): Int32Array;
+  // Per-panel edits (see RemeshParams.edits): the panel (cluster id, as in clusterIds) of a
+  // cleaned triangle, -1 when out of range or before clustering; a triangle inside a panel
+  // (to name it in an edit), -1 when out of range; the locked panels' ids, sorted; the number
+  // of panels now (the requested count plus splits minus merges; 0 before clustering).
+  panelOfFace(face: number): number;
+  panelFace(panel: number): number;
+  lockedPanels(): Int32Array;
+  panelCount(): number;
   // The panels (empty before the panel phase): vertices, and panel i's vertex indices are
   // panelIndices[panelOffsets[i] .. panelOffsets[i+1]).
   panelPositions(): Float64Array;

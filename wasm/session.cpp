@@ -60,9 +60,9 @@ const char* display_stage(Stage stage) {
 Session::Session() = default;
 Session::~Session() = default;
 
-std::string Session::load(const std::string& name, TriMesh raw, int input_triangles) {
+std::string Session::load(const std::string& name, TriMesh raw, int input_triangles, const CleanOptions& clean_options) {
   const auto t0 = Clock::now();
-  CleanMesh clean = clean_mesh(raw);
+  CleanMesh clean = clean_mesh(raw, clean_options);
   MeshTopology topology = build_topology(clean.mesh);
   // Everything built: only now replace the previous design.
   name_ = name;
@@ -143,6 +143,9 @@ std::string Session::set_params(const std::string& params_json) {
     RemeshParams params = remesh_params_from_json(params_json);
     params.make_panels = true;
     params.density = params_.density;  // set apart (set_density)
+    // Only the edit list changed: edit the design in place (undo / redo replay, session_edits.cpp).
+    const std::string key = solve_key(params_json);
+    if (apply_edits_only(key, params)) return status_json(true, "");
     if (remesher_) {
       const bool mid_solve = !remesher_->done();
       remesher_->set_params(params);  // throws and keeps everything on bad parameters
@@ -157,6 +160,7 @@ std::string Session::set_params(const std::string& params_json) {
       forget_result();
     }
     params_ = params;
+    solve_key_ = key;
     return status_json(true, "");
   });
 }

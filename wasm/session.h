@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "core/fabricate/fabrication_params_json.h"
+#include "core/mesh/clean.h"
 #include "core/mesh/topology.h"
 #include "core/mesh/tri_mesh.h"
 #include "core/quality/report.h"
@@ -36,6 +37,12 @@ class Session {
   std::string load_arrays(const std::string& name, const std::vector<double>& positions,
                           const std::vector<std::uint32_t>& indices);
   std::string load_shape(const std::string& name, int triangles);
+  // NURBS surfaces (SurfaceSet JSON, core/prepare/nurbs_json.h) tessellated in the core, plus a
+  // triangle soup (meshes, render meshes of trimmed faces) loaded with them, welded within the
+  // set's weldTolerance (wasm/session_surface.cpp). MeshInfo JSON with "edgeLength" and
+  // "surfaces": [{"name", "triangles", "samplesU", "samplesV", "seamWelded"}].
+  std::string load_surfaces(const std::string& name, const std::string& surfaces_json,
+                            const std::vector<double>& positions, const std::vector<std::uint32_t>& indices);
   // Status JSON. Warm-starts a solve under way or finished (Remesher::set_params). The
   // density field (set_density) stays as it is.
   std::string set_params(const std::string& params_json);
@@ -84,13 +91,26 @@ class Session {
   // (mesh units), "spread" (designer's units), "panels"}]}.
   std::string spread_nodes() const;
 
+  // Per-panel edits (wasm/session_edits.cpp; they arrive in set_params' `edits`). The panel
+  // (cluster) of a cleaned triangle, -1 when out of range or before clustering; a face inside
+  // a panel (to name it in an edit), -1 when out of range; the locked panels, sorted; the
+  // number of panels now (the requested count plus splits minus merges; 0 before clustering).
+  int panel_of_face(int face) const;
+  int panel_face(int panel) const;
+  std::vector<std::int32_t> locked_panels() const;
+  int panel_count() const;
+
  private:
   struct Timings {
     double cluster = 0.0, panels = 0.0, quality = 0.0;
   };
-  std::string load(const std::string& name, TriMesh raw, int input_triangles);
+  std::string load(const std::string& name, TriMesh raw, int input_triangles, const CleanOptions& clean_options = {});
   const QualityReport* quality();
   void forget_result();
+  // Edits (session_edits.cpp): what set_params compares to tell an edit from a new solve
+  // (the parameters' JSON without `edits`, canonical), and the edit-only path.
+  static std::string solve_key(const std::string& params_json);
+  bool apply_edits_only(const std::string& key, const RemeshParams& params);
 
   std::string name_;
   TriMesh mesh_;  // cleaned
@@ -102,6 +122,7 @@ class Session {
   std::optional<QualityReport> quality_;  // of the current panels, measured on demand
   Timings timings_;                       // of the solve since the last load or parameter change
   double prepare_seconds_ = 0.0;          // cleaning + topology of the loaded mesh
+  std::string solve_key_;                 // solve_key() of the last accepted parameters
 };
 
 }  // namespace ff::wasm

@@ -26,4 +26,11 @@ std::vector<int> triangles_around(const Pairing& pairing, int k, int i);
 // The same into `out` (cleared first), for the hot loop that lays out every panel.
 void triangles_around(const Pairing& pairing, int k, int i, std::vector<int>& out);
 
+// Keeps in `options` (pairings of the k-gon `clusters`, counter-clockwise) those whose nodes
+// include every cluster triple of `held` (sorted) that lies in the k-gon, so a locked panel's
+// corners stay the nodes they were. True when any triple lies in it and some pairing has
+// them all; else `options` is left as it was.
+bool hold_pairings(const std::vector<int>& clusters, const std::vector<std::array<int, 3>>& held,
+                   std::vector<Pairing>& options);
+
 }  // namespace ff

@@ -27,37 +27,6 @@ int position_of(const std::vector<int>& cycle, int cluster) {
 
 }  // namespace
 
-namespace {
-
-// Keeps in `options` the pairings whose nodes include every held cluster triple that lies in
-// the group (all three clusters in it); true when any did and some pairing has them all.
-bool hold_pairings(const std::vector<int>& clusters, const std::vector<std::array<int, 3>>& held,
-                   std::vector<Pairing>& options) {
-  std::vector<std::array<int, 3>> wanted;
-  for (const std::array<int, 3>& t : held) {
-    const auto in = [&](int c) { return std::find(clusters.begin(), clusters.end(), c) != clusters.end(); };
-    if (in(t[0]) && in(t[1]) && in(t[2])) wanted.push_back(t);
-  }
-  if (wanted.empty()) return false;
-  std::vector<Pairing> kept;
-  for (const Pairing& p : options) {
-    std::vector<std::array<int, 3>> nodes;
-    for (const NodeTriangle& tri : p) {
-      std::array<int, 3> t{clusters[static_cast<size_t>(tri[0])], clusters[static_cast<size_t>(tri[1])],
-                           clusters[static_cast<size_t>(tri[2])]};
-      std::sort(t.begin(), t.end());
-      nodes.push_back(t);
-    }
-    const auto has = [&](const std::array<int, 3>& t) { return std::find(nodes.begin(), nodes.end(), t) != nodes.end(); };
-    if (std::all_of(wanted.begin(), wanted.end(), has)) kept.push_back(p);
-  }
-  if (kept.empty()) return false;
-  options = std::move(kept);
-  return true;
-}
-
-}  // namespace
-
 PanelLayout::PanelLayout(const TriMesh& mesh, const MeshTopology& topology, const std::vector<int>& labels,
                          const std::vector<Vec3>& positions, const PanelGraph& graph, MasterPlanes planes,
                          const LayoutOptions& options, const std::vector<std::pair<int, int>>& forced)

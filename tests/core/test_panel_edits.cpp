@@ -9,6 +9,7 @@
 #include "cluster_checks.h"
 #include "core/cluster/cluster_edits.h"
 #include "core/panels/panel_export.h"
+#include "core/remesh_params_json.h"
 #include "core/shapes/hard_cases.h"
 #include "core/util/error.h"
 #include "panel_checks.h"
@@ -286,6 +287,30 @@ TEST(PanelEditLists, BadEditsThrowAndKeepTheDesign) {
   // After all that, a good edit still works.
   r.set_edits({edit(PanelEdit::Op::Lock, lock), edit(PanelEdit::Op::Unlock, lock)});
   EXPECT_TRUE(r.locked_clusters().empty());
+}
+
+TEST(PanelEditsJson, ReadsTheContractStrictly) {
+  const RemeshParams p = remesh_params_from_json(
+      R"({"panels": 40, "edits": [{"op":"split","face":12}, {"op":"merge","face":3,"with":40},
+          {"op":"lock","face":7}, {"op":"unlock","face":7}]})");
+  ASSERT_EQ(p.edits.size(), 4u);
+  EXPECT_TRUE(p.edits[0] == edit(PanelEdit::Op::Split, 12));
+  EXPECT_TRUE(p.edits[1] == edit(PanelEdit::Op::Merge, 3, 40));
+  EXPECT_TRUE(p.edits[2] == edit(PanelEdit::Op::Lock, 7));
+  EXPECT_TRUE(p.edits[3] == edit(PanelEdit::Op::Unlock, 7));
+  EXPECT_EQ(panel_edits_from_json(R"([{"op":"lock","face":0}])").size(), 1u);
+  for (const char* bad : {R"({"edits": {}})", R"({"edits": [{"op":"split"}]})", R"({"edits": [{"op":"cut","face":1}]})",
+                          R"({"edits": [{"op":"split","face":-1}]})", R"({"edits": [{"op":"split","face":1.5}]})",
+                          R"({"edits": [{"op":"merge","face":1}]})", R"({"edits": [{"op":"lock","face":1,"with":2}]})",
+                          R"({"edits": [{"op":"lock","face":1,"color":2}]})", R"({"edits": [3]})"}) {
+    EXPECT_THROW(remesh_params_from_json(bad), InputError) << bad;
+  }
+  // At most kMaxEdits.
+  std::string many = "[";
+  for (int i = 0; i <= kMaxEdits; ++i) many += std::string(i ? "," : "") + R"({"op":"lock","face":1})";
+  EXPECT_THROW(panel_edits_from_json(many + "]"), InputError);
+  many.erase(many.rfind(",{"));
+  EXPECT_EQ(panel_edits_from_json(many + "]").size(), static_cast<size_t>(kMaxEdits));
 }
 
 TEST(ClusterEdits, SplitAndMergeKeepTheInvariants) {

@@ -13,6 +13,7 @@ import { describeDesign, findExample } from './examples.ts';
 import { checkEditsFit } from './edits/panelEdits.ts';
 import { payloadFromExample, payloadFromFile } from './meshFiles.ts';
 import { Outputs } from './outputs.ts';
+import { rhinoLoaded } from './rhino/rhinoOpen.ts';
 import type { DesignParams } from './params.ts';
 import { ParamsForm } from './paramsForm.ts';
 import type { SolveResult, WorkerResponse } from './protocol.ts';
@@ -195,6 +196,7 @@ export class App {
     this.viewer.setSurface(positions, indices, opening.up === 'guess' ? guessUpAxis(positions) : opening.up);
     this.editor.meshLoaded(opening.params);
     showMeshInfo(loaded.mesh.label, loaded.mesh.info);
+    rhinoLoaded(loaded.mesh.fileName, loaded.mesh.info);
     renderStats(this.statsBox, null);
     this.fabrication.panelsChanged(false);
     this.updateButtons();

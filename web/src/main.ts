@@ -3,6 +3,7 @@
 import { App } from './app.ts';
 import { element } from './dom.ts';
 import { availableExampleFiles } from './meshFiles.ts';
+import { bindRhinoPicker } from './rhino/rhinoOpen.ts';
 import { loadSession } from './sessionStore.ts';
 import { hashToState, isShareHash } from './share.ts';
 import type { Viewer } from './view/viewer.ts';
@@ -89,6 +90,7 @@ async function start(): Promise<void> {
   bindKeys();
   bindFileInput();
   bindDrop();
+  bindRhinoPicker((file) => void app.openFile(file));
   bindViewToggles(app.viewerForToggles);
   window.addEventListener('hashchange', () => {
     if (isShareHash(location.hash) && location.hash !== app.currentHash) void openFromHash(location.hash, false);

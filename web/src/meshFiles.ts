@@ -1,13 +1,15 @@
 // Turns what the designer opens into something the worker loads. OBJ, OFF, STL and PLY go to
 // the core's own readers as bytes (so the page and the command line read a file identically);
-// glTF/GLB goes through three.js and arrives as one triangle soup in world coordinates.
+// glTF/GLB goes through three.js and arrives as one triangle soup in world coordinates; Rhino
+// .3dm files become NURBS surfaces for the core's tessellation (web/src/rhino/).
 import { LoadingManager, Mesh, Vector3, type BufferGeometry, type Object3D } from 'three';
 import type { Example } from './examples.ts';
 import { failure, type Checked } from './params.ts';
 import type { MeshPayload } from './protocol.ts';
+import { rhinoPayload } from './rhino/rhinoOpen.ts';
 
 const GLTF_EXTENSIONS = ['gltf', 'glb'];
-export const ACCEPTED_EXTENSIONS = ['obj', 'off', 'stl', 'ply', ...GLTF_EXTENSIONS];
+export const ACCEPTED_EXTENSIONS = ['obj', 'off', 'stl', 'ply', ...GLTF_EXTENSIONS, '3dm'];
 
 export function extensionOf(name: string): string {
   const dot = name.lastIndexOf('.');
@@ -16,6 +18,8 @@ export function extensionOf(name: string): string {
 
 export async function payloadFromFile(name: string, bytes: Uint8Array): Promise<Checked<MeshPayload>> {
   if (GLTF_EXTENSIONS.includes(extensionOf(name))) return gltfPayload(name, bytes);
+  // Rhino: parsed on the page by rhino3dm, itself loaded on the first .3dm (web/src/rhino/).
+  if (extensionOf(name) === '3dm') return rhinoPayload(name, bytes);
   // Anything else goes to the core, which reads by extension or else by content and names
   // the problem when it cannot.
   return { ok: true, value: { kind: 'bytes', name, bytes } };

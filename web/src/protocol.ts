@@ -8,7 +8,10 @@ import type { FabricationParams, MeshInfo, Problems, Progress, RemeshParams, She
 export type MeshPayload =
   | { kind: 'bytes'; name: string; bytes: Uint8Array }
   | { kind: 'arrays'; name: string; positions: Float64Array; indices: Uint32Array }
-  | { kind: 'shape'; name: string; triangles: number };
+  | { kind: 'shape'; name: string; triangles: number }
+  // NURBS surfaces (JSON of SurfaceSet) tessellated by the core, with a triangle soup beside
+  // them (a Rhino file: web/src/rhino/).
+  | { kind: 'surfaces'; name: string; surfacesJson: string; positions: Float64Array; indices: Uint32Array };
 
 // One solve of a chain: the parameters and the painted density field (brush/densityField.ts
 // levels, one per vertex of the loaded mesh; null: none), set in the session before it.

@@ -75,6 +75,8 @@ function loadInto(target: Session, mesh: MeshPayload): MeshInfo {
       return checked<MeshInfo>(target.loadArrays(mesh.name, mesh.positions, mesh.indices), 'reading the mesh');
     case 'shape':
       return checked<MeshInfo>(target.loadShape(mesh.name, mesh.triangles), 'making the example');
+    case 'surfaces':
+      return checked<MeshInfo>(target.loadSurfaces(mesh.name, mesh.surfacesJson, mesh.positions, mesh.indices), 'tessellating the surfaces');
   }
 }
 
