@@ -10,7 +10,7 @@ export class EditOverlay {
 
   constructor() {
     const over = { transparent: true, side: THREE.DoubleSide, depthWrite: false, polygonOffset: true, polygonOffsetFactor: -2, polygonOffsetUnits: -2 };
-    this.selected = new THREE.Mesh(new THREE.BufferGeometry(), new THREE.MeshBasicMaterial({ ...over, color: 0xffd84a, opacity: 0.6 }));
+    this.selected = new THREE.Mesh(new THREE.BufferGeometry(), new THREE.MeshBasicMaterial({ ...over, color: 0xffd84a, opacity: 0.45 }));
     this.locked = new THREE.Mesh(new THREE.BufferGeometry(), new THREE.MeshBasicMaterial({ ...over, color: 0xffffff, opacity: 0.85, map: hatchTexture() }));
     this.selected.name = 'selected-panel';
     this.locked.name = 'locked-panels';

@@ -105,7 +105,9 @@ export class EditPanel {
     const face = this.pick(event);
     const panel = face === null ? -1 : (result.clusterIds[face] ?? -1);
     const selected = this.selectedPanel();
-    if (this.merging && selected !== null && face !== null && panel >= 0 && panel !== selected) {
+    if (this.merging && selected !== null) {
+      // The selected panel itself, or beside the model: still waiting for the neighbour.
+      if (face === null || panel < 0 || panel === selected) return;
       const surface = this.host.viewer.surface!;
       if (lockedPanels(this.host.edits(), result.clusterIds).has(panel)) {
         this.show('That panel is locked: unlock it first, or click another neighbour (Esc to stop merging).');
@@ -139,7 +141,7 @@ export class EditPanel {
     if (panel === null) this.merging = false;
     const isLocked = panel !== null && locked.has(panel);
     const surface = this.host.viewer.surface;
-    this.overlay.set(result, this.host.viewer.offset, panel, locked, (surface?.diagonal ?? 1) / 150);
+    this.overlay.set(result, this.host.viewer.offset, panel, locked, (surface?.diagonal ?? 1) / 60);
     this.host.viewer.requestRender();
     const can = this.host.canEdit() && result !== null && panel !== null;
     this.splitButton.disabled = !can || isLocked;
