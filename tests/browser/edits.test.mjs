@@ -2,11 +2,11 @@
 // panels, click a panel and Split it (61 panels, the OBJ planar); lock a panel, change the
 // panel count and re-solve (its polygon is still in the OBJ, the same vertices within 1e-9);
 // merge a panel with a clicked neighbour; undo and redo give back the very same OBJ bytes;
-// a share link with the edits, opened in a fresh context, reproduces the OBJ byte for byte.
+// a reload (the stored session) and a share link with the edits, opened in a fresh context, reproduces the OBJ byte for byte.
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
 import { zlibSync } from 'fflate';
-import { browserSuite, download, maxPlanarity, outcomes, parseObj, remesh, screenshot, setPanels, waitForDone } from './harness.mjs';
+import { browserSuite, download, maxPlanarity, outcomes, parseObj, remesh, screenshot, setPanels, waitForDone, waitForSaved } from './harness.mjs';
 
 const suite = browserSuite();
 
@@ -115,11 +115,20 @@ test('panel edits: split, lock through a re-solve, merge; undo/redo give the sam
     await page.locator('#viewport canvas').click({ position: { x: 5, y: 5 } }); // focus off the inputs
     assert.equal(await after_(page, () => page.keyboard.press('Control+Shift+Z')), PANELS + 1);
     assert.equal(await objOf(page), afterSplit, 'redo (Ctrl+Shift+Z) the split');
+    let lastRedo = null;
     for (const expected of [afterLock, resolved, final]) {
+      lastRedo = await outcomes(page);
       await after_(page, () => page.getByRole('button', { name: 'Redo' }).click());
       assert.equal(await objOf(page), expected, 'redo: the edited bytes');
     }
     assert.equal(await page.getByRole('button', { name: 'Redo' }).isDisabled(), true);
+    assert.match(await page.locator('#edit-summary').textContent(), /3 edits: 1 split, 1 merged, 1 locked · 69 panels now/);
+
+    // The stored session brings the edits back after a reload.
+    await waitForSaved(page, lastRedo, 1);
+    await page.reload();
+    assert.equal(await waitForDone(page), 69);
+    assert.equal(await objOf(page), final, 'the reload reproduces the OBJ');
 
     await page.getByRole('button', { name: 'Copy share link' }).click();
     await page.waitForFunction(() => location.hash.startsWith('#v1='));

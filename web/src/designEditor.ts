@@ -7,7 +7,7 @@ import { countOutcome, element } from './dom.ts';
 import { isUniform, fieldKey } from './brush/densityField.ts';
 import { DensityPanel } from './brush/densityPanel.ts';
 import { EditPanel } from './edits/editPanel.ts';
-import type { PanelEdit } from './edits/panelEdits.ts';
+import { compactChain, type PanelEdit } from './edits/panelEdits.ts';
 import { History } from './history.ts';
 import { paintKeys, type PaintFields } from './paintFields.ts';
 import { sameParams, toRemeshParams, type DesignParams } from './params.ts';
@@ -212,7 +212,10 @@ export class DesignEditor {
     const shown = this.host.solvedChain();
     const same = step.chain !== null && shown !== null && shown.length === step.chain.length && shown.every((p, i) => sameParams(p, step.chain![i]!));
     if (same && !this.host.solving()) return;
-    if (step.chain) this.host.replay(step.chain);
+    // Undo / redo of panel edits only: the core edits the design on show in place (it replays
+    // the edit list from the design before the first edit), the chain the same as replayed.
+    if (step.chain && shown && !this.host.solving() && sameChain(compactChain([...shown, step.params]), step.chain)) this.host.remesh();
+    else if (step.chain) this.host.replay(step.chain);
     else this.host.remesh();
   }
 
@@ -237,6 +240,10 @@ export class DesignEditor {
     }
     for (const key of [...this.fields.keys()]) if (!keep.has(key)) this.fields.delete(key);
   }
+}
+
+function sameChain(a: readonly DesignParams[], b: readonly DesignParams[]): boolean {
+  return a.length === b.length && a.every((p, i) => sameParams(p, b[i]!));
 }
 
 function isTyping(target: EventTarget | null): boolean {
