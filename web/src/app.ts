@@ -10,6 +10,7 @@ import { ExamplePicker, showMeshInfo } from './examplePicker.ts';
 import { designStem } from './exports.ts';
 import { FabricationPanel } from './fabricationPanel.ts';
 import { describeDesign, findExample } from './examples.ts';
+import { checkEditsFit } from './edits/panelEdits.ts';
 import { payloadFromExample, payloadFromFile } from './meshFiles.ts';
 import { Outputs } from './outputs.ts';
 import { rhinoLoaded } from './rhino/rhinoOpen.ts';
@@ -80,6 +81,7 @@ export class App {
     canEdit: () => this.machine.canRemesh,
     solvedChain: () => this.machine.solved?.chain ?? null,
     solving: () => this.machine.solving !== null,
+    result: () => this.machine.solved?.result ?? null,
     remesh: () => this.remesh(),
     replay: (chain) => this.replay(chain),
   });
@@ -202,7 +204,11 @@ export class App {
     if (!loaded.newest) return;
     this.syncExampleSelect();
     this.save({ mesh: opening.design, params: opening.params, history: [], fabrication: this.fabrication.current });
-    if (opening.solve) {
+    // Panel edits name triangles: a link's must exist in the mesh it opened.
+    const misfit = [...opening.history, opening.params].map((p) => checkEditsFit(p.edits, info.triangles)).find((c) => !c.ok);
+    if (opening.solve && misfit && !misfit.ok) {
+      this.status.error(`${misfit.message}; not solved.`);
+    } else if (opening.solve) {
       const chain = [...opening.history, opening.params];
       this.startSolve(chain, false, chain);
     } else {
@@ -364,6 +370,7 @@ export class App {
       return;
     }
     if (what === 'solve') {
+      this.editor.solveFailed();
       this.viewer.setSolving(false);
       const solved = this.machine.solved;
       if (solved) this.viewer.setClusters(solved.result.clusterIds);

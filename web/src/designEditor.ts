@@ -6,11 +6,13 @@
 import { countOutcome, element } from './dom.ts';
 import { isUniform, fieldKey } from './brush/densityField.ts';
 import { DensityPanel } from './brush/densityPanel.ts';
+import { EditPanel } from './edits/editPanel.ts';
+import { compactChain, type PanelEdit } from './edits/panelEdits.ts';
 import { History } from './history.ts';
 import { paintKeys, type PaintFields } from './paintFields.ts';
 import { sameParams, toRemeshParams, type DesignParams } from './params.ts';
 import type { ParamsForm } from './paramsForm.ts';
-import type { SolveStep } from './protocol.ts';
+import type { SolveResult, SolveStep } from './protocol.ts';
 import type { DesignState } from './share.ts';
 import type { Viewer } from './view/viewer.ts';
 
@@ -31,6 +33,7 @@ export interface EditorHost {
   canEdit(): boolean; // a mesh loaded, none opening
   solvedChain(): DesignParams[] | null; // the chain of the result on show, if reproducible
   solving(): boolean;
+  result(): SolveResult | null; // the panels on show
   remesh(): void; // what Remesh does with the form's parameters
   replay(chain: DesignParams[]): void; // solve `chain` afresh from the loaded mesh
 }
@@ -46,6 +49,7 @@ export class DesignEditor {
   private readonly undoButton = element('undo', HTMLButtonElement);
   private readonly redoButton = element('redo', HTMLButtonElement);
   private readonly density: DensityPanel;
+  private readonly panelEdits: EditPanel;
 
   constructor(private readonly host: EditorHost) {
     this.density = new DensityPanel({
@@ -54,6 +58,14 @@ export class DesignEditor {
       canPaint: () => host.canEdit() && host.viewer.surface !== null,
       strokeEnded: (field) => this.paint(isUniform(field) ? null : field),
       clear: () => this.paint(null),
+    });
+    this.panelEdits = new EditPanel({
+      viewer: host.viewer,
+      result: () => (host.solving() ? null : host.result()),
+      edits: () => host.form.edits,
+      canEdit: () => host.canEdit() && !host.solving(),
+      painting: () => this.density.painting,
+      apply: (edit) => this.edit(edit),
     });
     host.form.onChange(() => this.formChanged());
     this.undoButton.addEventListener('click', () => this.undo());
@@ -67,6 +79,7 @@ export class DesignEditor {
   // A new mesh is about to be opened from the form (an example, a file): its paint is gone.
   forgetPaint(): void {
     this.host.form.setPaint('');
+    this.host.form.setEdits([]); // they name triangles of the previous mesh
     this.pinned = new Set();
   }
 
@@ -80,6 +93,7 @@ export class DesignEditor {
   meshLoaded(params: DesignParams): void {
     this.history.reset({ kind: 'open', params, chain: null });
     this.density.surfaceChanged();
+    this.panelEdits.surfaceChanged();
     this.updateButtons();
   }
 
@@ -90,6 +104,17 @@ export class DesignEditor {
     if (current && sameParams(current.params, params)) this.history.replaceCurrent({ ...current, chain });
     else if (!this.history.all.some((step) => sameParams(step.params, params))) this.history.push({ kind: 'params', params, chain });
     this.prune();
+    this.updateButtons();
+  }
+
+  // A solve failed (the core refused it; the previous panels stay): a panel edit that made it
+  // (merge with a locked panel, say) is taken back, so the design's edit list stays one the
+  // core accepts.
+  solveFailed(): void {
+    const current = this.history.current;
+    if (!current || current.kind !== 'edit' || current.chain !== null) return;
+    const previous = this.history.discardCurrent();
+    if (previous) this.host.form.write(previous.params);
     this.updateButtons();
   }
 
@@ -111,6 +136,7 @@ export class DesignEditor {
     this.undoButton.disabled = !can || !this.history.canUndo;
     this.redoButton.disabled = !can || !this.history.canRedo;
     this.density.updateButtons(this.host.form.paint !== '');
+    this.panelEdits.show();
     document.body.dataset.historyIndex = String(this.history.index);
     document.body.dataset.historySize = String(this.history.size);
   }
@@ -135,6 +161,25 @@ export class DesignEditor {
     this.prune();
     this.updateButtons();
     this.host.remesh(); // warm-starts from the result on show (designMachine.planRemesh)
+  }
+
+  // One panel edit (edits/editPanel.ts): one history step, solved at once. The core applies
+  // a longer edit list to the design on show in place (a warm start with the same parameters).
+  private edit(edit: PanelEdit): void {
+    if (!this.host.canEdit() || this.host.solving()) return;
+    const current = this.history.current;
+    this.host.form.setEdits([...this.host.form.edits, edit]);
+    const read = this.host.form.read();
+    if (!read.ok) {
+      if (current) this.host.form.setEdits(current.params.edits);
+      this.host.error(read.message);
+      return;
+    }
+    this.history.push({ kind: 'edit', params: read.value, chain: null });
+    countOutcome('edits');
+    this.prune();
+    this.updateButtons();
+    this.host.remesh();
   }
 
   private formChanged(): void {
@@ -167,7 +212,10 @@ export class DesignEditor {
     const shown = this.host.solvedChain();
     const same = step.chain !== null && shown !== null && shown.length === step.chain.length && shown.every((p, i) => sameParams(p, step.chain![i]!));
     if (same && !this.host.solving()) return;
-    if (step.chain) this.host.replay(step.chain);
+    // Undo / redo of panel edits only: the core edits the design on show in place (it replays
+    // the edit list from the design before the first edit), the chain the same as replayed.
+    if (step.chain && shown && !this.host.solving() && sameChain(compactChain([...shown, step.params]), step.chain)) this.host.remesh();
+    else if (step.chain) this.host.replay(step.chain);
     else this.host.remesh();
   }
 
@@ -192,6 +240,10 @@ export class DesignEditor {
     }
     for (const key of [...this.fields.keys()]) if (!keep.has(key)) this.fields.delete(key);
   }
+}
+
+function sameChain(a: readonly DesignParams[], b: readonly DesignParams[]): boolean {
+  return a.length === b.length && a.every((p, i) => sameParams(p, b[i]!));
 }
 
 function isTyping(target: EventTarget | null): boolean {

@@ -10,6 +10,7 @@
 // and what the worker's session holds: a just-loaded mesh (`pristine`) or exactly `solved`
 // (`holdsSolved`, the condition for a warm start). Every worker answer is matched to the job
 // that asked for it, so an answer to a job the page moved past changes nothing.
+import { compactChain } from './edits/panelEdits.ts';
 import { canWarmStart, sameParams, type DesignParams } from './params.ts';
 
 // Why a result cannot be reproduced by replaying its chain of solves from the loaded mesh.
@@ -140,7 +141,9 @@ export class DesignMachine<M, O, R> {
     if (!this.meshValue) return { kind: 'refused', reason: 'no-mesh' };
     const previous = this.solvedValue;
     if (previous && this.holdsSolved && !this.solvingValue && canWarmStart(previous.params, params) && !sameParams(previous.params, params)) {
-      if (previous.chain && previous.chain.length <= this.maxHistory) return { kind: 'solve', run: [params], fresh: false, chain: [...previous.chain, params], lost: null };
+      // Steps that only changed the panel edits fold into the next (edits/panelEdits.ts).
+      const chain = previous.chain ? compactChain([...previous.chain, params]) : null;
+      if (chain && chain.length <= this.maxHistory + 1) return { kind: 'solve', run: [params], fresh: false, chain, lost: null };
       return { kind: 'solve', run: [params], fresh: false, chain: null, lost: previous.lost ?? 'long-chain' };
     }
     return { kind: 'solve', run: [params], fresh: !this.pristine, chain: [params], lost: null };

@@ -6,8 +6,8 @@ export function element<T extends HTMLElement>(id: string, type: new () => T): T
 }
 
 // Counters on <body> (data-solves, data-errors, data-saves: sessions written to this
-// browser's storage, fabrications: fabrication outputs received, strokes: paint strokes recorded) let tests and scripts wait for the next outcome rather than for a status
+// browser's storage, fabrications: fabrication outputs received, strokes: paint strokes recorded, edits: panel edits recorded) let tests and scripts wait for the next outcome rather than for a status
 // text that may already be showing.
-export function countOutcome(name: 'solves' | 'errors' | 'saves' | 'fabrications' | 'strokes'): void {
+export function countOutcome(name: 'solves' | 'errors' | 'saves' | 'fabrications' | 'strokes' | 'edits'): void {
   document.body.dataset[name] = String(Number(document.body.dataset[name] ?? '0') + 1);
 }

@@ -59,6 +59,15 @@ export class History<T> {
     this.entries[this.position] = state;
   }
 
+  // Drops the current state and the states ahead of it (a step that failed); the one before
+  // becomes current and is returned, or null when there is none (the first state stays).
+  discardCurrent(): T | null {
+    if (this.position <= 0) return null;
+    this.entries = this.entries.slice(0, this.position);
+    this.position -= 1;
+    return this.entries[this.position]!;
+  }
+
   // The state undo leads to (now current), or null when there is none.
   undo(): T | null {
     if (!this.canUndo) return null;

@@ -2,6 +2,7 @@
 // the form, share links and the stored session, so a value from any of them is checked once,
 // here, before it reaches the worker. No DOM: unit-tested in Node.
 import type { RemeshParams } from '@flatfacet/wasm';
+import { checkEdits, type PanelEdit } from './edits/panelEdits.ts';
 
 export type Seeding = 'farthest' | 'random';
 
@@ -39,6 +40,8 @@ export interface DesignParams {
   paint: string;
   glass: boolean; // glass mode: concave panels cut into coplanar convex pieces
   minCornerAngleDeg: number; // 0: no minimum corner angle
+  // Per-panel edits in order (edits/panelEdits.ts): split, merge, lock, unlock by triangle.
+  edits: PanelEdit[];
 }
 
 export const DEFAULT_PARAMS: DesignParams = {
@@ -56,6 +59,7 @@ export const DEFAULT_PARAMS: DesignParams = {
   paint: '',
   glass: false,
   minCornerAngleDeg: 0,
+  edits: [],
 };
 
 // The one set of limits: the form's inputs take their min/max from here (paramsForm.ts), and
@@ -164,7 +168,7 @@ function checkBoolean(value: unknown, what: string): Checked<boolean> {
 // Unknown fields are rejected too: a link from a newer version must not half-apply.
 export function validateParams(value: unknown, where = 'parameters'): Checked<DesignParams> {
   if (!isRecord(value)) return failure(`${where} must be an object`);
-  const known = new Set(['panels', 'seed', 'weights', 'lloydIterations', 'panelRounds', 'seeding', 'teleport', 'singlePointNodes', 'optimizePlanes', 'densityExpression', 'anisotropy', 'paint', 'glass', 'minCornerAngleDeg']);
+  const known = new Set(['panels', 'seed', 'weights', 'lloydIterations', 'panelRounds', 'seeding', 'teleport', 'singlePointNodes', 'optimizePlanes', 'densityExpression', 'anisotropy', 'paint', 'glass', 'minCornerAngleDeg', 'edits']);
   for (const key of Object.keys(value)) {
     if (!known.has(key)) return failure(`${where}: unknown field "${key.slice(0, 40)}"`);
   }
@@ -207,6 +211,9 @@ export function validateParams(value: unknown, where = 'parameters'): Checked<De
   if (!anisotropy.ok) return anisotropy;
   const paint = value.paint ?? '';
   if (typeof paint !== 'string' || (paint !== '' && !PAINT_KEY.test(paint))) return failure(`${where}: the density paint key is not valid`);
+  // Absent in links and sessions made before panel edits came to the page.
+  const edits = checkEdits(value.edits ?? []);
+  if (!edits.ok) return edits;
   return {
     ok: true,
     value: {
@@ -222,6 +229,7 @@ export function validateParams(value: unknown, where = 'parameters'): Checked<De
       paint,
       glass: glass.value,
       minCornerAngleDeg: minAngle.value,
+      edits: edits.value,
     },
   };
 }
@@ -237,7 +245,8 @@ export function canWarmStart(from: DesignParams, to: DesignParams): boolean {
 
 // The paint goes to the worker as a field of its own (protocol.ts, SolveStep); the expression
 // and anisotropy only when set, so the JSON stays what a core without them reads.
-export function toRemeshParams(params: DesignParams): RemeshParams {
+// The edits only when there are some, so the JSON stays what a core without them reads.
+export function toRemeshParams(params: DesignParams): RemeshParams & { edits?: PanelEdit[] } {
   return {
     panels: params.panels,
     seed: params.seed,
@@ -252,5 +261,6 @@ export function toRemeshParams(params: DesignParams): RemeshParams {
     minCornerAngleDeg: params.minCornerAngleDeg,
     ...(params.densityExpression !== '' ? { densityExpression: params.densityExpression } : {}),
     ...(params.anisotropy.direction !== 'none' ? { anisotropy: { ...params.anisotropy } } : {}),
+    ...(params.edits.length > 0 ? { edits: params.edits.map((edit) => ({ ...edit })) } : {}),
   };
 }

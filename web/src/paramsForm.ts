@@ -2,6 +2,7 @@
 // params.ts, so the form, links and stored sessions share one set of rules.
 import { element } from './dom.ts';
 import { readNumber, setRange } from './formInputs.ts';
+import type { PanelEdit } from './edits/panelEdits.ts';
 import { DENSITY_PRESETS, LIMITS, validateParams, type Checked, type DesignParams } from './params.ts';
 
 export class ParamsForm {
@@ -25,6 +26,8 @@ export class ParamsForm {
   private paintKey = '';
   private readonly glass = element('glass', HTMLInputElement);
   private readonly minCornerAngle = element('min-corner-angle', HTMLInputElement);
+  // The per-panel edits (edits/editPanel.ts): made by clicking panels, not typed.
+  private editList: PanelEdit[] = [];
 
   constructor() {
     // The inputs' ranges come from LIMITS (params.ts), the same rules links are checked by.
@@ -92,6 +95,7 @@ export class ParamsForm {
       paint: this.paintKey,
       glass: this.glass.checked,
       minCornerAngleDeg: number(this.minCornerAngle),
+      edits: this.editList,
     });
     if (!checked.ok) this.markInvalid(checked.message);
     return checked;
@@ -135,6 +139,7 @@ export class ParamsForm {
     this.direction.value = params.anisotropy.direction;
     this.stretch.value = String(params.anisotropy.stretch);
     this.paintKey = params.paint;
+    this.editList = params.edits.map((edit) => ({ ...edit }));
     for (const input of [...this.numberInputs, this.expression, this.stretch]) input.removeAttribute('aria-invalid');
   }
 
@@ -144,6 +149,14 @@ export class ParamsForm {
 
   setPaint(key: string): void {
     this.paintKey = key;
+  }
+
+  get edits(): readonly PanelEdit[] {
+    return this.editList;
+  }
+
+  setEdits(edits: readonly PanelEdit[]): void {
+    this.editList = edits.map((edit) => ({ ...edit }));
   }
 
   setPanels(panels: number): void {
