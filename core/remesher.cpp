@@ -38,8 +38,7 @@ Remesher::Remesher(TriMesh mesh, RemeshParams params)
     : mesh_(std::move(mesh)),
       topology_(build_topology(mesh_)),
       params_(std::move(params)),
-      faces_(make_shaped_face_data(mesh_, topology_, params_.density, params_.density_expression,
-                                   params_.anisotropy)),
+      faces_(make_shaped_face_data(mesh_, topology_, params_.density, params_.density_expression, params_.anisotropy)),
       metric_(faces_, params_.weights, std::max(1, params_.panels)) {
   validate(params_);
   local_positions_.reserve(mesh_.positions.size());

@@ -58,8 +58,8 @@ std::vector<double> expression_density(const TriMesh& mesh, const MeshTopology& 
     }
     const double value = expression.evaluate(in);
     if (!std::isfinite(value) || !(value > 0.0)) {
-      throw InputError("density expression gives " + number_text(value) + " at vertex " + std::to_string(v + 1) +
-                       " (" + number_text(p.x()) + ", " + number_text(p.y()) + ", " + number_text(p.z()) +
+      throw InputError("density expression gives " + number_text(value) + " at vertex " + std::to_string(v + 1) + " (" +
+                       number_text(p.x()) + ", " + number_text(p.y()) + ", " + number_text(p.z()) +
                        "); densities must be finite and greater than 0");
     }
     lo = v == 0 ? value : std::min(lo, value);

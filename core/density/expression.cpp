@@ -22,14 +22,14 @@ struct NameInfo {
 
 // Functions: (name, op, arity range). min / max take 2..16 arguments.
 constexpr NameInfo kFunctions[] = {
-    {"sin", Op::Sin, 1, 1},         {"cos", Op::Cos, 1, 1},     {"tan", Op::Tan, 1, 1},
-    {"asin", Op::Asin, 1, 1},       {"acos", Op::Acos, 1, 1},   {"atan", Op::Atan, 1, 1},
-    {"atan2", Op::Atan2, 2, 2},     {"sqrt", Op::Sqrt, 1, 1},   {"exp", Op::Exp, 1, 1},
-    {"log", Op::Log, 1, 1},         {"log10", Op::Log10, 1, 1}, {"abs", Op::Abs, 1, 1},
-    {"sign", Op::Sign, 1, 1},       {"floor", Op::Floor, 1, 1}, {"ceil", Op::Ceil, 1, 1},
-    {"round", Op::Round, 1, 1},     {"pow", Op::Pow, 2, 2},     {"min", Op::Min, 2, 16},
-    {"max", Op::Max, 2, 16},        {"clamp", Op::Clamp, 3, 3}, {"smoothstep", Op::Smoothstep, 3, 3},
-    {"step", Op::Step, 2, 2},       {"mix", Op::Mix, 3, 3},     {"mod", Op::Mod, 2, 2},
+    {"sin", Op::Sin, 1, 1},     {"cos", Op::Cos, 1, 1},     {"tan", Op::Tan, 1, 1},
+    {"asin", Op::Asin, 1, 1},   {"acos", Op::Acos, 1, 1},   {"atan", Op::Atan, 1, 1},
+    {"atan2", Op::Atan2, 2, 2}, {"sqrt", Op::Sqrt, 1, 1},   {"exp", Op::Exp, 1, 1},
+    {"log", Op::Log, 1, 1},     {"log10", Op::Log10, 1, 1}, {"abs", Op::Abs, 1, 1},
+    {"sign", Op::Sign, 1, 1},   {"floor", Op::Floor, 1, 1}, {"ceil", Op::Ceil, 1, 1},
+    {"round", Op::Round, 1, 1}, {"pow", Op::Pow, 2, 2},     {"min", Op::Min, 2, 16},
+    {"max", Op::Max, 2, 16},    {"clamp", Op::Clamp, 3, 3}, {"smoothstep", Op::Smoothstep, 3, 3},
+    {"step", Op::Step, 2, 2},   {"mix", Op::Mix, 3, 3},     {"mod", Op::Mod, 2, 2},
     {"if", Op::Select, 3, 3},
 };
 
@@ -42,14 +42,29 @@ bool is_digit(char c) { return c >= '0' && c <= '9'; }
 // Binding powers of the infix operators (0 = not infix). Higher binds tighter.
 int infix_power(Op op) {
   switch (op) {
-    case Op::Or: return 2;
-    case Op::And: return 3;
-    case Op::Eq: case Op::Ne: return 4;
-    case Op::Lt: case Op::Le: case Op::Gt: case Op::Ge: return 5;
-    case Op::Add: case Op::Sub: return 6;
-    case Op::Mul: case Op::Div: case Op::Mod: return 7;
-    case Op::Pow: return 9;
-    default: return 0;
+    case Op::Or:
+      return 2;
+    case Op::And:
+      return 3;
+    case Op::Eq:
+    case Op::Ne:
+      return 4;
+    case Op::Lt:
+    case Op::Le:
+    case Op::Gt:
+    case Op::Ge:
+      return 5;
+    case Op::Add:
+    case Op::Sub:
+      return 6;
+    case Op::Mul:
+    case Op::Div:
+    case Op::Mod:
+      return 7;
+    case Op::Pow:
+      return 9;
+    default:
+      return 0;
   }
 }
 constexpr int kTernaryPower = 1;
@@ -145,14 +160,30 @@ class ExpressionParser {
         }
       };
       switch (c) {
-        case '+': tok_.op = Op::Add; break;
-        case '-': tok_.op = Op::Sub; break;
-        case '*': tok_.op = Op::Mul; break;
-        case '/': tok_.op = Op::Div; break;
-        case '%': tok_.op = Op::Mod; break;
-        case '^': tok_.op = Op::Pow; break;
-        case '<': two('=', Op::Le, Op::Lt); break;
-        case '>': two('=', Op::Ge, Op::Gt); break;
+        case '+':
+          tok_.op = Op::Add;
+          break;
+        case '-':
+          tok_.op = Op::Sub;
+          break;
+        case '*':
+          tok_.op = Op::Mul;
+          break;
+        case '/':
+          tok_.op = Op::Div;
+          break;
+        case '%':
+          tok_.op = Op::Mod;
+          break;
+        case '^':
+          tok_.op = Op::Pow;
+          break;
+        case '<':
+          two('=', Op::Le, Op::Lt);
+          break;
+        case '>':
+          two('=', Op::Ge, Op::Gt);
+          break;
         case '=':
           if (d != '=') fail("has '=' at column " + std::to_string(i + 1) + " (compare with '==')");
           len = 2;
@@ -176,11 +207,21 @@ class ExpressionParser {
           len = 2;
           tok_.op = Op::Or;
           break;
-        case '(': tok_.kind = Tok::LParen; break;
-        case ')': tok_.kind = Tok::RParen; break;
-        case ',': tok_.kind = Tok::Comma; break;
-        case '?': tok_.kind = Tok::Question; break;
-        case ':': tok_.kind = Tok::Colon; break;
+        case '(':
+          tok_.kind = Tok::LParen;
+          break;
+        case ')':
+          tok_.kind = Tok::RParen;
+          break;
+        case ',':
+          tok_.kind = Tok::Comma;
+          break;
+        case '?':
+          tok_.kind = Tok::Question;
+          break;
+        case ':':
+          tok_.kind = Tok::Colon;
+          break;
         default:
           fail("has unexpected character '" + std::string(1, c) + "' at column " + std::to_string(i + 1));
       }
@@ -198,7 +239,8 @@ class ExpressionParser {
   }
 
   void expect(Tok kind, const char* what) {
-    if (tok_.kind != kind) fail("expected " + std::string(what) + " at column " + column(tok_) + ", found " + describe(tok_));
+    if (tok_.kind != kind)
+      fail("expected " + std::string(what) + " at column " + column(tok_) + ", found " + describe(tok_));
     next();
   }
 
@@ -283,8 +325,9 @@ class ExpressionParser {
         }
       }
       if (args < f.min_args || args > f.max_args) {
-        const std::string want = f.min_args == f.max_args ? std::to_string(f.min_args)
-                                                          : std::to_string(f.min_args) + " to " + std::to_string(f.max_args);
+        const std::string want = f.min_args == f.max_args
+                                     ? std::to_string(f.min_args)
+                                     : std::to_string(f.min_args) + " to " + std::to_string(f.max_args);
         fail("calls '" + std::string(id) + "' at column " + column(t) + " with " + std::to_string(args) +
              (args == 1 ? " argument" : " arguments") + " (it takes " + want + ")");
       }
@@ -323,93 +366,6 @@ Expression Expression::parse(std::string_view text) { return ExpressionParser(te
 
 bool Expression::uses_curvature() const {
   return uses(ExprVar::K1) || uses(ExprVar::K2) || uses(ExprVar::H) || uses(ExprVar::K) || uses(ExprVar::Curv);
-}
-
-namespace {
-
-double floored_mod(double a, double b) { return a - b * std::floor(a / b); }
-
-double smoothstep(double e0, double e1, double x) {
-  if (e0 == e1) return x < e0 ? 0.0 : 1.0;
-  const double t = std::clamp((x - e0) / (e1 - e0), 0.0, 1.0);
-  return t * t * (3.0 - 2.0 * t);
-}
-
-}  // namespace
-
-double Expression::evaluate(const ExprInputs& in) const {
-  // Fixed-size value stack: the parser bounds it by kMaxTerms.
-  std::array<double, kMaxTerms + 1> stack;
-  int top = 0;  // number of values
-  const auto b2 = [&](double r) {
-    --top;
-    stack[static_cast<size_t>(top - 1)] = r;
-  };
-  for (const Instr& ins : program_) {
-    double* s = stack.data() + top;  // s[-1] is the top
-    switch (ins.op) {
-      case Op::Number: stack[static_cast<size_t>(top++)] = ins.value; break;
-      case Op::Var: stack[static_cast<size_t>(top++)] = in[static_cast<size_t>(ins.arg)]; break;
-      case Op::Neg: s[-1] = -s[-1]; break;
-      case Op::Not: s[-1] = s[-1] == 0.0 ? 1.0 : 0.0; break;
-      case Op::Add: b2(s[-2] + s[-1]); break;
-      case Op::Sub: b2(s[-2] - s[-1]); break;
-      case Op::Mul: b2(s[-2] * s[-1]); break;
-      case Op::Div: b2(s[-2] / s[-1]); break;
-      case Op::Mod: b2(floored_mod(s[-2], s[-1])); break;
-      case Op::Pow: b2(std::pow(s[-2], s[-1])); break;
-      case Op::Lt: b2(s[-2] < s[-1] ? 1.0 : 0.0); break;
-      case Op::Le: b2(s[-2] <= s[-1] ? 1.0 : 0.0); break;
-      case Op::Gt: b2(s[-2] > s[-1] ? 1.0 : 0.0); break;
-      case Op::Ge: b2(s[-2] >= s[-1] ? 1.0 : 0.0); break;
-      case Op::Eq: b2(s[-2] == s[-1] ? 1.0 : 0.0); break;
-      case Op::Ne: b2(s[-2] != s[-1] ? 1.0 : 0.0); break;
-      case Op::And: b2(s[-2] != 0.0 && s[-1] != 0.0 ? 1.0 : 0.0); break;
-      case Op::Or: b2(s[-2] != 0.0 || s[-1] != 0.0 ? 1.0 : 0.0); break;
-      case Op::Select:
-        top -= 2;
-        s[-3] = s[-3] != 0.0 ? s[-2] : s[-1];
-        break;
-      case Op::Sin: s[-1] = std::sin(s[-1]); break;
-      case Op::Cos: s[-1] = std::cos(s[-1]); break;
-      case Op::Tan: s[-1] = std::tan(s[-1]); break;
-      case Op::Asin: s[-1] = std::asin(s[-1]); break;
-      case Op::Acos: s[-1] = std::acos(s[-1]); break;
-      case Op::Atan: s[-1] = std::atan(s[-1]); break;
-      case Op::Atan2: b2(std::atan2(s[-2], s[-1])); break;
-      case Op::Sqrt: s[-1] = std::sqrt(s[-1]); break;
-      case Op::Exp: s[-1] = std::exp(s[-1]); break;
-      case Op::Log: s[-1] = std::log(s[-1]); break;
-      case Op::Log10: s[-1] = std::log10(s[-1]); break;
-      case Op::Abs: s[-1] = std::abs(s[-1]); break;
-      case Op::Sign: s[-1] = s[-1] > 0.0 ? 1.0 : (s[-1] < 0.0 ? -1.0 : 0.0); break;
-      case Op::Floor: s[-1] = std::floor(s[-1]); break;
-      case Op::Ceil: s[-1] = std::ceil(s[-1]); break;
-      case Op::Round: s[-1] = std::round(s[-1]); break;
-      case Op::Min:
-      case Op::Max: {
-        double r = s[-ins.arg];
-        for (int k = ins.arg - 1; k >= 1; --k) r = ins.op == Op::Min ? std::min(r, s[-k]) : std::max(r, s[-k]);
-        top -= ins.arg - 1;
-        stack[static_cast<size_t>(top - 1)] = r;
-        break;
-      }
-      case Op::Clamp:
-        top -= 2;
-        s[-3] = std::min(std::max(s[-3], s[-2]), s[-1]);
-        break;
-      case Op::Smoothstep:
-        top -= 2;
-        s[-3] = smoothstep(s[-3], s[-2], s[-1]);
-        break;
-      case Op::Step: b2(s[-1] < s[-2] ? 0.0 : 1.0); break;
-      case Op::Mix:
-        top -= 2;
-        s[-3] = s[-3] + (s[-2] - s[-3]) * s[-1];
-        break;
-    }
-  }
-  return top == 1 ? stack[0] : std::nan("");
 }
 
 }  // namespace ff

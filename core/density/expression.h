@@ -54,11 +54,14 @@ class Expression {
   bool uses_curvature() const;
   int num_terms() const { return static_cast<int>(program_.size()); }
 
+  // clang-format off
   enum class Op : std::uint8_t {
     Number, Var, Neg, Not, Add, Sub, Mul, Div, Mod, Pow, Lt, Le, Gt, Ge, Eq, Ne, And, Or, Select,
     Sin, Cos, Tan, Asin, Acos, Atan, Atan2, Sqrt, Exp, Log, Log10, Abs, Sign, Floor, Ceil, Round,
     Min, Max, Clamp, Smoothstep, Step, Mix
   };
+  // clang-format on
+
   struct Instr {
     Op op = Op::Number;
     int arg = 0;  // variable index, or the argument count of min / max

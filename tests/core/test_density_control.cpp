@@ -106,8 +106,7 @@ TEST(DensityControl, StretchAlongXElongatesPanelsAlongX) {
     if (run == 1) p.anisotropy.stretch = 1.0;  // the control: isotropic
     Remesher r(mesh, p);
     r.run();
-    const std::vector<ClusterShape> shapes =
-        cluster_shapes(mesh, r.clustering().labels, r.clustering().num_clusters());
+    const std::vector<ClusterShape> shapes = cluster_shapes(mesh, r.clustering().labels, r.clustering().num_clusters());
     int n = 0;
     for (const ClusterShape& s : shapes) {
       if (!(s.area > 0.0)) continue;
@@ -129,9 +128,8 @@ TEST(DensityControl, StretchAlongXElongatesPanelsAlongX) {
 
 TEST(DensityControl, AnisotropicEnergyFromMomentsIsExactAndTheFitMinimisesIt) {
   // A curved patch with a direction field that varies per face (max curvature).
-  const TriMesh mesh = make_grid_surface(20, 16, [](double s, double t) {
-    return Vec3(2.0 * s, 1.5 * t, 0.4 * s * s - 0.2 * t * t + 0.1 * s * t);
-  });
+  const TriMesh mesh = make_grid_surface(
+      20, 16, [](double s, double t) { return Vec3(2.0 * s, 1.5 * t, 0.4 * s * s - 0.2 * t * t + 0.1 * s * t); });
   Anisotropy a;
   a.direction = AnisotropyDirection::MaxCurvature;
   a.stretch = 4.0;
@@ -178,8 +176,7 @@ TEST(DensityControl, MinCurvatureStretchElongatesPanelsAlongACylinder) {
     p.anisotropy.stretch = run == 0 ? 3.0 : 1.0;  // then the isotropic control
     Remesher r(mesh, p);
     r.run();
-    const std::vector<ClusterShape> shapes =
-        cluster_shapes(mesh, r.clustering().labels, r.clustering().num_clusters());
+    const std::vector<ClusterShape> shapes = cluster_shapes(mesh, r.clustering().labels, r.clustering().num_clusters());
     // Spread along z vs around (the x-y spread of a narrow arc is about its tangential spread).
     double along = 0.0, around = 0.0;
     for (const ClusterShape& s : shapes) {
@@ -275,8 +272,7 @@ TEST(DensityControl, ParamsJsonContract) {
   EXPECT_NE(message(R"j({"densityExpression": "</script><script>alert(1)</script>"})j").find("unexpected"),
             std::string::npos);
   EXPECT_NE(message(R"j({"densityExpression": 3})j").find("'densityExpression' must be a string"), std::string::npos);
-  EXPECT_NE(message("{\"densityExpression\": \"" + std::string(5000, '1') + "\"}").find("too long"),
-            std::string::npos);
+  EXPECT_NE(message("{\"densityExpression\": \"" + std::string(5000, '1') + "\"}").find("too long"), std::string::npos);
   EXPECT_NE(message(R"j({"anisotropy": {"direction": "diagonal"}})j").find("'anisotropy.direction' must be"),
             std::string::npos);
   EXPECT_NE(message(R"j({"anisotropy": {"stretch": 11}})j").find("'anisotropy.stretch' must be between 1 and 10"),

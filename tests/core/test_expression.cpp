@@ -26,10 +26,10 @@ std::string error_of(const std::string& text) {
 TEST(Expression, ArithmeticAndPrecedence) {
   EXPECT_DOUBLE_EQ(eval("1 + 2 * 3"), 7.0);
   EXPECT_DOUBLE_EQ(eval("(1 + 2) * 3"), 9.0);
-  EXPECT_DOUBLE_EQ(eval("8 / 4 / 2"), 1.0);      // left associative
-  EXPECT_DOUBLE_EQ(eval("10 - 4 - 3"), 3.0);     // left associative
-  EXPECT_DOUBLE_EQ(eval("2 ^ 3 ^ 2"), 512.0);    // right associative
-  EXPECT_DOUBLE_EQ(eval("-2 ^ 2"), -4.0);        // ^ binds tighter than unary minus
+  EXPECT_DOUBLE_EQ(eval("8 / 4 / 2"), 1.0);    // left associative
+  EXPECT_DOUBLE_EQ(eval("10 - 4 - 3"), 3.0);   // left associative
+  EXPECT_DOUBLE_EQ(eval("2 ^ 3 ^ 2"), 512.0);  // right associative
+  EXPECT_DOUBLE_EQ(eval("-2 ^ 2"), -4.0);      // ^ binds tighter than unary minus
   EXPECT_DOUBLE_EQ(eval("2 ^ -1"), 0.5);
   EXPECT_DOUBLE_EQ(eval("--3"), 3.0);
   EXPECT_DOUBLE_EQ(eval("+3 - -2"), 5.0);
