@@ -20,6 +20,7 @@ const char* kUsage =
     "  remesh INPUT --panels N [--out PANELS.obj] [--report REPORT.json] [--parts PARTS.csv]\n"
     "          [--seed S]\n"
     "          [--weights euclidean=1,l2=1,l21=1,density=1,boundary=1] [--density FILE]\n"
+    "          [--density-expr EXPR] [--anisotropy DIR,STRETCH]\n"
     "          [--iterations K1,K2] [--seeding farthest|random] [--no-teleport]\n"
     "          [--single-point-nodes] [--no-optimize] [--glass] [--min-angle DEG]\n"
     "          [--edits EDITS.json]\n"
@@ -80,7 +81,15 @@ const char* kUsage =
     "\n"
     "INPUT is an OBJ, OFF, STL (ASCII or binary) or PLY (ASCII or binary little-endian) mesh.\n"
     "--density FILE: one positive number per input vertex (or per triangle); higher values\n"
-    "give smaller panels.\n";
+    "give smaller panels.\n"
+    "--density-expr EXPR: a procedural density per vertex (multiplies --density), e.g.\n"
+    "'1 + 3 * smoothstep(0.45, 0.55, u)'. Variables x y z (world), u v w (0..1 across the\n"
+    "bounding box), nx ny nz (normal), k1 k2 H K (curvatures), curv (scale-free curvature);\n"
+    "operators + - * / ^ % < <= > >= == != && || ! ?:; functions sin cos tan asin acos atan\n"
+    "atan2 sqrt exp log log10 abs sign floor ceil round pow min max clamp smoothstep step\n"
+    "mix mod if; constants pi e. It must be > 0 everywhere.\n"
+    "--anisotropy DIR,STRETCH: panels about STRETCH (1..10) times longer along DIR: x, y, z,\n"
+    "maxCurvature or minCurvature (the principal directions), or none.\n";
 
 }  // namespace
 

@@ -16,6 +16,7 @@
 #include "cli/input.h"
 #include "cli/output.h"
 #include "cli/remesh_report.h"
+#include "core/density/expression.h"
 #include "core/mesh/mesh_io.h"
 #include "core/panels/panel_export.h"
 #include "core/prepare/prepare.h"
@@ -23,6 +24,7 @@
 #include "core/quality/report_json.h"
 #include "core/remesh_params_json.h"
 #include "core/remesher.h"
+#include "core/util/error.h"
 
 namespace ff::cli {
 
@@ -45,6 +47,19 @@ std::pair<int, int> parse_iterations(const std::string& text) {
   return {static_cast<int>(k1), static_cast<int>(k2)};
 }
 
+// "DIR,STRETCH": DIR one of none, x, y, z, maxCurvature, minCurvature; STRETCH 1..10.
+Anisotropy parse_anisotropy(const std::string& text) {
+  const size_t comma = text.find(',');
+  Anisotropy a;
+  if (comma == std::string::npos || !set_anisotropy_direction(a, text.substr(0, comma)))
+    throw UsageError("--anisotropy: expected DIR,STRETCH with DIR none, x, y, z, maxCurvature or minCurvature, got '" +
+                     text + "'");
+  a.stretch = parse_double(text.substr(comma + 1), "--anisotropy STRETCH");
+  if (!(a.stretch >= 1.0 && a.stretch <= Anisotropy::kMaxStretch))
+    throw UsageError("--anisotropy: STRETCH must be between 1 and 10, got '" + text.substr(comma + 1) + "'");
+  return a;
+}
+
 struct Options {
   RemeshParams params;
   std::string input, seeding, out, report;
@@ -58,7 +73,7 @@ struct Options {
 Options parse_options(const std::vector<std::string>& argv) {
   std::set<std::string> with_value = {"panels", "seed",   "weights", "density",  "iterations",
                                       "out",    "report", "seeding", "min-angle", "edits", "prepare",
-                                      "edge-length"};
+                                      "edge-length", "density-expr", "anisotropy"};
   with_value.insert(fabrication_option_names().begin(), fabrication_option_names().end());
   with_value.insert(subdivision_option_names().begin(), subdivision_option_names().end());
   const Args args = parse_args(argv, with_value, {"single-point-nodes", "no-optimize", "no-teleport", "glass"});
@@ -120,6 +135,15 @@ Options parse_options(const std::vector<std::string>& argv) {
       throw UsageError("--edits names triangles of the cleaned mesh: it cannot go with --prepare auto or --edge-length");
     o.prepare.mode = PrepareMode::Off;
   }
+  if (args.has("density-expr")) {
+    p.density_expression = args.get("density-expr");
+    try {
+      Expression::parse(p.density_expression);  // syntax errors before the mesh is read
+    } catch (const InputError& e) {
+      throw UsageError(std::string("--density-expr: ") + e.what());
+    }
+  }
+  if (args.has("anisotropy")) p.anisotropy = parse_anisotropy(args.get("anisotropy"));
   if (args.has("density")) {
     o.density = args.get("density");
     if (o.density.empty()) throw UsageError("--density: empty file name");

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "cli/commands.h"
+#include "core/density/anisotropy.h"
 #include "core/panels/panel_export.h"
 #include "core/quality/report_json.h"
 #include "core/util/json_writer.h"
@@ -70,6 +71,13 @@ std::string remesh_report_json(const RemeshRun& run) {
   j.value("density", p.weights.density).value("boundary", p.weights.boundary);
   j.end_object();
   j.value("density_file", !p.density.empty());
+  // Only when set, so runs without them keep their reports byte for byte.
+  if (!p.density_expression.empty()) j.value("density_expression", p.density_expression);
+  if (p.anisotropy.active()) {
+    j.begin_object("anisotropy");
+    j.value("direction", anisotropy_direction_name(p.anisotropy)).value("stretch", p.anisotropy.stretch);
+    j.end_object();
+  }
   j.value("single_point_nodes", p.single_point_nodes);
   j.value("optimize_planes", p.optimize_planes);
   j.value("glass", p.glass);

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <string>
 
+#include "core/density/expression.h"
 #include "core/util/error.h"
 #include "core/util/json_reader.h"
 
@@ -97,6 +98,25 @@ std::vector<PanelEdit> read_edits(const JsonValue& v) {
   return out;
 }
 
+// {"direction": "none"|"x"|"y"|"z"|"maxCurvature"|"minCurvature", "stretch": 1..10}; fields
+// left out keep their values in `a`.
+void read_anisotropy(const JsonValue& v, Anisotropy& a) {
+  if (v.type != JsonValue::Type::Object) throw InputError("parameter 'anisotropy' must be an object");
+  for (const auto& [name, value] : v.object) {
+    if (name == "direction") {
+      if (value.type != JsonValue::Type::String || !set_anisotropy_direction(a, value.string)) {
+        throw InputError(
+            "parameter 'anisotropy.direction' must be \"none\", \"x\", \"y\", \"z\", \"maxCurvature\" or "
+            "\"minCurvature\"");
+      }
+    } else if (name == "stretch") {
+      a.stretch = number(value, "anisotropy.stretch", 1, Anisotropy::kMaxStretch, false);
+    } else {
+      throw InputError("unknown parameter 'anisotropy." + name + "'");
+    }
+  }
+}
+
 }  // namespace
 
 std::vector<PanelEdit> panel_edits_from_json(std::string_view json) {
@@ -135,6 +155,13 @@ RemeshParams remesh_params_from_json(std::string_view json, const RemeshParams& 
       p.glass = boolean(value, name);  // glass mode: concave panels cut into convex pieces
     } else if (name == "minCornerAngleDeg") {
       p.min_corner_angle_deg = number(value, name, 0, 60, false);  // as the CLI's --min-angle
+    } else if (name == "densityExpression") {
+      if (value.type != JsonValue::Type::String) throw InputError("parameter 'densityExpression' must be a string");
+      // Checked here (length, syntax, names) so a bad link fails with its own message.
+      if (!value.string.empty()) Expression::parse(value.string);
+      p.density_expression = value.string;
+    } else if (name == "anisotropy") {
+      read_anisotropy(value, p.anisotropy);
     } else {
       throw InputError("unknown parameter '" + name + "'");
     }

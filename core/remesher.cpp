@@ -6,6 +6,7 @@
 #include "core/cluster/flood.h"
 #include "core/cluster/lloyd.h"
 #include "core/cluster/teleport.h"
+#include "core/density/density_field.h"
 #include "core/panels/boundary_term.h"
 #include "core/panels/glass_split.h"
 #include "core/panels/plane_fit.h"
@@ -37,7 +38,7 @@ Remesher::Remesher(TriMesh mesh, RemeshParams params)
     : mesh_(std::move(mesh)),
       topology_(build_topology(mesh_)),
       params_(std::move(params)),
-      faces_(make_face_data(mesh_, params_.density)),
+      faces_(make_shaped_face_data(mesh_, topology_, params_.density, params_.density_expression, params_.anisotropy)),
       metric_(faces_, params_.weights, std::max(1, params_.panels)) {
   validate(params_);
   local_positions_.reserve(mesh_.positions.size());
@@ -282,7 +283,9 @@ void Remesher::set_params(RemeshParams params) {
   validate(params);
   // New face data only for a new density field (it is the largest thing a Remesher holds).
   std::optional<FaceData> faces;
-  if (params.density != params_.density) faces = make_face_data(mesh_, params.density);
+  if (params.density != params_.density || params.density_expression != params_.density_expression ||
+      params.anisotropy != params_.anisotropy)
+    faces = make_shaped_face_data(mesh_, topology_, params.density, params.density_expression, params.anisotropy);
   Metric(faces ? *faces : faces_, params.weights, params.panels);  // throws on bad weights
   // A changed edit list replays on a fresh solve (set_edits is the incremental way).
   const bool restart = clustering_.labels.empty() || params.seed != params_.seed ||

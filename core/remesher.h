@@ -16,6 +16,7 @@
 #include "core/cluster/face_data.h"
 #include "core/cluster/metric.h"
 #include "core/cluster/seeding.h"
+#include "core/density/anisotropy.h"
 #include "core/mesh/topology.h"
 #include "core/mesh/tri_mesh.h"
 #include "core/panels/panel_attempt.h"
@@ -44,6 +45,11 @@ struct RemeshParams {
   MetricWeights weights;
   // Empty (uniform), one value per mesh vertex or one per face; higher = smaller panels.
   std::vector<double> density;
+  // Procedural density (density/expression.h), evaluated per vertex and multiplied with
+  // `density` when both are given; empty = none.
+  std::string density_expression;
+  // Elongated panels along a direction (density/anisotropy.h); none by default.
+  Anisotropy anisotropy;
   int lloyd_iterations = 20;  // k1: an upper bound; stops earlier at a fixed point
   SeedingMethod seeding = SeedingMethod::FarthestPoint;
   int teleport_interval = 4;  // teleport before every 4th iteration; 0 = never

@@ -34,6 +34,9 @@ struct FaceData {
   double scale = 1.0;
   std::vector<FaceRecord> records;
   double total_area = 0.0;  // local frame
+  // Anisotropy (density/anisotropy.h): empty, or per face e_f with the euclidean term
+  // measured by I - e_f e_f^T (|e_f| < 1). Unitless, so the local frame does not change it.
+  std::vector<Vec3> stretch;
 
   Vec3 to_world(const Vec3& local) const { return origin + scale * local; }
   // Local areas (and the energies, which are areas) times this are world areas.

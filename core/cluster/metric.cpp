@@ -22,6 +22,13 @@ void ClusterMoments::add_face(const FaceData& faces, int face) {
   second += a * (c * c.transpose() + spread);
   normal_sum += a * faces[f].normal;
   density_area += a * faces[f].density;
+  if (!faces.stretch.empty()) {
+    const Vec3& e = faces.stretch[f];
+    const double ec = e.dot(c);
+    stretch_second += a * e * e.transpose();
+    stretch_first += (a * ec) * e;
+    stretch_sq += a * ec * ec;
+  }
 }
 
 void ClusterMoments::add(const ClusterMoments& o) {
@@ -31,6 +38,9 @@ void ClusterMoments::add(const ClusterMoments& o) {
   second += o.second;
   normal_sum += o.normal_sum;
   density_area += o.density_area;
+  stretch_second += o.stretch_second;
+  stretch_first += o.stretch_first;
+  stretch_sq += o.stretch_sq;
 }
 
 EnergyTerms EnergyTerms::scaled(double factor) const {
@@ -60,6 +70,10 @@ Metric::Metric(const FaceData& faces, const MetricWeights& weights, int num_clus
   if (num_clusters < 1) throw InputError("the number of panels must be at least 1");
   diameter_ = std::sqrt(faces.total_area / num_clusters);
   if (!(diameter_ > 0.0)) throw InputError("the surface has zero area");
+  if (!faces.stretch.empty()) {
+    if (faces.stretch.size() != faces.records.size()) throw InputError("anisotropy: one direction per face expected");
+    stretch_ = faces.stretch.data();
+  }
 }
 
 double Metric::density_scale(double density) const {
@@ -138,6 +152,12 @@ Proxy Metric::fit(const ClusterMoments& m, const Proxy& fallback) const {
   p.density = m.density_area / m.area;
   Eigen::Matrix3d cov = m.second - m.area * p.center * p.center.transpose();
   cov = 0.5 * (cov + cov.transpose());
+  p.normal = fit_normal(m, cov);
+  if (stretch_ != nullptr && weights_.euclidean > 0.0) refine_anisotropic(m, p);
+  return p;
+}
+
+Vec3 Metric::fit_normal(const ClusterMoments& m, const Eigen::Matrix3d& cov) const {
   const double inv_d2 = 1.0 / (diameter_ * diameter_);
   const Vec3 mean_normal = m.normal_sum;
   Vec3 normal;
@@ -149,8 +169,30 @@ Proxy Metric::fit(const ClusterMoments& m, const Proxy& fallback) const {
         mean_normal.norm() > 0.0 ? Vec3(mean_normal.normalized()) : minimize_quadratic_on_sphere(cov, Vec3::Zero());
   }
   if (normal.dot(mean_normal) < 0.0) normal = -normal;
-  p.normal = normal;
-  return p;
+  return normal;
+}
+
+void Metric::refine_anisotropic(const ClusterMoments& m, Proxy& p) const {
+  // Euclidean: x^T A x - 2 b.x + const with A = sum a M_f, b = sum a M_f c. L2 about x:
+  // N^T cov N + area (N.(centroid - x))^2. For a fixed normal both are quadratic in x (one
+  // 3x3 solve); for a fixed centre the normal is the usual sphere-constrained fit.
+  const double inv_d2 = 1.0 / (diameter_ * diameter_);
+  const double we = weights_.euclidean * density_scale(p.density) * inv_d2;
+  const double w2 = weights_.l2 * inv_d2;
+  const Eigen::Matrix3d A = m.area * Eigen::Matrix3d::Identity() - m.stretch_second;
+  const Vec3 b = m.first - m.stretch_first;
+  const Vec3 centroid = m.first / m.area;
+  for (int round = 0; round < 3; ++round) {
+    const Vec3& N = p.normal;
+    const Eigen::Matrix3d lhs = we * A + (w2 * m.area) * N * N.transpose();
+    const Vec3 rhs = we * b + (w2 * m.area * N.dot(centroid)) * N;
+    const Vec3 x = lhs.ldlt().solve(rhs);
+    if (!x.allFinite()) return;
+    p.center = x;
+    Eigen::Matrix3d about = m.second - m.first * x.transpose() - x * m.first.transpose() + m.area * x * x.transpose();
+    about = 0.5 * (about + about.transpose());
+    p.normal = fit_normal(m, about);
+  }
 }
 
 EnergyTerms Metric::energy(const ClusterMoments& m, const Proxy& proxy) const {
@@ -159,7 +201,11 @@ EnergyTerms Metric::energy(const ClusterMoments& m, const Proxy& proxy) const {
   const double inv_d2 = 1.0 / (diameter_ * diameter_);
   const Vec3& x = proxy.center;
   const Vec3& N = proxy.normal;
-  const double euclid = std::max(0.0, m.centroid_sq - 2.0 * x.dot(m.first) + m.area * x.squaredNorm());
+  double euclid = std::max(0.0, m.centroid_sq - 2.0 * x.dot(m.first) + m.area * x.squaredNorm());
+  if (stretch_ != nullptr) {
+    euclid = std::max(0.0, m.centroid_sq - 2.0 * x.dot(m.first) + m.area * x.squaredNorm() - m.stretch_sq +
+                               2.0 * x.dot(m.stretch_first) - x.dot(m.stretch_second * x));
+  }
   const Eigen::Matrix3d about_x =
       m.second - m.first * x.transpose() - x * m.first.transpose() + m.area * x * x.transpose();
   const double l2 = std::max(0.0, N.dot(about_x * N));

@@ -7,7 +7,8 @@
 // unit normal N, density rho_i = area mean of its faces' densities), with D the expected
 // cluster diameter sqrt(total area / n):
 //   euclidean  a |c - x|^2 / D^2, scaled by rho_i^w_density (the density term: panel area
-//              ~ 1/density, because a denser cluster pays more for the same reach)
+//              ~ 1/density, because a denser cluster pays more for the same reach); with
+//              anisotropy a (c-x)^T M_f (c-x) / D^2, M_f = I - e_f e_f^T (FaceData::stretch)
 //   L2         integral over f of (N.(p - x))^2 / D^2   (exact, per triangle)
 //   L2,1       a |n - N|^2                               (unit-less, as in the paper)
 // All terms are areas, so the user weights compare like with like.
@@ -41,6 +42,11 @@ struct ClusterMoments {
   Eigen::Matrix3d second = Eigen::Matrix3d::Zero();  // integral of p p^T dA
   Vec3 normal_sum = Vec3::Zero();                    // sum a n
   double density_area = 0.0;                         // sum a rho_f
+  // Anisotropy only (zero without): sum a e e^T, sum a e (e.c), sum a (e.c)^2, so the
+  // euclidean energy sum a (c-x)^T (I - e e^T) (c-x) stays O(1) per cluster.
+  Eigen::Matrix3d stretch_second = Eigen::Matrix3d::Zero();
+  Vec3 stretch_first = Vec3::Zero();
+  double stretch_sq = 0.0;
 
   void add_face(const FaceData& faces, int f);
   void add(const ClusterMoments& other);
@@ -84,6 +90,11 @@ class Metric {
     const Vec3& N = t.normal;
     const double l21 = (r.normal - N).squaredNorm();
     const Vec3 d = r.centroid - t.center;
+    double reach = d.squaredNorm();
+    if (stretch_ != nullptr) {
+      const double along_e = stretch_[face].dot(d);
+      reach -= along_e * along_e;
+    }
     // A zero-weight term adds exactly +0.0 (its factors are finite and >= 0): skipping it
     // changes no bit of the result and spares the record's second cache line.
     double l2 = 0.0;
@@ -94,7 +105,7 @@ class Metric {
                             2.0 * (s[3] * N.x() * N.y() + s[4] * N.x() * N.z() + s[5] * N.y() * N.z());
       l2 = t.l2_scale * (along * along + spread);
     }
-    return r.area * (t.euclid_scale * d.squaredNorm() + l2 + t.l21_scale * l21);
+    return r.area * (t.euclid_scale * reach + l2 + t.l21_scale * l21);
   }
 
   // The proxy minimising this cluster's weighted energy: centre at the area centroid (optimal
@@ -103,7 +114,9 @@ class Metric {
   // weight is 0), oriented with the cluster's mean normal. The cluster's density becomes its
   // area-mean density: a size target rather than a minimiser, so with a density field a
   // refit may raise the energy slightly (without one, fits only lower it). `fallback` is
-  // returned for a cluster of zero area.
+  // returned for a cluster of zero area. With anisotropy the best centre is no longer the
+  // centroid: centre and normal are then refined by block coordinate descent (each block
+  // solved exactly, so the energy only goes down), a few rounds.
   Proxy fit(const ClusterMoments& m, const Proxy& fallback) const;
 
   EnergyTerms energy(const ClusterMoments& m, const Proxy& proxy) const;
@@ -113,8 +126,11 @@ class Metric {
 
  private:
   double density_scale(double density) const;
+  Vec3 fit_normal(const ClusterMoments& m, const Eigen::Matrix3d& scatter) const;
+  void refine_anisotropic(const ClusterMoments& m, Proxy& p) const;
 
   const FaceData* faces_;
+  const Vec3* stretch_ = nullptr;  // faces_->stretch, or null when isotropic
   MetricWeights weights_;
   double diameter_;
 };
