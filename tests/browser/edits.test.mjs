@@ -35,7 +35,7 @@ async function after_(page, action) {
 async function clickView(page, fx, fy) {
   const box = await page.locator('#viewport canvas').boundingBox();
   await page.mouse.click(box.x + box.width * fx, box.y + box.height * fy);
-  return page.evaluate(() => document.body.dataset.selectedPanel ?? '');
+  return page.evaluate(() => document.body.dataset.editPanel ?? '');
 }
 
 // Whether `polygon` (points) is a face of the OBJ, vertex for vertex within `tolerance`.

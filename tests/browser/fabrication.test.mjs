@@ -11,7 +11,7 @@ import { browserSuite, download, parseObj, remesh, repo, screenshot, selectExamp
 
 const suite = browserSuite();
 const { withPage } = suite;
-const server = suite; // server.url: the built site
+const server = suite; // suite.url: the built site
 
 const fabrications = (page) => page.evaluate(() => Number(document.body.dataset.fabrications ?? 0));
 
@@ -43,7 +43,7 @@ function csvColumn(rows, name) {
 }
 
 test('20 mm panels: parts list, cut sheets and solid panels download; the thick view toggles', () =>
-  withPage(server.url, async (page) => {
+  withPage(suite.url, async (page) => {
     await saddle(page, 40);
     // The generated saddle is some 30 units across: read as inches, its panels (some 110 mm)
     // fit a 600 x 400 mm board.
@@ -106,7 +106,7 @@ test('20 mm panels: parts list, cut sheets and solid panels download; the thick 
   }));
 
 test('a share link carries the fabrication settings', () =>
-  withPage(server.url, async (page) => {
+  withPage(suite.url, async (page) => {
     await saddle(page, 30);
     await setThickness(page, 18);
     await fabricatedAfter(page, () => page.locator('#fab-side').selectOption('outside'));
@@ -124,7 +124,7 @@ test('a share link carries the fabrication settings', () =>
   }));
 
 test('nodes needing extra chamfer are marked, with a legend line', () =>
-  withPage(server.url, async (page) => {
+  withPage(suite.url, async (page) => {
     await waitForDone(page);
     assert.equal(await solveAfter(page, () => selectExample(page, 'barrel_vault')), 120);
     const legend = page.locator('#spread-legend');
@@ -166,7 +166,7 @@ function allConvex({ vertices, faces }) {
 }
 
 test('glass mode gives convex panels; a minimum corner angle marks the acute corners left', () =>
-  withPage(server.url, async (page) => {
+  withPage(suite.url, async (page) => {
     await waitForDone(page);
     assert.equal(await solveAfter(page, () => selectExample(page, 'freeform_roof')), 120);
     const plain = parseObj((await download(page, 'Export OBJ')).text);
@@ -188,7 +188,7 @@ test('glass mode gives convex panels; a minimum corner angle marks the acute cor
   }));
 
 test('a clicked panel gets its own thickness, boundary edges a bevel: in the parts list and in a share link', () =>
-  withPage(server.url, async (page) => {
+  withPage(suite.url, async (page) => {
     await saddle(page, 30);
     await setThickness(page, 20);
     const input = page.getByLabel('Panel thickness');

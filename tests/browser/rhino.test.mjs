@@ -3,20 +3,11 @@
 // prepared (the note says they do not join), then the roof alone picked, remeshed and
 // exported: valid, exactly planar panels. Run after `npm run build`.
 import assert from 'node:assert/strict';
-import { after, before, test } from 'node:test';
+import { test } from 'node:test';
 import rhino3dm from 'rhino3dm';
-import { download, launchBrowser, maxPlanarity, openPage, parseObj, remesh, screenshot, setPanels, solveAfter, startServer, waitForDone } from './harness.mjs';
+import { browserSuite, download, maxPlanarity, parseObj, remesh, screenshot, setPanels, solveAfter, waitForDone } from './harness.mjs';
 
-let server;
-let browser;
-before(async () => {
-  server = await startServer();
-  browser = await launchBrowser();
-});
-after(async () => {
-  await browser?.close();
-  await server?.close();
-});
+const suite = browserSuite();
 
 async function rhinoFile() {
   const rh = await rhino3dm();
@@ -41,9 +32,8 @@ async function rhinoFile() {
   return Buffer.from(doc.toByteArray());
 }
 
-test('a Rhino file opens, its objects are listed, the roof alone panels to valid planar panels', async () => {
-  const { context, page, errors } = await openPage(browser, server.url);
-  try {
+test('a Rhino file opens, its objects are listed, the roof alone panels to valid planar panels', () =>
+  suite.withPage(suite.url, async (page) => {
     await waitForDone(page);
     const buffer = await rhinoFile();
     const started = Date.now();
@@ -85,8 +75,4 @@ test('a Rhino file opens, its objects are listed, the roof alone panels to valid
     console.log(`roof: 60 panels, planarity ${maxPlanarity(parsed).toExponential(2)}`);
     const shot = await screenshot(page, 'rhino-roof');
     console.log(`screenshot: ${shot}`);
-    assert.deepEqual(errors, [], 'no page or console errors');
-  } finally {
-    await context.close();
-  }
-});
+  }));

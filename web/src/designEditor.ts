@@ -203,8 +203,9 @@ export class DesignEditor {
     if (step) this.restore(step);
   }
 
-  // The step's parameters and paint back in the form and the view, and its panels: replayed
-  // when its chain is known, else solved as Remesh would.
+  // The step's parameters and paint back in the form and the view, and its panels replayed
+  // when its chain is known. A step never solved (parameters typed, no Remesh) only goes back
+  // in the form, as typing it would: the panels on show stay until Remesh.
   private restore(step: DesignStep): void {
     this.host.form.write(step.params);
     this.density.show();
@@ -216,7 +217,6 @@ export class DesignEditor {
     // the edit list from the design before the first edit), the chain the same as replayed.
     if (step.chain && shown && !this.host.solving() && sameChain(compactChain([...shown, step.params]), step.chain)) this.host.remesh();
     else if (step.chain) this.host.replay(step.chain);
-    else this.host.remesh();
   }
 
   private key(event: KeyboardEvent): void {

@@ -159,7 +159,7 @@ export class EditPanel {
     const parts = [`${count('split')} split`, `${count('merge')} merged`, `${locked.size} locked`];
     const panels = result ? Math.max(0, result.panelOffsets.length - 1) : 0;
     this.summary.textContent = edits.length === 0 ? 'No panel edits.' : `${edits.length} edit${edits.length === 1 ? '' : 's'}: ${parts.join(', ')}${result ? ` · ${panels} panels now` : ''}.`;
-    document.body.dataset.selectedPanel = panel === null ? '' : String(panel);
+    document.body.dataset.editPanel = panel === null ? '' : String(panel);
     document.body.dataset.lockedPanels = [...locked].sort((a, b) => a - b).join(',');
     document.body.dataset.editCount = String(edits.length);
   }
