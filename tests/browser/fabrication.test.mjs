@@ -11,7 +11,6 @@ import { browserSuite, download, parseObj, remesh, repo, screenshot, selectExamp
 
 const suite = browserSuite();
 const { withPage } = suite;
-const server = suite; // suite.url: the built site
 
 const fabrications = (page) => page.evaluate(() => Number(document.body.dataset.fabrications ?? 0));
 
