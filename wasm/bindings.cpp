@@ -51,6 +51,7 @@ EMSCRIPTEN_BINDINGS(flatfacet) {
       .function("loadArrays", &load_arrays)
       .function("loadShape", &Session::load_shape)
       .function("loadSurfaces", &load_surfaces)
+      .function("prepare", &Session::prepare)
       .function("setParams", &Session::set_params)
       .function(
           "setDensity", +[](Session& s, const val& density) { return s.set_density(from_typed_array<double>(density)); })

@@ -20,6 +20,7 @@ export interface MeshInfo extends Status {
   genus: number;
   bboxDiagonal: number;
   cleanup: string[]; // one sentence per repair applied ("welded 12 duplicate vertices")
+  prepared: string[]; // what Session.prepare did and why ("refined 1,952 triangles to ...")
 }
 
 // Everything the designer sets; missing fields keep their defaults (DESIGN.md 4 / CLI).
@@ -146,6 +147,11 @@ export interface Session {
   // A generated example: 'saddle' | 'barrel_vault' | 'groin_vault' | 'helicoid' | 'freeform_roof'
   // | 'torus' | 'bump' | 'roof_with_hole' | 'twisted_strip', with about `triangles` triangles.
   loadShape(name: string, triangles: number): string;
+  // Right after a load: subdivide `subdivide` levels (0..4; Loop on triangles, else
+  // Catmull-Clark on the file's polygons), then refine to the resolution `panels` need (below
+  // 20 triangles per panel; else the mesh stays as loaded). MeshInfo JSON, its cleanup saying
+  // what was done and why; a Status on failure (the loaded mesh kept).
+  prepare(panels: number, subdivide: number): string;
   // Sets parameters (JSON of RemeshParams). With a solve under way or finished, warm-starts from
   // the current clustering (panel count / weights); a changed seed starts over. Status JSON.
   setParams(paramsJson: string): string;

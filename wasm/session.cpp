@@ -60,32 +60,48 @@ const char* display_stage(Stage stage) {
 Session::Session() = default;
 Session::~Session() = default;
 
-std::string Session::load(const std::string& name, TriMesh raw, int input_triangles, const CleanOptions& clean_options) {
+std::string Session::load(const std::string& name, TriMesh raw, int input_triangles, const CleanOptions& clean_options,
+                          const std::vector<int>& source_polygon) {
   const auto t0 = Clock::now();
   CleanMesh clean = clean_mesh(raw, clean_options);
   MeshTopology topology = build_topology(clean.mesh);
+  // The file's polygon of each cleaned triangle (a subdivision's control faces, prepare()).
+  std::vector<int> face_polygon(clean.face_source.size());
+  for (size_t f = 0; f < face_polygon.size(); ++f) {
+    const auto source = static_cast<size_t>(clean.face_source[f]);
+    face_polygon[f] = source < source_polygon.size() ? source_polygon[source] : static_cast<int>(source);
+  }
   // Everything built: only now replace the previous design.
   name_ = name;
   mesh_ = std::move(clean.mesh);
   topology_ = std::move(topology);
+  face_polygon_ = std::move(face_polygon);
+  input_triangles_ = input_triangles;
+  prepared_ = false;
+  prepared_notes_.clear();
   cleanup_ = clean.report.messages();
   params_.density.clear();  // per vertex of the previous mesh
   remesher_.reset();
   forget_result();
   prepare_seconds_ = seconds_since(t0);
+  return mesh_info_json();
+}
 
+std::string Session::mesh_info_json() const {
   const int euler = euler_characteristic(mesh_, topology_);
   const int loops = static_cast<int>(topology_.boundary_loops.size());
   JsonWriter j;
   j.begin_object().value("ok", true).value("message", "").value("name", name_);
   j.value("vertices", mesh_.num_vertices()).value("triangles", mesh_.num_faces());
-  j.value("inputTriangles", input_triangles).value("components", topology_.num_components);
+  j.value("inputTriangles", input_triangles_).value("components", topology_.num_components);
   j.value("boundaryLoops", loops).value("euler", euler);
   // Orientable surfaces: chi = 2 c - 2 g - b.
   j.value("genus", (2 * topology_.num_components - euler - loops) / 2);
   j.value("bboxDiagonal", bbox_diagonal(mesh_));
   j.begin_array("cleanup");
   for (const std::string& m : cleanup_) j.value(nullptr, m);
+  j.end_array().begin_array("prepared");
+  for (const std::string& m : prepared_notes_) j.value(nullptr, m);
   j.end_array().end_object();
   return j.str();
 }
@@ -101,7 +117,7 @@ std::string Session::load_mesh(const std::string& name, std::string_view bytes) 
       throw InputError(name + ": " + e.what());
     }
     const int triangles = raw.mesh.num_faces();
-    return load(name, std::move(raw.mesh), triangles);
+    return load(name, std::move(raw.mesh), triangles, {}, raw.source_polygon);
   });
 }
 

@@ -43,6 +43,12 @@ class Session {
   // "surfaces": [{"name", "triangles", "samplesU", "samplesV", "seamWelded"}].
   std::string load_surfaces(const std::string& name, const std::string& surfaces_json,
                             const std::vector<double>& positions, const std::vector<std::uint32_t>& indices);
+  // Right after a load (wasm/session_prepare.cpp): subdivide the mesh as a control mesh
+  // `subdivide` levels (Loop on triangles, else Catmull-Clark on the file's polygons), then
+  // remesh it to the resolution `panels` need (core/prepare/prepare.h: refined below 20
+  // triangles per panel, else untouched bit for bit). MeshInfo JSON whose "prepared" lists
+  // what was done and why; on failure a Status and the loaded mesh stays as it was.
+  std::string prepare(int panels, int subdivide);
   // Status JSON. Warm-starts a solve under way or finished (Remesher::set_params). The
   // density field (set_density) stays as it is.
   std::string set_params(const std::string& params_json);
@@ -104,7 +110,10 @@ class Session {
   struct Timings {
     double cluster = 0.0, panels = 0.0, quality = 0.0;
   };
-  std::string load(const std::string& name, TriMesh raw, int input_triangles, const CleanOptions& clean_options = {});
+  // source_polygon: the file polygon of each raw triangle (empty: every triangle its own).
+  std::string load(const std::string& name, TriMesh raw, int input_triangles, const CleanOptions& clean_options = {},
+                   const std::vector<int>& source_polygon = {});
+  std::string mesh_info_json() const;
   const QualityReport* quality();
   void forget_result();
   // Edits (session_edits.cpp): what set_params compares to tell an edit from a new solve
@@ -115,7 +124,11 @@ class Session {
   std::string name_;
   TriMesh mesh_;  // cleaned
   MeshTopology topology_;
-  std::vector<std::string> cleanup_;
+  std::vector<std::string> cleanup_;   // what clean-up repaired, one sentence each
+  std::vector<std::string> prepared_notes_;  // what prepare() did and why
+  std::vector<int> face_polygon_;     // per cleaned triangle: its polygon in the file
+  int input_triangles_ = 0;
+  bool prepared_ = false;  // prepare() ran on this load
   RemeshParams params_;
   FabricationSettings fabrication_;
   // The last cut-sheet packing and what it was packed from (session_fabrication.cpp): one

@@ -228,3 +228,22 @@ test('the form limits are the core-compatible ones, shared with links', () => {
   assert.match(validateParams({ ...DEFAULT_PARAMS, lloydIterations: 201 }).message, /Lloyd iterations must be between 0 and 200/);
   assert.ok(validateParams({ ...DEFAULT_PARAMS, seed: 2 ** 53 - 1 }).ok);
 });
+
+test("a mesh's preparation travels with it; a hostile one is refused by name", () => {
+  const state = { mesh: { kind: 'example', id: 'YasIsland', prepare: { panels: 150, subdivide: 1 } }, params, history: [] };
+  const decoded = hashToState(stateToHash(state));
+  assert.ok(decoded.ok, decoded.message);
+  assert.deepEqual(decoded.value, state);
+  const upload = { mesh: { kind: 'file', name: 'grid.obj', bytes: new TextEncoder().encode('v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n'), prepare: { panels: 40, subdivide: 0 } }, params, history: [] };
+  const uploaded = hashToState(stateToHash(upload));
+  assert.ok(uploaded.ok, uploaded.message);
+  assert.deepEqual(uploaded.value.mesh.prepare, { panels: 40, subdivide: 0 });
+  const withPrepare = (prepare) => hashOf({ v: 1, mesh: { example: 'YasIsland', prepare }, params, history: [] });
+  refused(withPrepare({ panels: 150, subdivide: 5 }), /subdivision levels must be 0 to 4/);
+  refused(withPrepare({ panels: 150, subdivide: 1.5 }), /subdivision levels/);
+  refused(withPrepare({ panels: 0, subdivide: 1 }), /no valid panel count/);
+  refused(withPrepare({ panels: '150', subdivide: 1 }), /no valid panel count/);
+  refused(withPrepare({ panels: 150, subdivide: 1, script: 'alert(1)' }), /unknown field "script"/);
+  refused(withPrepare([150, 1]), /not an object/);
+  refused(withPrepare('refine'), /not an object/);
+});

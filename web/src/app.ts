@@ -16,6 +16,7 @@ import { Outputs } from './outputs.ts';
 import { rhinoLoaded } from './rhino/rhinoOpen.ts';
 import type { DesignParams } from './params.ts';
 import { ParamsForm } from './paramsForm.ts';
+import { PrepareControl } from './prepareControl.ts';
 import type { SolveResult, WorkerResponse } from './protocol.ts';
 import { saveSession } from './sessionStore.ts';
 import { MAX_HISTORY, type DesignMesh, type DesignState } from './share.ts';
@@ -58,6 +59,7 @@ export class App {
   );
   private readonly viewer = new Viewer(element('viewport', HTMLElement));
   private readonly form = new ParamsForm();
+  private readonly preparation = new PrepareControl();
   private readonly status = new StatusView();
   private readonly outputs = new Outputs();
   private readonly examples = new ExamplePicker((id) => void this.openExample(id));
@@ -94,6 +96,7 @@ export class App {
     this.exportObjButton.addEventListener('click', () => this.exportFile('obj'));
     this.shareButton.addEventListener('click', () => void this.share());
     this.form.onChange(() => this.parametersChanged());
+    this.preparation.onChange(() => void this.reopenPrepared());
     renderStats(this.statsBox, null);
     this.updateButtons();
   }
@@ -140,7 +143,12 @@ export class App {
       this.status.error(checked.message);
       return;
     }
-    await this.open({ kind: 'example', id: example.id }, checked.value, [], options);
+    const prepare = this.preparation.read(checked.value);
+    if (!prepare.ok) {
+      this.status.error(prepare.message);
+      return;
+    }
+    await this.open({ kind: 'example', id: example.id, prepare: prepare.value }, checked.value, [], options);
   }
 
   async openFile(file: File): Promise<void> {
@@ -150,13 +158,33 @@ export class App {
       this.status.error(params.message);
       return;
     }
+    const prepare = this.preparation.read(params.value);
+    if (!prepare.ok) {
+      this.status.error(prepare.message);
+      return;
+    }
     const bytes = new Uint8Array(await file.arrayBuffer());
-    await this.open({ kind: 'file', name: file.name, bytes }, params.value, [], { solve: true, note: '' });
+    await this.open({ kind: 'file', name: file.name, bytes, prepare: prepare.value }, params.value, [], { solve: true, note: '' });
+  }
+
+  // New subdivision levels: the design's mesh opened again, prepared with them.
+  private async reopenPrepared(): Promise<void> {
+    const design = this.machine.mesh?.design;
+    const params = this.form.read();
+    if (!design || !params.ok) return;
+    const prepare = this.preparation.read(params.value);
+    if (!prepare.ok) {
+      this.status.error(prepare.message);
+      return;
+    }
+    this.editor.forgetPaint(); // painted on the previous mesh
+    await this.open({ ...design, prepare: prepare.value }, params.value, [], { solve: true, note: '' });
   }
 
   async openState(state: DesignState, note: string, fromLink: boolean): Promise<void> {
     this.editor.adopt(state);
     this.form.write(state.params);
+    this.preparation.show(state.mesh);
     if (state.fabrication) this.fabrication.write(state.fabrication);
     await this.open(state.mesh, state.params, state.history, { solve: true, note, fromLink });
   }
@@ -169,6 +197,7 @@ export class App {
     this.status.show(`${options.note ? `${options.note}: ` : ''}loading ${label}…`);
     const payload = example ? await payloadFromExample(example) : design.kind === 'file' ? await payloadFromFile(design.name, design.bytes) : null;
     if (!this.machine.isCurrentOpen(token)) return; // a later open won
+    if (payload?.ok && design.prepare) payload.value.prepare = { ...design.prepare };
     if (!payload || !payload.ok) {
       this.machine.abandonOpen(token);
       this.failOpen(payload ? payload.message : 'nothing to open');

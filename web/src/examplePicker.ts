@@ -51,4 +51,7 @@ export function showMeshInfo(label: string, info: MeshInfo): void {
   const cleanup = element('mesh-cleanup', HTMLParagraphElement);
   cleanup.textContent = info.cleanup.length > 0 ? `Repaired on load: ${info.cleanup.join('; ')}.` : '';
   cleanup.hidden = info.cleanup.length === 0;
+  const prepared = element('mesh-prepared', HTMLParagraphElement);
+  prepared.textContent = info.prepared.length > 0 ? `Prepared for the panels: ${info.prepared.join('; ')}.` : '';
+  prepared.hidden = info.prepared.length === 0;
 }

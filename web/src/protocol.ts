@@ -5,13 +5,18 @@ import type { FabricationParams, MeshInfo, Problems, Progress, RemeshParams, She
 
 // What the worker loads: file bytes for the core's readers (OBJ, OFF, STL, PLY), a triangle
 // soup from three.js (glTF/GLB), or a generated surface.
-export type MeshPayload =
+export type MeshPayload = (
   | { kind: 'bytes'; name: string; bytes: Uint8Array }
   | { kind: 'arrays'; name: string; positions: Float64Array; indices: Uint32Array }
   | { kind: 'shape'; name: string; triangles: number }
   // NURBS surfaces (JSON of SurfaceSet) tessellated by the core, with a triangle soup beside
   // them (a Rhino file: web/src/rhino/).
-  | { kind: 'surfaces'; name: string; surfacesJson: string; positions: Float64Array; indices: Uint32Array };
+  | { kind: 'surfaces'; name: string; surfacesJson: string; positions: Float64Array; indices: Uint32Array }
+) & {
+  // Applied right after the load (Session.prepare): subdivision, then the resolution the panel
+  // count needs. Part of the payload, so a worker restart prepares the same mesh again.
+  prepare?: { panels: number; subdivide: number };
+};
 
 // One solve of a chain: the parameters and the painted density field (brush/densityField.ts
 // levels, one per vertex of the loaded mesh; null: none), set in the session before it.

@@ -16,7 +16,7 @@ import { decodeBase64url, encodeBase64url } from './base64url.ts';
 import { findExample } from './examples.ts';
 import { fabricationOrDefault, type FabricationSettings } from './fabricationParams.ts';
 import { checkPaintFields, checkPaintTable, paintEntries, type PaintFields } from './paintFields.ts';
-import { failure, validateParams, type Checked, type DesignParams } from './params.ts';
+import { failure, LIMITS, validateParams, type Checked, type DesignParams } from './params.ts';
 
 export const SHARE_VERSION = 1;
 // The hash, "#v1=" included: Chromium's URL limit is 2,097,152 characters, and the page's own
@@ -31,7 +31,32 @@ const MAX_JSON_BYTES = 64 * 1024;
 const MAX_FILE_NAME = 200;
 const HASH_PREFIX = `v${SHARE_VERSION}=`;
 
-export type DesignMesh = { kind: 'example'; id: string } | { kind: 'file'; name: string; bytes: Uint8Array };
+// How the loaded mesh was prepared for panelling (Session.prepare): subdivision levels, and the
+// panel count the resolution was chosen for. Recorded when the mesh is opened, so a link or a
+// reload prepares the very same mesh whatever the panel count is later; absent (links made
+// before this): the mesh as loaded.
+export interface MeshPrepare {
+  panels: number;
+  subdivide: number;
+}
+export const MAX_SUBDIVIDE = 4;
+
+export type DesignMesh = ({ kind: 'example'; id: string } | { kind: 'file'; name: string; bytes: Uint8Array }) & { prepare?: MeshPrepare };
+
+// A mesh's preparation from a link or the stored session: absent, or exactly {panels, subdivide}.
+export function checkPrepare(value: unknown, where: string): Checked<MeshPrepare | undefined> {
+  if (value === undefined) return { ok: true, value: undefined };
+  if (!isRecord(value)) return failure(`${where}: the mesh's preparation is not an object`);
+  for (const key of Object.keys(value)) if (key !== 'panels' && key !== 'subdivide') return failure(`${where}: the mesh's preparation has an unknown field "${key.slice(0, 40)}"`);
+  const { panels, subdivide } = value;
+  if (typeof panels !== 'number' || !Number.isInteger(panels) || panels < LIMITS.panels.min || panels > LIMITS.panels.max) return failure(`${where}: the mesh's preparation names no valid panel count`);
+  if (typeof subdivide !== 'number' || !Number.isInteger(subdivide) || subdivide < 0 || subdivide > MAX_SUBDIVIDE) return failure(`${where}: subdivision levels must be 0 to ${MAX_SUBDIVIDE}`);
+  return { ok: true, value: { panels, subdivide } };
+}
+
+export function prepareJson(mesh: DesignMesh): { prepare?: MeshPrepare } {
+  return mesh.prepare ? { prepare: { panels: mesh.prepare.panels, subdivide: mesh.prepare.subdivide } } : {};
+}
 
 export interface DesignState {
   mesh: DesignMesh;
@@ -67,7 +92,7 @@ export function checkFileName(value: unknown): Checked<string> {
 
 // The binary payload (before compression).
 export function encodePayload(state: DesignState): Uint8Array {
-  const meshJson = state.mesh.kind === 'example' ? { example: state.mesh.id } : { file: state.mesh.name, size: state.mesh.bytes.length };
+  const meshJson = { ...(state.mesh.kind === 'example' ? { example: state.mesh.id } : { file: state.mesh.name, size: state.mesh.bytes.length }), ...prepareJson(state.mesh) };
   const paint = paintEntries(state.params, state.history, state.paint);
   const paintJson = paint.length > 0 ? { paint: paint.map(({ key, field }) => ({ key, vertices: field.length })) } : {};
   const json = new TextEncoder().encode(JSON.stringify({ v: SHARE_VERSION, mesh: meshJson, params: state.params, history: state.history, ...(state.fabrication ? { fabrication: state.fabrication } : {}), ...paintJson }));
@@ -199,6 +224,9 @@ export function decodePayload(payload: Uint8Array, limits: DecodeLimits): Checke
   } else {
     return failure('the link names no mesh');
   }
+  const prepare = checkPrepare(meshValue.prepare, 'in the link');
+  if (!prepare.ok) return prepare;
+  if (prepare.value) mesh.prepare = prepare.value;
   const checked = checkParamsAndHistory(parsed.params, parsed.history, 'the link');
   if (!checked.ok) return checked;
   const fabrication = optionalFabrication(parsed.fabrication, 'the link');

@@ -68,6 +68,14 @@ function checkedText(text: string, what: string): string {
 }
 
 function loadInto(target: Session, mesh: MeshPayload): MeshInfo {
+  const loaded = loadAsIs(target, mesh);
+  if (!mesh.prepare) return loaded;
+  // What the load said (a Rhino file's surfaces, say) stays; the counts and notes are now the
+  // prepared mesh's.
+  return { ...loaded, ...checked<MeshInfo>(target.prepare(mesh.prepare.panels, mesh.prepare.subdivide), 'preparing the mesh') };
+}
+
+function loadAsIs(target: Session, mesh: MeshPayload): MeshInfo {
   switch (mesh.kind) {
     case 'bytes':
       return checked<MeshInfo>(target.loadMesh(mesh.name, mesh.bytes), 'reading the mesh');
