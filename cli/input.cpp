@@ -30,26 +30,18 @@ LoadedInput load_input(const std::string& path) {
 
 void subdivide_input(LoadedInput& in, const SubdivisionRequest& request) {
   if (request.levels <= 0) return;
-  std::vector<int> polygon(in.clean.face_source.size());
-  for (size_t f = 0; f < polygon.size(); ++f) {
-    const auto source = static_cast<size_t>(in.clean.face_source[f]);
-    polygon[f] = source < in.raw.source_polygon.size() ? in.raw.source_polygon[source] : static_cast<int>(source);
-  }
-  const PolyMesh control = merge_polygons(in.clean.mesh, polygon);
-  const bool loop = control.all_triangles();
-  const std::vector<VertexPair> creases = crease_edges(control, request.crease_angle_deg);
-  const TriMesh fine =
-      loop ? loop_subdivide(in.clean.mesh, request.levels, creases) : catmull_clark(control, request.levels, creases);
+  const std::vector<int> polygon = cleaned_face_polygons(in.clean.face_source, in.raw.source_polygon);
+  const ControlSubdivision fine = subdivide_control_mesh(in.clean.mesh, polygon, request.levels, request.crease_angle_deg);
   SubdivisionInfo& info = in.subdivision;
   info.levels = request.levels;
-  info.scheme = scheme_name(loop ? SubdivisionScheme::Loop : SubdivisionScheme::CatmullClark);
+  info.scheme = scheme_name(fine.scheme);
   info.crease_angle_deg = request.crease_angle_deg;
-  info.control_vertices = control.num_vertices();
-  info.control_faces = control.num_faces();
-  info.crease_edges = static_cast<int>(creases.size());
-  info.triangles = fine.num_faces();
+  info.control_vertices = fine.control_vertices;
+  info.control_faces = fine.control_faces;
+  info.crease_edges = fine.crease_edges;
+  info.triangles = fine.mesh.num_faces();
   const CleanReport file_report = in.clean.report;
-  in.clean = clean_mesh(fine);
+  in.clean = clean_mesh(fine.mesh);
   in.clean.report = file_report;
 }
 

@@ -7,6 +7,7 @@
 #include "core/fabricate/parts_list.h"
 #include "core/mesh/clean.h"
 #include "core/mesh/mesh_io.h"
+#include "core/mesh/poly_mesh.h"
 #include "core/panels/panel_export.h"
 #include "core/quality/planarity.h"
 #include "core/quality/report_json.h"
@@ -66,11 +67,7 @@ std::string Session::load(const std::string& name, TriMesh raw, int input_triang
   CleanMesh clean = clean_mesh(raw, clean_options);
   MeshTopology topology = build_topology(clean.mesh);
   // The file's polygon of each cleaned triangle (a subdivision's control faces, prepare()).
-  std::vector<int> face_polygon(clean.face_source.size());
-  for (size_t f = 0; f < face_polygon.size(); ++f) {
-    const auto source = static_cast<size_t>(clean.face_source[f]);
-    face_polygon[f] = source < source_polygon.size() ? source_polygon[source] : static_cast<int>(source);
-  }
+  std::vector<int> face_polygon = cleaned_face_polygons(clean.face_source, source_polygon);
   // Everything built: only now replace the previous design.
   name_ = name;
   mesh_ = std::move(clean.mesh);

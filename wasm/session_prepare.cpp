@@ -6,11 +6,11 @@
 #include <vector>
 
 #include "core/mesh/clean.h"
-#include "core/mesh/poly_mesh.h"
 #include "core/mesh/topology.h"
 #include "core/prepare/prepare.h"
 #include "core/prepare/subdivision.h"
 #include "core/util/error.h"
+#include "core/util/with_commas.h"
 #include "wasm/guarded.h"
 #include "wasm/session.h"
 
@@ -21,12 +21,6 @@ namespace {
 // The page offers up to 4 levels (each makes 4x the faces); the core's cap on the result's
 // size still applies (kMaxSubdivisionTriangles) with its own message.
 constexpr int kMaxPageSubdivision = 4;
-
-std::string with_commas(long long n) {
-  std::string digits = std::to_string(n);
-  for (int i = static_cast<int>(digits.size()) - 3; i > 0; i -= 3) digits.insert(static_cast<size_t>(i), ",");
-  return digits;
-}
 
 }  // namespace
 
@@ -42,14 +36,12 @@ std::string Session::prepare(int panels, int subdivide) {
     TriMesh mesh = mesh_;
     std::vector<std::string> notes;
     if (subdivide > 0) {
-      const PolyMesh control = merge_polygons(mesh_, face_polygon_);
-      const bool loop = control.all_triangles();
-      const TriMesh fine = loop ? loop_subdivide(mesh_, subdivide) : catmull_clark(control, subdivide);
-      mesh = clean_mesh(fine).mesh;
-      notes.push_back("subdivided " + with_commas(control.num_faces()) + (loop ? " triangles " : " polygons ") +
+      const ControlSubdivision fine = subdivide_control_mesh(mesh_, face_polygon_, subdivide);
+      mesh = clean_mesh(fine.mesh).mesh;
+      const bool loop = fine.scheme == SubdivisionScheme::Loop;
+      notes.push_back("subdivided " + with_commas(fine.control_faces) + (loop ? " triangles " : " polygons ") +
                       std::to_string(subdivide) + (subdivide == 1 ? " level" : " levels") + " (" +
-                      scheme_name(loop ? SubdivisionScheme::Loop : SubdivisionScheme::CatmullClark) + ") into " +
-                      with_commas(mesh.num_faces()) + " triangles");
+                      scheme_name(fine.scheme) + ") into " + with_commas(mesh.num_faces()) + " triangles");
     }
     PreparedSurface prepared = prepare_surface(mesh, panels, {});
     for (const std::string& m : prepared.report.messages) notes.push_back(m);

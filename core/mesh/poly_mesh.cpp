@@ -68,6 +68,15 @@ std::vector<int> outer_loop(const TriMesh& mesh, const int* faces, size_t count)
 
 }  // namespace
 
+std::vector<int> cleaned_face_polygons(const std::vector<int>& face_source, const std::vector<int>& source_polygon) {
+  std::vector<int> polygon(face_source.size());
+  for (size_t f = 0; f < polygon.size(); ++f) {
+    const auto source = static_cast<size_t>(face_source[f]);
+    polygon[f] = source < source_polygon.size() ? source_polygon[source] : static_cast<int>(source);
+  }
+  return polygon;
+}
+
 PolyMesh merge_polygons(const TriMesh& mesh, const std::vector<int>& face_polygon) {
   PolyMesh pm;
   pm.positions = mesh.positions;

@@ -42,6 +42,11 @@ PolyMesh poly_mesh_from_triangles(const TriMesh& mesh);
 // Indices are not checked here: face_polygon must have one entry per triangle.
 PolyMesh merge_polygons(const TriMesh& mesh, const std::vector<int>& face_polygon);
 
+// face_polygon for merge_polygons() after clean_mesh(): the file polygon of each cleaned
+// triangle, from CleanMesh::face_source and RawMesh::source_polygon (a triangle the reader
+// did not map, or every one when source_polygon is empty, is its own polygon).
+std::vector<int> cleaned_face_polygons(const std::vector<int>& face_source, const std::vector<int>& source_polygon);
+
 // Triangles of every face, keeping its orientation: quads split along the shorter diagonal
 // (the 0-2 one on a tie), larger faces as a fan from their first vertex.
 TriMesh triangulate(const PolyMesh& mesh);

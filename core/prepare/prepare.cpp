@@ -7,23 +7,13 @@
 
 #include "core/prepare/isotropic_remesh.h"
 #include "core/util/error.h"
+#include "core/util/with_commas.h"
 
 namespace ff {
 
 namespace {
 
 size_t at(int i) { return static_cast<size_t>(i); }
-
-// 12345678 -> "12,345,678".
-std::string with_commas(long long n) {
-  std::string digits = std::to_string(n < 0 ? -n : n);
-  std::string out;
-  for (size_t i = 0; i < digits.size(); ++i) {
-    if (i > 0 && (digits.size() - i) % 3 == 0) out += ',';
-    out += digits[i];
-  }
-  return n < 0 ? "-" + out : out;
-}
 
 std::string number(double x) {
   char buf[32];

@@ -293,4 +293,18 @@ TriMesh catmull_clark(const PolyMesh& mesh, int levels, const std::vector<Vertex
   return triangulate(catmull_clark_quads(mesh, levels, creases, max_triangles));
 }
 
+ControlSubdivision subdivide_control_mesh(const TriMesh& mesh, const std::vector<int>& face_polygon, int levels,
+                                          double crease_angle_deg) {
+  const PolyMesh control = merge_polygons(mesh, face_polygon);
+  const bool loop = control.all_triangles();
+  const std::vector<VertexPair> creases = crease_edges(control, crease_angle_deg);
+  ControlSubdivision out;
+  out.mesh = loop ? loop_subdivide(mesh, levels, creases) : catmull_clark(control, levels, creases);
+  out.scheme = loop ? SubdivisionScheme::Loop : SubdivisionScheme::CatmullClark;
+  out.control_vertices = control.num_vertices();
+  out.control_faces = control.num_faces();
+  out.crease_edges = static_cast<int>(creases.size());
+  return out;
+}
+
 }  // namespace ff

@@ -54,4 +54,17 @@ PolyMesh catmull_clark_quads(const PolyMesh& mesh, int levels, const std::vector
 TriMesh catmull_clark(const PolyMesh& mesh, int levels, const std::vector<VertexPair>& creases = {},
                       long long max_triangles = kMaxSubdivisionTriangles);
 
+// A file's surface as a control mesh: its polygons (merge_polygons(mesh, face_polygon))
+// subdivided `levels` levels, Loop when every polygon is a triangle, else Catmull-Clark, with
+// crease_edges(angle) kept sharp. What `flatfacet remesh --subdivide` and the page do.
+struct ControlSubdivision {
+  TriMesh mesh;  // triangulated, not yet cleaned
+  SubdivisionScheme scheme = SubdivisionScheme::Loop;
+  int control_vertices = 0;
+  int control_faces = 0;
+  int crease_edges = 0;
+};
+ControlSubdivision subdivide_control_mesh(const TriMesh& mesh, const std::vector<int>& face_polygon, int levels,
+                                          double crease_angle_deg = 180.0);
+
 }  // namespace ff
