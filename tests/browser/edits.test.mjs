@@ -5,21 +5,14 @@
 // a reload (the stored session) and a share link with the edits, opened in a fresh context, reproduces the OBJ byte for byte.
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
-import { zlibSync } from 'fflate';
-import { browserSuite, download, maxPlanarity, outcomes, parseObj, remesh, screenshot, setPanels, waitForDone, waitForSaved } from './harness.mjs';
+import { browserSuite, exampleLink, download, maxPlanarity, outcomes, parseObj, remesh, screenshot, setPanels, waitForDone, waitForSaved } from './harness.mjs';
 
 const suite = browserSuite();
 
 const PANELS = 60;
 const params = { panels: PANELS, seed: 1, weights: { euclidean: 1, l2: 1, l21: 1, boundary: 1 }, lloydIterations: 20, panelRounds: 30, seeding: 'farthest', teleport: true, singlePointNodes: false, optimizePlanes: true };
 
-function saddleLink() {
-  const text = new TextEncoder().encode(JSON.stringify({ v: 1, mesh: { example: 'saddle' }, params, history: [] }));
-  const payload = new Uint8Array(4 + text.length);
-  new DataView(payload.buffer).setUint32(0, text.length, true);
-  payload.set(text, 4);
-  return `${suite.url}#v1=${Buffer.from(zlibSync(payload)).toString('base64url')}`;
-}
+const saddleLink = () => exampleLink(suite.url, 'saddle', params);
 
 async function objOf(page) {
   return (await download(page, 'Export OBJ')).text;

@@ -7,6 +7,7 @@ import { createServer } from 'node:http';
 import { extname, join, normalize, resolve, sep } from 'node:path';
 import { after, before } from 'node:test';
 import { fileURLToPath } from 'node:url';
+import { zlibSync } from 'fflate';
 import { chromium } from 'playwright-core';
 
 export const repo = resolve(fileURLToPath(new URL('.', import.meta.url)), '..', '..');
@@ -111,6 +112,16 @@ export function browserSuite() {
     },
   };
   return suite;
+}
+
+// A share link (#v1=) that opens an example with these parameters: a fast start on a small
+// generated surface instead of the default example (a 50k-triangle tower, slow to solve here).
+export function exampleLink(url, example, params) {
+  const text = new TextEncoder().encode(JSON.stringify({ v: 1, mesh: { example }, params, history: [] }));
+  const payload = new Uint8Array(4 + text.length);
+  new DataView(payload.buffer).setUint32(0, text.length, true);
+  payload.set(text, 4);
+  return `${url}#v1=${Buffer.from(zlibSync(payload)).toString('base64url')}`;
 }
 
 export const status = (page) => page.getByRole('status');
