@@ -117,8 +117,10 @@ class Session {
   const QualityReport* quality();
   void forget_result();
   // Edits (session_edits.cpp): what set_params compares to tell an edit from a new solve
-  // (the parameters' JSON without `edits`, canonical), and the edit-only path.
-  static std::string solve_key(const std::string& params_json);
+  // (the parameters' JSON without `edits`, canonical, with `panels` as the target a count
+  // that is no change stands for: kept_target), and the edit-only path.
+  static std::string solve_key(const std::string& params_json, int panels);
+  int kept_target(const RemeshParams& params) const;
   bool apply_edits_only(const std::string& key, const RemeshParams& params);
 
   std::string name_;
