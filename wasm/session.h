@@ -72,6 +72,12 @@ class Session {
   std::vector<std::uint32_t> panel_indices() const;
   std::vector<std::uint32_t> panel_triangles() const;
   std::vector<std::uint32_t> panel_triangle_ids() const;
+  // Per cleaned triangle: its panel (index into panel_offsets' panels), -1 for none. One
+  // selected panel on the page names both its triangle (edits) and its panel (thickness).
+  std::vector<std::int32_t> face_panels() const;
+  // The density expression evaluated per vertex of the cleaned mesh, as the solver multiplies
+  // it with the paint (session_density.cpp); empty for no expression or one it refuses.
+  std::vector<double> expression_density(const std::string& expression) const;
   std::vector<double> corner_positions() const;
   std::vector<double> corner_planarity() const;
   std::string problems();

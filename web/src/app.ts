@@ -10,9 +10,10 @@ import { ExamplePicker, showMeshInfo } from './examplePicker.ts';
 import { designStem } from './exports.ts';
 import { FabricationPanel } from './fabricationPanel.ts';
 import { describeDesign, findExample } from './examples.ts';
-import { checkEditsFit } from './edits/panelEdits.ts';
+import { checkEditsFit, clusterCount } from './edits/panelEdits.ts';
 import { payloadFromExample, payloadFromFile } from './meshFiles.ts';
 import { Outputs } from './outputs.ts';
+import { PanelSelection } from './panelSelection.ts';
 import { rhinoLoaded } from './rhino/rhinoOpen.ts';
 import type { DesignParams } from './params.ts';
 import { ParamsForm } from './paramsForm.ts';
@@ -68,9 +69,13 @@ export class App {
   private readonly exportObjButton = element('export-obj', HTMLButtonElement);
   private readonly shareButton = element('share', HTMLButtonElement);
   private readonly statsBox = element('stats', HTMLDivElement);
+  // One selected panel for the panel edits and the per-panel thickness.
+  private readonly selection = new PanelSelection();
   private readonly fabrication = new FabricationPanel({
     solver: this.solver,
     viewer: this.viewer,
+    selection: this.selection,
+    panels: () => (this.machine.solving ? null : (this.machine.solved?.result ?? null)),
     stem: () => designStem(this.machine.mesh?.fileName ?? 'design'),
     error: (message) => this.status.error(message),
     settingsChanged: () => this.fabricationChanged(),
@@ -79,6 +84,8 @@ export class App {
   private readonly editor = new DesignEditor({
     form: this.form,
     viewer: this.viewer,
+    selection: this.selection,
+    requestExpression: (expression) => this.solver.expressionDensity(expression),
     error: (message) => this.status.error(message),
     canEdit: () => this.machine.canRemesh,
     solvedChain: () => this.machine.solved?.chain ?? null,
@@ -345,7 +352,7 @@ export class App {
     const summary = solvedSummary(result);
     this.status.show(summary.text, summary.warning ? 'info' : 'done');
     this.fabrication.panelsChanged(result.panelTriangles.length > 0);
-    this.editor.solved(solved.params, solved.chain);
+    this.editor.solved(solved.params, solved.chain, clusterCount(result.clusterIds));
     this.save({ mesh: mesh.design, params: solved.params, history: solved.chain ? solved.chain.slice(0, -1) : [], fabrication: this.fabrication.current });
     this.updateButtons();
   }
@@ -386,6 +393,9 @@ export class App {
       case 'fabricationFailed':
         this.fabrication.onFailed(message.job, message.message);
         return;
+      case 'expressionDensity':
+        this.editor.expressionAnswered(message.expression, message.values);
+        return;
     }
   }
 
@@ -419,6 +429,7 @@ export class App {
     if (solved) this.viewer.setClusters(solved.result.clusterIds);
     this.pendingNotice = null;
     this.fabrication.workerLost();
+    this.editor.workerReplaced();
     this.syncExampleSelect();
     this.status.resetProgress();
     const parts = [crash.meshKept ? CRASH_MESSAGE : `${CRASH_MESSAGE}, but without the mesh: open it again`];

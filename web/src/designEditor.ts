@@ -11,6 +11,7 @@ import { compactChain, type PanelEdit } from './edits/panelEdits.ts';
 import { History } from './history.ts';
 import { paintKeys, type PaintFields } from './paintFields.ts';
 import { sameParams, toRemeshParams, type DesignParams } from './params.ts';
+import type { PanelSelection } from './panelSelection.ts';
 import type { ParamsForm } from './paramsForm.ts';
 import type { SolveResult, SolveStep } from './protocol.ts';
 import type { DesignState } from './share.ts';
@@ -24,11 +25,16 @@ export interface DesignStep {
   // The chain of solves that reproduces this step's panels from the loaded mesh, once solved
   // (null: not solved, or solved in a way no chain reproduces).
   chain: DesignParams[] | null;
+  // The panels it has once solved ("Panels" shows it: after edits it is not params.panels,
+  // the count the solve targeted); null until then.
+  count: number | null;
 }
 
 export interface EditorHost {
   form: ParamsForm;
   viewer: Viewer;
+  selection: PanelSelection; // the page's one selected panel
+  requestExpression(expression: string): void; // its values per vertex, for the density map
   error(message: string): void;
   canEdit(): boolean; // a mesh loaded, none opening
   solvedChain(): DesignParams[] | null; // the chain of the result on show, if reproducible
@@ -55,12 +61,15 @@ export class DesignEditor {
     this.density = new DensityPanel({
       viewer: host.viewer,
       field: () => this.fields.get(host.form.paint) ?? null,
+      expression: () => host.form.densityExpression,
+      requestExpression: (expression) => host.requestExpression(expression),
       canPaint: () => host.canEdit() && host.viewer.surface !== null,
       strokeEnded: (field) => this.paint(isUniform(field) ? null : field),
       clear: () => this.paint(null),
     });
     this.panelEdits = new EditPanel({
       viewer: host.viewer,
+      selection: host.selection,
       result: () => (host.solving() ? null : host.result()),
       edits: () => host.form.edits,
       canEdit: () => host.canEdit() && !host.solving(),
@@ -83,6 +92,16 @@ export class DesignEditor {
     this.pinned = new Set();
   }
 
+  // The core's values of a density expression (DensityPanel.show asked for them).
+  expressionAnswered(expression: string, values: Float64Array): void {
+    this.density.expressionAnswered(expression, values);
+  }
+
+  // A new worker: questions to the old one go unanswered.
+  workerReplaced(): void {
+    this.density.surfaceChanged();
+  }
+
   // A design from a link or the stored session: its fields, before its parameters are used.
   adopt(state: DesignState): void {
     this.pinned = new Set(state.paint?.keys() ?? []);
@@ -91,18 +110,21 @@ export class DesignEditor {
 
   // The mesh of the design is shown: history starts over from its parameters.
   meshLoaded(params: DesignParams): void {
-    this.history.reset({ kind: 'open', params, chain: null });
+    this.history.reset({ kind: 'open', params, chain: null, count: null });
     this.density.surfaceChanged();
     this.panelEdits.surfaceChanged();
     this.updateButtons();
   }
 
-  // A solve finished: its chain reproduces the current step (or a step of its own when the
-  // parameters were not recorded yet, e.g. Enter before the field's change event).
-  solved(params: DesignParams, chain: DesignParams[] | null): void {
+  // A solve finished with `count` panels: its chain reproduces the current step (or a step of
+  // its own when the parameters were not recorded yet, e.g. Enter before the field's change
+  // event). "Panels" shows the count when the form shows this design.
+  solved(params: DesignParams, chain: DesignParams[] | null, count: number): void {
     const current = this.history.current;
-    if (current && sameParams(current.params, params)) this.history.replaceCurrent({ ...current, chain });
-    else if (!this.history.all.some((step) => sameParams(step.params, params))) this.history.push({ kind: 'params', params, chain });
+    if (current && sameParams(current.params, params)) this.history.replaceCurrent({ ...current, chain, count });
+    else if (!this.history.all.some((step) => sameParams(step.params, params))) this.history.push({ kind: 'params', params, chain, count });
+    const read = this.host.form.read();
+    if (read.ok && sameParams(read.value, params)) this.host.form.showCount(params.panels, count);
     this.prune();
     this.updateButtons();
   }
@@ -114,7 +136,7 @@ export class DesignEditor {
     const current = this.history.current;
     if (!current || current.kind !== 'edit' || current.chain !== null) return;
     const previous = this.history.discardCurrent();
-    if (previous) this.host.form.write(previous.params);
+    if (previous) this.host.form.write(previous.params, previous.count ?? undefined);
     this.updateButtons();
   }
 
@@ -156,7 +178,7 @@ export class DesignEditor {
     }
     const current = this.history.current;
     if (current && sameParams(current.params, read.value)) return; // the stroke changed nothing
-    this.history.push({ kind: 'paint', params: read.value, chain: null });
+    this.history.push({ kind: 'paint', params: read.value, chain: null, count: null });
     countOutcome('strokes');
     this.prune();
     this.updateButtons();
@@ -175,7 +197,7 @@ export class DesignEditor {
       this.host.error(read.message);
       return;
     }
-    this.history.push({ kind: 'edit', params: read.value, chain: null });
+    this.history.push({ kind: 'edit', params: read.value, chain: null, count: null });
     countOutcome('edits');
     this.prune();
     this.updateButtons();
@@ -185,8 +207,9 @@ export class DesignEditor {
   private formChanged(): void {
     const read = this.host.form.read();
     const current = this.history.current;
+    this.density.show(); // the expression may have changed
     if (!read.ok || !current || sameParams(current.params, read.value)) return;
-    this.history.push({ kind: 'params', params: read.value, chain: null });
+    this.history.push({ kind: 'params', params: read.value, chain: null, count: null });
     this.prune();
     this.updateButtons();
   }
@@ -207,7 +230,7 @@ export class DesignEditor {
   // when its chain is known. A step never solved (parameters typed, no Remesh) only goes back
   // in the form, as typing it would: the panels on show stay until Remesh.
   private restore(step: DesignStep): void {
-    this.host.form.write(step.params);
+    this.host.form.write(step.params, step.count ?? undefined);
     this.density.show();
     this.updateButtons();
     const shown = this.host.solvedChain();
