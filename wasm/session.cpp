@@ -281,14 +281,6 @@ std::vector<std::uint32_t> Session::panel_triangle_ids() const {
   return std::vector<std::uint32_t>(panel.begin(), panel.end());
 }
 
-std::vector<std::int32_t> Session::face_panels() const {
-  std::vector<std::int32_t> out(mesh_.triangles.size(), -1);
-  if (!remesher_) return out;
-  const std::vector<int>& face_panel = remesher_->panels().face_panel;
-  for (size_t f = 0; f < out.size() && f < face_panel.size(); ++f) out[f] = face_panel[f];
-  return out;
-}
-
 std::vector<double> Session::corner_positions() const {
   std::vector<double> out;
   if (!remesher_) return out;

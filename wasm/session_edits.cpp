@@ -113,6 +113,16 @@ std::vector<std::int32_t> Session::locked_panels() const {
   return std::vector<std::int32_t>(locked.begin(), locked.end());
 }
 
+// The selected panel on the page is a triangle; its panel in the panel mesh (glass pieces and
+// unbuilt clusters apart from clusterIds) is what the per-panel thickness names.
+std::vector<std::int32_t> Session::face_panels() const {
+  std::vector<std::int32_t> out(mesh_.triangles.size(), -1);
+  if (!remesher_) return out;
+  const std::vector<int>& face_panel = remesher_->panels().face_panel;
+  for (size_t f = 0; f < out.size() && f < face_panel.size(); ++f) out[f] = face_panel[f];
+  return out;
+}
+
 int Session::panel_count() const { return remesher_ ? remesher_->num_panels() : 0; }
 
 }  // namespace ff::wasm
