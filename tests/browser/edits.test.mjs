@@ -178,6 +178,8 @@ test('paint and edits in one link: a stroke, a split, a lock; the link gives the
     assert.equal(await page.getByLabel('Panel thickness').isDisabled(), false, 'the thickness input acts on it');
     assert.match(await page.locator('#fab-selected-panel').textContent(), new RegExp(`selected P${Number(first) + 1}\\b`));
     await screenshot(page, 'edits-one-selection');
+    await page.getByLabel('Panel thickness').scrollIntoViewIfNeeded();
+    await screenshot(page, 'edits-one-selection-thickness');
     await page.keyboard.press('Escape');
     assert.deepEqual(await selection(page), { edit: '', thickness: '' }, 'Esc clears the one selection');
     assert.equal(await page.getByLabel('Panel thickness').isDisabled(), true);
