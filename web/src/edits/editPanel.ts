@@ -163,7 +163,7 @@ export class EditPanel {
     else if (!result) this.hint.textContent = 'Solve first, then click a panel in the view to edit it.';
     else if (this.merging) this.hint.textContent = 'Click a neighbouring panel to merge the selected one with (Esc: stop).';
     else if (panel === null) this.hint.textContent = 'Click a panel in the view to select it (the density brush must be off).';
-    else this.hint.textContent = `Panel ${panel} selected${isLocked ? ' (locked: unlock it to split or merge)' : ''}. Esc: clear.`;
+    else this.hint.textContent = `${shown === null ? `Panel ${panel}` : `P${shown + 1}`} selected${isLocked ? ' (locked: unlock it to split or merge)' : ''}. Esc: clear.`;
     const count = (op: PanelEdit['op']): number => edits.filter((e) => e.op === op).length;
     const parts = [`${count('split')} split`, `${count('merge')} merged`, `${locked.size} locked`];
     const panels = result ? Math.max(0, result.panelOffsets.length - 1) : 0;
