@@ -95,6 +95,7 @@ PreparedSurface prepare_surface(const TriMesh& mesh, int panels, const std::vect
   if (explicit_length && options.mode == PrepareMode::Off)
     throw InputError("an edge length needs preparation on (it remeshes to that length)");
   if (options.distance_samples < 0) throw InputError("the number of distance samples must not be negative");
+  if (options.huge_triangles < 0) throw InputError("the triangle count that makes a mesh huge must not be negative");
 
   PreparedSurface out;
   PrepareReport& r = out.report;
@@ -144,7 +145,7 @@ PreparedSurface prepare_surface(const TriMesh& mesh, int panels, const std::vect
     target = edge_for_area(area / wanted);
     reason = " triangles each (" + number(dense_per_panel) + (dense > 1.0 ? " where the density is highest" : "") +
              " before; 20 to 100 work best)";
-  } else if (per_panel > kPrepareHugeTrianglesPerPanel && faces > kPrepareHugeTriangles) {
+  } else if (per_panel > kPrepareHugeTrianglesPerPanel && faces > options.huge_triangles) {
     target = edge_for_area(area / (static_cast<double>(panels) * kPrepareCoarsenTrianglesPerPanel));
     reason = " triangles each instead of " + with_commas(std::llround(per_panel)) +
              ": a mesh this fine costs time and memory the panels cannot show";

@@ -21,6 +21,14 @@
 
 namespace ff {
 
+// Policy numbers, public so callers and tests name them rather than repeat them.
+constexpr int kPrepareTargetTrianglesPerPanel = 50;
+constexpr int kPrepareMinTrianglesPerPanel = 20;
+constexpr int kPrepareCoarsenTrianglesPerPanel = 100;
+constexpr int kPrepareHugeTrianglesPerPanel = 1000;
+constexpr int kPrepareHugeTriangles = 400000;  // PrepareOptions::huge_triangles' default
+constexpr int kPrepareMaxTriangles = 2000000;  // the most the preparation makes (time and memory)
+
 enum class PrepareMode { Auto, Off };
 
 struct PrepareOptions {
@@ -30,6 +38,9 @@ struct PrepareOptions {
   // Samples per side of the distance check between the remeshed and the input surface
   // (core/quality/hausdorff.h; every vertex and centroid is sampled whatever this says).
   int distance_samples = 100000;
+  // The triangle count above which a mesh with more than kPrepareHugeTrianglesPerPanel per
+  // panel is coarsened (tests lower it to exercise coarsening on smaller meshes).
+  int huge_triangles = kPrepareHugeTriangles;
 };
 
 struct PrepareReport {
@@ -51,20 +62,12 @@ struct PreparedSurface {
   PrepareReport report;
 };
 
-// Policy numbers, public so callers and tests name them rather than repeat them.
-constexpr int kPrepareTargetTrianglesPerPanel = 50;
-constexpr int kPrepareMinTrianglesPerPanel = 20;
-constexpr int kPrepareCoarsenTrianglesPerPanel = 100;
-constexpr int kPrepareHugeTrianglesPerPanel = 1000;
-constexpr int kPrepareHugeTriangles = 400000;
-constexpr int kPrepareMaxTriangles = 2000000;  // the most the preparation makes (time and memory)
-
 // mesh: clean (clean_mesh). density: empty, one value > 0 per vertex or one per face (per
 // vertex wins when the counts coincide, as in the Remesher). Throws InputError for a panel
 // count below 1 or one that would need more than kPrepareMaxTriangles at 20 per panel, an
 // edge length that is not positive or would need more than that, or gives fewer triangles
-// than panels, an edge length with mode Off, a negative distance_samples, or a density of the
-// wrong size.
+// than panels, an edge length with mode Off, a negative distance_samples or huge_triangles, or
+// a density of the wrong size.
 PreparedSurface prepare_surface(const TriMesh& mesh, int panels, const std::vector<double>& density,
                                 const PrepareOptions& options = {});
 

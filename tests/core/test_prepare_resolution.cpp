@@ -19,6 +19,15 @@
 #include "panel_checks.h"
 #include "remesh_checks.h"
 
+// GCC says so with a macro, clang with __has_feature.
+#if defined(__SANITIZE_ADDRESS__)
+#define FF_TEST_SANITIZED 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(undefined_behavior_sanitizer)
+#define FF_TEST_SANITIZED 1
+#endif
+#endif
+
 namespace ff {
 namespace {
 
@@ -161,6 +170,45 @@ TEST(PrepareResolution, ReportsTheDistanceToTheInput) {
   PrepareOptions bad;
   bad.distance_samples = -1;
   EXPECT_THROW(prepare_surface(plane, 40, {}, bad), InputError);
+}
+
+// The huge path: more than 1000 triangles per panel and more than 400,000 triangles is
+// coarsened to about 100 per panel, keeping the topology and the surface, and solves to valid
+// panels. A fine torus of about 450,000 triangles at 100 panels; the sanitizer build (ten
+// times slower) runs the same path on 60,000 triangles at 40 panels, the threshold lowered to 50,000.
+TEST(PrepareResolution, CoarsensAHugeMeshAndSolves) {
+#ifdef FF_TEST_SANITIZED
+  const int triangles = 60000, panels = 40;
+  PrepareOptions options;
+  options.huge_triangles = 50000;
+  const double max_hausdorff = 0.05;  // 40 flat panels on a torus: coarse facets
+#else
+  const int triangles = 450000, panels = 100;
+  const PrepareOptions options;
+  const double max_hausdorff = 0.02;
+#endif
+  const TriMesh torus = make_torus(triangles, 10.0, 3.0);
+  ASSERT_GT(torus.num_faces(), options.huge_triangles);
+  ASSERT_GT(torus.num_faces(), kPrepareHugeTrianglesPerPanel * panels);
+  const PreparedSurface p = prepare_surface(torus, panels, {}, options);
+  ASSERT_TRUE(p.report.applied);
+  const double per_panel = static_cast<double>(p.mesh.num_faces()) / panels;
+  std::printf("[ prepare  ] torus %d triangles at %d panels: %s; %s\n", torus.num_faces(), panels,
+              p.report.messages[0].c_str(), p.report.messages.back().c_str());
+  EXPECT_TRUE(contains(p.report.messages, "coarsened"));
+  EXPECT_GE(per_panel, 0.7 * kPrepareCoarsenTrianglesPerPanel);
+  EXPECT_LE(per_panel, 1.4 * kPrepareCoarsenTrianglesPerPanel);
+  EXPECT_TRUE(test::summarize(p.mesh) == test::summarize(torus));
+  EXPECT_TRUE(test::consistently_oriented(p.mesh));
+  EXPECT_GE(test::edge_stats(p.mesh, p.report.target_edge).share(), 0.95);
+  EXPECT_GT(p.report.distance, 0.0);
+  EXPECT_LT(p.report.distance, 0.75 * p.report.target_edge);
+
+  RemeshParams params;
+  params.panels = panels;
+  Remesher r(p.mesh, params);
+  r.run();
+  EXPECT_TRUE(test::valid_panels(r, panels, max_hausdorff));
 }
 
 }  // namespace
