@@ -37,7 +37,7 @@ struct PrepareOptions {
   double feature_angle_deg = 44.0;  // creases kept by the remeshing (isotropic_remesh.h)
   // Samples per side of the distance check between the remeshed and the input surface
   // (core/quality/hausdorff.h; every vertex and centroid is sampled whatever this says).
-  int distance_samples = 100000;
+  int distance_samples = 20000;
   // The triangle count above which a mesh with more than kPrepareHugeTrianglesPerPanel per
   // panel is coarsened (tests lower it to exercise coarsening on smaller meshes).
   int huge_triangles = kPrepareHugeTriangles;
