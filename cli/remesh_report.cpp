@@ -50,6 +50,9 @@ std::string remesh_report_json(const RemeshRun& run) {
   j.value("applied", prep.applied);
   j.value("triangles_in", prep.triangles_in).value("triangles_out", prep.triangles_out);
   j.value("target_edge", prep.target_edge);
+  // The prepared surface's two-sided distance to the input: / bbox diagonal like the top-level
+  // "hausdorff", and absolute (both 0 when not applied).
+  j.value("hausdorff", prep.distance_relative).value("hausdorff_absolute", prep.distance);
   j.begin_array("messages");
   for (const std::string& m : prep.messages) j.value(nullptr, m);
   j.end_array();

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "core/prepare/isotropic_remesh.h"
+#include "core/quality/hausdorff.h"
 #include "core/util/error.h"
 #include "core/util/with_commas.h"
 
@@ -93,6 +94,8 @@ PreparedSurface prepare_surface(const TriMesh& mesh, int panels, const std::vect
     throw InputError("the edge length must be a positive number, got " + number(options.edge_length));
   if (explicit_length && options.mode == PrepareMode::Off)
     throw InputError("an edge length needs preparation on (it remeshes to that length)");
+  if (options.distance_samples < 0) throw InputError("the number of distance samples must not be negative");
+  if (options.huge_triangles < 0) throw InputError("the triangle count that makes a mesh huge must not be negative");
 
   PreparedSurface out;
   PrepareReport& r = out.report;
@@ -142,7 +145,7 @@ PreparedSurface prepare_surface(const TriMesh& mesh, int panels, const std::vect
     target = edge_for_area(area / wanted);
     reason = " triangles each (" + number(dense_per_panel) + (dense > 1.0 ? " where the density is highest" : "") +
              " before; 20 to 100 work best)";
-  } else if (per_panel > kPrepareHugeTrianglesPerPanel && faces > kPrepareHugeTriangles) {
+  } else if (per_panel > kPrepareHugeTrianglesPerPanel && faces > options.huge_triangles) {
     target = edge_for_area(area / (static_cast<double>(panels) * kPrepareCoarsenTrianglesPerPanel));
     reason = " triangles each instead of " + with_commas(std::llround(per_panel)) +
              ": a mesh this fine costs time and memory the panels cannot show";
@@ -175,6 +178,15 @@ PreparedSurface prepare_surface(const TriMesh& mesh, int panels, const std::vect
   if (out.mesh.num_faces() < panels)
     throw InputError("the remeshed surface has " + with_commas(out.mesh.num_faces()) + " triangles, fewer than the " +
                      panels_text + " asked for; use a shorter edge length");
+  // How far the remeshing moved the surface: vertices are projected onto the input, so the
+  // distance is the chord error of the new triangles (and of the input's, seen from them).
+  const HausdorffResult distance = hausdorff_distance(mesh, out.mesh, options.distance_samples);
+  const double diagonal = bbox_diagonal(mesh);
+  r.distance = distance.two_sided;
+  r.distance_relative = diagonal > 0.0 ? r.distance / diagonal : 0.0;
+  r.messages.push_back("the prepared surface is within " + number(r.distance) + " of the input (" +
+                       number(100.0 * r.distance_relative) + "% of its bounding-box diagonal, " +
+                       number(r.distance / target) + " of the target edge; sampled both ways)");
   return out;
 }
 

@@ -12,7 +12,8 @@
 // - otherwise the mesh is used as it is, bit for bit.
 // With a non-uniform density the count that decides is the one in the dense panels: the
 // triangles per panel divided by the area-weighted 90th percentile of density / mean density.
-// An explicit edge length always remeshes to it. Every decision is one sentence in the report.
+// An explicit edge length always remeshes to it. Every decision is one sentence in the report,
+// and a remeshed surface's distance to the input (sampled both ways) is measured and reported.
 #include <string>
 #include <vector>
 
@@ -20,12 +21,26 @@
 
 namespace ff {
 
+// Policy numbers, public so callers and tests name them rather than repeat them.
+constexpr int kPrepareTargetTrianglesPerPanel = 50;
+constexpr int kPrepareMinTrianglesPerPanel = 20;
+constexpr int kPrepareCoarsenTrianglesPerPanel = 100;
+constexpr int kPrepareHugeTrianglesPerPanel = 1000;
+constexpr int kPrepareHugeTriangles = 400000;  // PrepareOptions::huge_triangles' default
+constexpr int kPrepareMaxTriangles = 2000000;  // the most the preparation makes (time and memory)
+
 enum class PrepareMode { Auto, Off };
 
 struct PrepareOptions {
   PrepareMode mode = PrepareMode::Auto;
   double edge_length = 0.0;  // > 0: remesh to this target edge length (Auto mode only)
   double feature_angle_deg = 44.0;  // creases kept by the remeshing (isotropic_remesh.h)
+  // Samples per side of the distance check between the remeshed and the input surface
+  // (core/quality/hausdorff.h; every vertex and centroid is sampled whatever this says).
+  int distance_samples = 20000;
+  // The triangle count above which a mesh with more than kPrepareHugeTrianglesPerPanel per
+  // panel is coarsened (tests lower it to exercise coarsening on smaller meshes).
+  int huge_triangles = kPrepareHugeTriangles;
 };
 
 struct PrepareReport {
@@ -33,6 +48,10 @@ struct PrepareReport {
   int triangles_in = 0;
   int triangles_out = 0;
   double target_edge = 0.0;  // the remeshing target (0 when not applied)
+  // Two-sided sampled Hausdorff distance between the prepared and the input surface (0 when
+  // not applied): absolute, and divided by the input's bounding-box diagonal.
+  double distance = 0.0;
+  double distance_relative = 0.0;
   std::vector<std::string> messages;  // one human sentence each
 };
 
@@ -43,19 +62,12 @@ struct PreparedSurface {
   PrepareReport report;
 };
 
-// Policy numbers, public so callers and tests name them rather than repeat them.
-constexpr int kPrepareTargetTrianglesPerPanel = 50;
-constexpr int kPrepareMinTrianglesPerPanel = 20;
-constexpr int kPrepareCoarsenTrianglesPerPanel = 100;
-constexpr int kPrepareHugeTrianglesPerPanel = 1000;
-constexpr int kPrepareHugeTriangles = 400000;
-constexpr int kPrepareMaxTriangles = 2000000;  // the most the preparation makes (time and memory)
-
 // mesh: clean (clean_mesh). density: empty, one value > 0 per vertex or one per face (per
 // vertex wins when the counts coincide, as in the Remesher). Throws InputError for a panel
 // count below 1 or one that would need more than kPrepareMaxTriangles at 20 per panel, an
 // edge length that is not positive or would need more than that, or gives fewer triangles
-// than panels, an edge length with mode Off, or a density of the wrong size.
+// than panels, an edge length with mode Off, a negative distance_samples or huge_triangles, or
+// a density of the wrong size.
 PreparedSurface prepare_surface(const TriMesh& mesh, int panels, const std::vector<double>& density,
                                 const PrepareOptions& options = {});
 

@@ -229,6 +229,9 @@ p = r["prepare"]
 assert p["applied"] is True and p["triangles_in"] == 1952 and p["triangles_out"] == r["triangles"], p
 assert 20 <= p["triangles_out"] / 300 <= 100 and p["target_edge"] > 0, p
 assert p["messages"][0].startswith("refined 1,952 triangles to "), p["messages"]
+# The prepared surface's distance to the input: / bbox diagonal and absolute, and a sentence.
+assert 0 < p["hausdorff_absolute"] < 0.75 * p["target_edge"] and 0 < p["hausdorff"] < 0.01, p
+assert any(m.startswith("the prepared surface is within ") for m in p["messages"]), p["messages"]
 assert r["input_triangles"] == 1952 and r["topology_preserved"], r
 assert r["timings_s"]["prepare"] > 0
 PY
@@ -240,6 +243,7 @@ import json, sys
 off, length = (json.load(open(p)) for p in sys.argv[1:])
 assert off["prepare"]["applied"] is False and off["triangles"] == 1952, off["prepare"]
 assert off["prepare"]["messages"][0].startswith("preparation off"), off["prepare"]
+assert off["prepare"]["hausdorff"] == 0 and off["prepare"]["hausdorff_absolute"] == 0, off["prepare"]
 assert length["prepare"]["applied"] is True and length["prepare"]["target_edge"] == 0.5, length["prepare"]
 PY
 # Meshes with enough triangles per panel are untouched: the same OBJ bytes with and without.
