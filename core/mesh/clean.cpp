@@ -201,13 +201,16 @@ int split_nonmanifold_vertices(std::vector<Triangle>& tris, const HalfEdgeGroups
 
 // Non-manifold edges: refused with a NonManifoldError (naming the first edge and offering
 // the largest manifold part), or with largest_manifold_part cut there and only the largest
-// part kept (tris and kept, the input face of each, shrink to it).
-void keep_manifold_part(std::vector<Triangle>& tris, std::vector<int>& kept, const std::vector<Vec3>& positions,
-                        const CleanOptions& options, CleanReport& report) {
+// part kept (tris and kept, the input face of each, shrink to it). Returns, per vertex,
+// whether it was used before the cut (empty when nothing was cut), so the vertices of the
+// parts left out are not reported as unused ones.
+std::vector<char> keep_manifold_part(std::vector<Triangle>& tris, std::vector<int>& kept,
+                                     const std::vector<Vec3>& positions, const CleanOptions& options,
+                                     CleanReport& report) {
   const HalfEdgeGroups groups = detail::group_half_edges(tris, static_cast<int>(positions.size()));
   bool manifold = true;
   for (int g = 0; g < groups.num_groups() && manifold; ++g) manifold = groups.group_size(g) < 3;
-  if (manifold) return;
+  if (manifold) return {};
   const detail::ManifoldPart part = detail::largest_manifold_part(tris, positions);
   const int total = static_cast<int>(tris.size()), part_faces = static_cast<int>(part.faces.size());
   if (!options.largest_manifold_part) {
@@ -227,8 +230,13 @@ void keep_manifold_part(std::vector<Triangle>& tris, std::vector<int>& kept, con
     part_tris[k] = tris[static_cast<size_t>(part.faces[k])];
     part_kept[k] = kept[static_cast<size_t>(part.faces[k])];
   }
+  std::vector<char> used(positions.size(), 0);
+  for (const Triangle& t : tris) {
+    for (int v : t) used[static_cast<size_t>(v)] = 1;
+  }
   tris = std::move(part_tris);
   kept = std::move(part_kept);
+  return used;
 }
 
 std::string count_of(int n, const char* singular, const char* plural) {
@@ -322,7 +330,7 @@ CleanMesh clean_mesh(const TriMesh& input, const CleanOptions& options) {
   std::vector<Triangle> tris(filter.kept.size());
   for (size_t k = 0; k < tris.size(); ++k) tris[k] = welded[static_cast<size_t>(filter.kept[k])];
   welded = {};
-  keep_manifold_part(tris, filter.kept, input.positions, options, report);
+  const std::vector<char> used_before_cut = keep_manifold_part(tris, filter.kept, input.positions, options, report);
 
   const HalfEdgeGroups groups = detail::group_half_edges(tris, n);
 
@@ -344,7 +352,8 @@ CleanMesh clean_mesh(const TriMesh& input, const CleanOptions& options) {
   for (size_t v = 0; v < total; ++v) {
     if (new_index[v] < 0) {
       // Only input vertices can be unreferenced (a copy exists because a face uses it).
-      report.unreferenced_vertices_removed += v < static_cast<size_t>(n) && rep[v] == static_cast<int>(v) ? 1 : 0;
+      const bool cut_away = !used_before_cut.empty() && v < used_before_cut.size() && used_before_cut[v];
+      report.unreferenced_vertices_removed += v < static_cast<size_t>(n) && rep[v] == static_cast<int>(v) && !cut_away ? 1 : 0;
       continue;
     }
     new_index[v] = static_cast<int>(vertex_name.size());

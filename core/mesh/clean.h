@@ -40,7 +40,7 @@ struct CleanReport {
   int welded_vertices = 0;           // vertices merged into another one
   int degenerate_faces_dropped = 0;  // faces with a repeated vertex after welding
   int duplicate_faces_dropped = 0;   // faces with the same vertex set as an earlier face
-  int zero_area_faces = 0;           // kept (they carry no weight), counted for the report
+  int zero_area_faces = 0;           // left (sliver removal could not or was not to remove them)
   int slivers_removed = 0;           // sliver faces collapsed, flipped or dropped
   int holes_filled = 0;              // boundary loops filled (fill_holes_max_edges)
   int hole_faces_added = 0;          // faces those fillings added

@@ -283,6 +283,7 @@ TEST(Repair, TwoCubesOnAnEdgeNameItAndKeepOneClosedCube) {
   EXPECT_EQ(c.report.nonmanifold_edges_cut, 1);
   EXPECT_EQ(c.report.faces_outside_part, 12);
   EXPECT_EQ(c.report.parts_dropped, 1);
+  EXPECT_EQ(c.report.unreferenced_vertices_removed, 0);  // the other cube's are not "unused"
   for (int f = 12; f < 24; ++f) EXPECT_EQ(c.input_face_to_clean[static_cast<size_t>(f)], -1);
   const auto messages = c.report.messages();
   EXPECT_NE(std::find(messages.begin(), messages.end(),
