@@ -1,11 +1,11 @@
 // Repair on the page (issue 7): an uploaded OBJ of two cubes sharing an edge is refused with the
 // edge named and a "Use largest manifold part" button; the button opens one closed cube that
 // solves to valid planar panels and says what was dropped; a share link carries the choice (and
-// "Fill holes up to (edges)"), so a fresh context opens and solves the very same mesh. Holes are
-// filled only when asked. Run after `npm run build`.
+// "Fill holes up to (edges)"), so a fresh context opens and solves the very same mesh, and so
+// does the stored session. Holes are filled only when asked. Run after `npm run build`.
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
-import { browserSuite, download, errorAfter, exampleLink, maxPlanarity, parseObj, screenshot, solveAfter, waitForDone } from './harness.mjs';
+import { browserSuite, download, errorAfter, exampleLink, maxPlanarity, outcomes, parseObj, screenshot, solveAfter, waitForDone, waitForSaved } from './harness.mjs';
 
 const suite = browserSuite();
 
@@ -79,10 +79,12 @@ test('holes are filled only when asked, and the setting travels in a link', () =
     assert.equal(await fill.inputValue(), '0');
     await solveAfter(page, () => upload(page, 'openbox.obj', openBoxObj()));
     assert.doesNotMatch((await cleanupNote(page)) ?? '', /filled/);
+    const since = await outcomes(page);
     assert.equal(await solveAfter(page, () => fill.fill('4').then(() => fill.blur())), PANELS);
     assert.match(await cleanupNote(page), /filled 1 hole with 2 faces/);
     const obj = (await download(page, 'Export OBJ')).text;
     assert.ok(maxPlanarity(parseObj(obj)) <= 1e-9);
+    await waitForSaved(page, since, 2); // the load and the solve
 
     await page.getByRole('button', { name: 'Copy share link' }).click();
     await page.waitForFunction(() => location.hash.startsWith('#v1='));
@@ -93,4 +95,11 @@ test('holes are filled only when asked, and the setting travels in a link', () =
       assert.match(await cleanupNote(opened), /filled 1 hole with 2 faces/);
       assert.equal((await download(opened, 'Export OBJ')).text, obj);
     });
+
+    // The stored session opens the same filled mesh on the next visit.
+    await page.goto(suite.url);
+    assert.equal(await waitForDone(page), PANELS);
+    assert.equal(await page.getByLabel('Fill holes up to (edges)').inputValue(), '4');
+    assert.match(await cleanupNote(page), /filled 1 hole with 2 faces/);
+    assert.equal((await download(page, 'Export OBJ')).text, obj);
   }));
