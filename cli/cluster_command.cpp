@@ -57,8 +57,11 @@ std::string summary_json(const LoadedInput& in, const Remesher& r, double cluste
 
 int run_cluster(const std::vector<std::string>& argv) {
   const auto t_start = std::chrono::steady_clock::now();
-  const Args args = parse_args(
-      argv, {"panels", "seed", "weights", "density", "iterations", "labels", "summary", "seeding"}, {"no-teleport"});
+  std::set<std::string> with_value = {"panels", "seed", "weights", "density", "iterations", "labels", "summary", "seeding"};
+  with_value.insert(repair_option_names().begin(), repair_option_names().end());
+  std::set<std::string> switches = {"no-teleport"};
+  switches.insert(repair_switch_names().begin(), repair_switch_names().end());
+  const Args args = parse_args(argv, with_value, switches);
   if (args.positional.size() != 1) throw UsageError("expected exactly one INPUT mesh (see flatfacet --help)");
   if (!args.has("panels")) throw UsageError("--panels N is required");
   if (!args.has("labels")) throw UsageError("--labels LABELS.txt is required");
@@ -76,7 +79,7 @@ int run_cluster(const std::vector<std::string>& argv) {
   if (args.flags.count("no-teleport")) params.teleport_interval = 0;
   params.make_panels = false;  // the Lloyd phase only
 
-  const LoadedInput in = load_input(args.positional[0]);
+  const LoadedInput in = load_input(args.positional[0], parse_repair(args));
   if (args.has("density")) params.density = load_density(args.get("density"), in);
 
   const auto t_cluster = std::chrono::steady_clock::now();

@@ -16,14 +16,37 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 }
 }  // namespace
 
-LoadedInput load_input(const std::string& path) {
+const std::set<std::string>& repair_option_names() {
+  static const std::set<std::string> names = {"fill-holes"};
+  return names;
+}
+
+const std::set<std::string>& repair_switch_names() {
+  static const std::set<std::string> names = {"largest-part"};
+  return names;
+}
+
+CleanOptions parse_repair(const Args& args) {
+  CleanOptions o;
+  o.fill_holes_max_edges = static_cast<int>(args.get_int("fill-holes", 0, 0, 500));
+  o.largest_manifold_part = args.flags.count("largest-part") != 0;
+  return o;
+}
+
+LoadedInput load_input(const std::string& path, const CleanOptions& options) {
   LoadedInput in;
   in.path = path;
+  in.repair = options;
   auto t0 = std::chrono::steady_clock::now();
   in.raw = read_mesh_file(path);
   in.read_seconds = seconds_since(t0);
   t0 = std::chrono::steady_clock::now();
-  in.clean = clean_mesh(in.raw.mesh);
+  try {
+    in.clean = clean_mesh(in.raw.mesh, options);
+  } catch (const NonManifoldError& e) {
+    throw InputError(std::string(e.what()) + "; rerun with --largest-part to keep the largest manifold part (" +
+                     std::to_string(e.largest_part_faces) + " of " + std::to_string(e.total_faces) + " faces)");
+  }
   in.clean_seconds = seconds_since(t0);
   return in;
 }

@@ -1,6 +1,7 @@
 #pragma once
 // Loading what every command starts from: read the file, clean it, map a density file onto
 // the cleaned mesh. Shared by `cluster` and (later) `remesh`.
+#include <set>
 #include <string>
 #include <vector>
 
@@ -26,9 +27,18 @@ struct LoadedInput {
   double read_seconds = 0.0;
   double clean_seconds = 0.0;
   SubdivisionInfo subdivision;
+  CleanOptions repair;  // what was asked of clean_mesh()
 };
 
-LoadedInput load_input(const std::string& path);
+// `--fill-holes N` (0..500 edges, 0 = off) and `--largest-part` (remesh and cluster): how
+// clean_mesh() repairs the input.
+const std::set<std::string>& repair_option_names();  // options with a value
+const std::set<std::string>& repair_switch_names();
+CleanOptions parse_repair(const Args& args);
+
+// Reads and cleans. A mesh with non-manifold edges is refused with the edge named and the
+// offer of the largest manifold part ("rerun with --largest-part ... (N of M faces)").
+LoadedInput load_input(const std::string& path, const CleanOptions& options = {});
 
 // Replaces in.clean by the subdivided surface: the cleaned triangles merged back into the
 // file's polygons form the control mesh (Loop when all are triangles, else Catmull-Clark),

@@ -68,6 +68,7 @@ struct Options {
   SubdivisionRequest subdivision;
   std::string edits;    // a JSON file: the edits array (remesh_params_json.h)
   PrepareOptions prepare;
+  CleanOptions repair;  // --fill-holes, --largest-part
 };
 
 Options parse_options(const std::vector<std::string>& argv) {
@@ -76,7 +77,10 @@ Options parse_options(const std::vector<std::string>& argv) {
                                       "edge-length", "density-expr", "anisotropy"};
   with_value.insert(fabrication_option_names().begin(), fabrication_option_names().end());
   with_value.insert(subdivision_option_names().begin(), subdivision_option_names().end());
-  const Args args = parse_args(argv, with_value, {"single-point-nodes", "no-optimize", "no-teleport", "glass"});
+  with_value.insert(repair_option_names().begin(), repair_option_names().end());
+  std::set<std::string> switches = {"single-point-nodes", "no-optimize", "no-teleport", "glass"};
+  switches.insert(repair_switch_names().begin(), repair_switch_names().end());
+  const Args args = parse_args(argv, with_value, switches);
   if (args.positional.size() != 1) throw UsageError("expected exactly one INPUT mesh (see flatfacet --help)");
   if (!args.has("panels")) throw UsageError("--panels N is required");
   Options o;
@@ -149,6 +153,7 @@ Options parse_options(const std::vector<std::string>& argv) {
     if (o.density.empty()) throw UsageError("--density: empty file name");
   }
   o.subdivision = parse_subdivision(args);
+  o.repair = parse_repair(args);
   // A density file holds values per input vertex or triangle; the subdivided mesh has others.
   if (o.subdivision.levels > 0 && !o.density.empty()) throw UsageError("--density cannot be combined with --subdivide");
   return o;
@@ -161,7 +166,7 @@ int run_remesh(const std::vector<std::string>& argv) {
   Options o = parse_options(argv);
 
   RemeshTimings timings;
-  LoadedInput in = load_input(o.input);
+  LoadedInput in = load_input(o.input, o.repair);
   subdivide_input(in, o.subdivision);
   if (!o.density.empty()) o.params.density = load_density(o.density, in);
   if (!o.edits.empty()) {

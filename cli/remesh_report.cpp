@@ -25,6 +25,22 @@ void write_subdivision(JsonWriter& j, const SubdivisionInfo& s) {
   j.end_object();
 }
 
+// What clean-up repaired beyond "cleanup"'s sentences, as numbers, and what was asked.
+void write_repair(JsonWriter& j, const LoadedInput& in) {
+  const CleanReport& c = in.clean.report;
+  j.begin_object("repair");
+  j.value("welded_vertices", c.welded_vertices);
+  j.value("degenerate_faces_dropped", c.degenerate_faces_dropped).value("duplicate_faces_dropped", c.duplicate_faces_dropped);
+  j.value("slivers_removed", c.slivers_removed).value("zero_area_faces", c.zero_area_faces);
+  j.value("nonmanifold_vertices_split", c.nonmanifold_vertices_split).value("faces_flipped", c.faces_flipped);
+  j.value("fill_holes_max_edges", in.repair.fill_holes_max_edges);
+  j.value("holes_filled", c.holes_filled).value("hole_faces_added", c.hole_faces_added);
+  j.value("largest_part", in.repair.largest_manifold_part);
+  j.value("nonmanifold_edges_cut", c.nonmanifold_edges_cut).value("faces_outside_part", c.faces_outside_part);
+  j.value("parts_dropped", c.parts_dropped);
+  j.end_object();
+}
+
 }  // namespace
 
 std::string remesh_report_json(const RemeshRun& run) {
@@ -43,6 +59,7 @@ std::string remesh_report_json(const RemeshRun& run) {
   j.begin_array("cleanup");
   for (const std::string& m : run.input.clean.report.messages()) j.value(nullptr, m);
   j.end_array();
+  write_repair(j, run.input);
   write_subdivision(j, run.input.subdivision);
 
   const PrepareReport& prep = run.prepare;

@@ -52,6 +52,7 @@ EMSCRIPTEN_BINDINGS(flatfacet) {
       .function("loadShape", &Session::load_shape)
       .function("loadSurfaces", &load_surfaces)
       .function("prepare", &Session::prepare)
+      .function("setRepair", &Session::set_repair)
       .function("setParams", &Session::set_params)
       .function(
           "setDensity", +[](Session& s, const val& density) { return s.set_density(from_typed_array<double>(density)); })

@@ -21,6 +21,25 @@ export interface MeshInfo extends Status {
   bboxDiagonal: number;
   cleanup: string[]; // one sentence per repair applied ("welded 12 duplicate vertices")
   prepared: string[]; // what Session.prepare did and why ("refined 1,952 triangles to ...")
+  repair: MeshRepair;
+}
+
+// What the load repaired (Session.setRepair's options and the counts).
+export interface MeshRepair {
+  fillHoles: number;
+  largestPart: boolean;
+  slivers: number; // sliver faces removed (collapsed or flipped)
+  holesFilled: number;
+  holeFaces: number; // faces the fillings added
+  nonmanifoldEdgesCut: number; // largestPart: edges cut
+  facesDropped: number; // largestPart: faces outside the kept part
+  partsDropped: number;
+}
+
+// A load refused for non-manifold edges: the message names the first edge; setRepair(_, true)
+// and loading again keeps the largest manifold part, of `faces` of the mesh's `of` faces.
+export interface NonManifoldStatus extends Status {
+  largestPart?: { faces: number; of: number };
 }
 
 // Everything the designer sets; missing fields keep their defaults (DESIGN.md 4 / CLI).
@@ -152,6 +171,11 @@ export interface Session {
   // 20 triangles per panel; else the mesh stays as loaded). MeshInfo JSON, its cleanup saying
   // what was done and why; a Status on failure (the loaded mesh kept).
   prepare(panels: number, subdivide: number): string;
+  // How the next loads repair the mesh (issue 7): fill holes of at most `fillHoles` edges
+  // (0 = off, at most 500); with `largestPart`, a mesh with non-manifold edges is cut there and
+  // its largest manifold part kept. Without it such a load fails with a NonManifoldStatus.
+  // Status JSON; the mesh already loaded stays as it is.
+  setRepair(fillHoles: number, largestPart: boolean): string;
   // Sets parameters (JSON of RemeshParams). With a solve under way or finished, warm-starts from
   // the current clustering (panel count / weights); a changed seed starts over. Status JSON.
   setParams(paramsJson: string): string;

@@ -5,6 +5,7 @@
 #include <new>
 #include <string>
 
+#include "core/mesh/clean.h"
 #include "core/util/error.h"
 #include "core/util/json_writer.h"
 
@@ -21,6 +22,13 @@ template <typename F>
 std::string guarded(F&& f) {
   try {
     return f();
+  } catch (const NonManifoldError& e) {
+    // The page offers to open the largest manifold part instead (Session::set_repair).
+    JsonWriter j;
+    j.begin_object().value("ok", false).value("message", e.what());
+    j.begin_object("largestPart").value("faces", e.largest_part_faces).value("of", e.total_faces).end_object();
+    j.end_object();
+    return j.str();
   } catch (const InputError& e) {
     return status_json(false, e.what());
   } catch (const std::bad_alloc&) {

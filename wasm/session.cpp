@@ -64,7 +64,10 @@ Session::~Session() = default;
 std::string Session::load(const std::string& name, TriMesh raw, int input_triangles, const CleanOptions& clean_options,
                           const std::vector<int>& source_polygon) {
   const auto t0 = Clock::now();
-  CleanMesh clean = clean_mesh(raw, clean_options);
+  CleanOptions options = clean_options;
+  options.fill_holes_max_edges = repair_.fill_holes_max_edges;
+  options.largest_manifold_part = repair_.largest_manifold_part;
+  CleanMesh clean = clean_mesh(raw, options);
   MeshTopology topology = build_topology(clean.mesh);
   // The file's polygon of each cleaned triangle (a subdivision's control faces, prepare()).
   std::vector<int> face_polygon = cleaned_face_polygons(clean.face_source, source_polygon);
@@ -77,6 +80,7 @@ std::string Session::load(const std::string& name, TriMesh raw, int input_triang
   prepared_ = false;
   prepared_notes_.clear();
   cleanup_ = clean.report.messages();
+  clean_report_ = clean.report;
   params_.density.clear();  // per vertex of the previous mesh
   remesher_.reset();
   forget_result();
@@ -97,7 +101,9 @@ std::string Session::mesh_info_json() const {
   j.value("bboxDiagonal", bbox_diagonal(mesh_));
   j.begin_array("cleanup");
   for (const std::string& m : cleanup_) j.value(nullptr, m);
-  j.end_array().begin_array("prepared");
+  j.end_array();
+  write_repair_json(j);
+  j.begin_array("prepared");
   for (const std::string& m : prepared_notes_) j.value(nullptr, m);
   j.end_array().end_object();
   return j.str();

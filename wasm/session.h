@@ -22,6 +22,7 @@
 #include "core/mesh/tri_mesh.h"
 #include "core/quality/report.h"
 #include "core/remesher.h"
+#include "core/util/json_writer.h"
 
 namespace ff::wasm {
 
@@ -49,6 +50,12 @@ class Session {
   // triangles per panel, else untouched bit for bit). MeshInfo JSON whose "prepared" lists
   // what was done and why; on failure a Status and the loaded mesh stays as it was.
   std::string prepare(int panels, int subdivide);
+  // How the next loads repair the mesh (wasm/session_repair.cpp, core/mesh/clean.h): fill
+  // holes of at most `fill_holes` edges (0 = off, at most 500) and, with `largest_part`, cut
+  // a mesh with non-manifold edges there and keep its largest manifold part (otherwise such
+  // a load fails with a Status naming the edge and "largestPart": {"faces", "of"}). Status
+  // JSON; the mesh loaded already stays as it is.
+  std::string set_repair(int fill_holes, bool largest_part);
   // Status JSON. Warm-starts a solve under way or finished (Remesher::set_params). The
   // density field (set_density) stays as it is.
   std::string set_params(const std::string& params_json);
@@ -120,6 +127,7 @@ class Session {
   std::string load(const std::string& name, TriMesh raw, int input_triangles, const CleanOptions& clean_options = {},
                    const std::vector<int>& source_polygon = {});
   std::string mesh_info_json() const;
+  void write_repair_json(JsonWriter& j) const;  // MeshInfo's "repair" (session_repair.cpp)
   const QualityReport* quality();
   void forget_result();
   // Edits (session_edits.cpp): what set_params compares to tell an edit from a new solve
@@ -133,6 +141,8 @@ class Session {
   TriMesh mesh_;  // cleaned
   MeshTopology topology_;
   std::vector<std::string> cleanup_;   // what clean-up repaired, one sentence each
+  CleanOptions repair_;                // set_repair(): how loads repair the mesh
+  CleanReport clean_report_;           // of the loaded mesh
   std::vector<std::string> prepared_notes_;  // what prepare() did and why
   std::vector<int> face_polygon_;     // per cleaned triangle: its polygon in the file
   int input_triangles_ = 0;

@@ -7,7 +7,10 @@
 #include <numeric>
 #include <utility>
 
+#include "core/mesh/clean_local.h"
+#include "core/mesh/fill_holes.h"
 #include "core/mesh/half_edges.h"
+#include "core/mesh/manifold_part.h"
 #include "core/mesh/orient.h"
 #include "core/mesh/weld.h"
 #include "core/util/error.h"
@@ -196,6 +199,46 @@ int split_nonmanifold_vertices(std::vector<Triangle>& tris, const HalfEdgeGroups
   return split;
 }
 
+// Non-manifold edges: refused with a NonManifoldError (naming the first edge and offering
+// the largest manifold part), or with largest_manifold_part cut there and only the largest
+// part kept (tris and kept, the input face of each, shrink to it). Returns, per vertex,
+// whether it was used before the cut (empty when nothing was cut), so the vertices of the
+// parts left out are not reported as unused ones.
+std::vector<char> keep_manifold_part(std::vector<Triangle>& tris, std::vector<int>& kept,
+                                     const std::vector<Vec3>& positions, const CleanOptions& options,
+                                     CleanReport& report) {
+  const HalfEdgeGroups groups = detail::group_half_edges(tris, static_cast<int>(positions.size()));
+  bool manifold = true;
+  for (int g = 0; g < groups.num_groups() && manifold; ++g) manifold = groups.group_size(g) < 3;
+  if (manifold) return {};
+  const detail::ManifoldPart part = detail::largest_manifold_part(tris, positions);
+  const int total = static_cast<int>(tris.size()), part_faces = static_cast<int>(part.faces.size());
+  if (!options.largest_manifold_part) {
+    try {
+      detail::require_edge_manifold(groups, tris, positions);
+    } catch (const InputError& e) {
+      throw NonManifoldError(e.what(), part.nonmanifold_edges, part_faces, total);
+    }
+  }
+  report.nonmanifold_edges_cut = part.nonmanifold_edges;
+  report.faces_before_cut = total;
+  report.faces_outside_part = total - part_faces;
+  report.parts_dropped = part.sheets - 1;
+  std::vector<Triangle> part_tris(part.faces.size());
+  std::vector<int> part_kept(part.faces.size());
+  for (size_t k = 0; k < part.faces.size(); ++k) {
+    part_tris[k] = tris[static_cast<size_t>(part.faces[k])];
+    part_kept[k] = kept[static_cast<size_t>(part.faces[k])];
+  }
+  std::vector<char> used(positions.size(), 0);
+  for (const Triangle& t : tris) {
+    for (int v : t) used[static_cast<size_t>(v)] = 1;
+  }
+  tris = std::move(part_tris);
+  kept = std::move(part_kept);
+  return used;
+}
+
 std::string count_of(int n, const char* singular, const char* plural) {
   return std::to_string(n) + " " + (n == 1 ? singular : plural);
 }
@@ -213,6 +256,21 @@ std::vector<std::string> CleanReport::messages() const {
   }
   if (duplicate_faces_dropped > 0) {
     out.push_back("dropped " + count_of(duplicate_faces_dropped, "duplicate face", "duplicate faces"));
+  }
+  if (nonmanifold_edges_cut > 0) {
+    out.push_back("kept the largest manifold part (" + std::to_string(faces_before_cut - faces_outside_part) + " of " +
+                  count_of(faces_before_cut, "face", "faces") + "): cut at " +
+                  count_of(nonmanifold_edges_cut, "non-manifold edge", "non-manifold edges") + ", dropped " +
+                  count_of(faces_outside_part, "face", "faces") + " in " +
+                  count_of(parts_dropped, "other part", "other parts"));
+  }
+  if (slivers_removed > 0) {
+    out.push_back("removed " + count_of(slivers_removed, "sliver face", "sliver faces") +
+                  " (zero area or needle-thin) by collapsing or flipping edges");
+  }
+  if (holes_filled > 0) {
+    out.push_back("filled " + count_of(holes_filled, "hole", "holes") + " with " +
+                  count_of(hole_faces_added, "face", "faces"));
   }
   if (zero_area_faces > 0) {
     out.push_back("kept " + count_of(zero_area_faces, "face", "faces") + " with zero area (" +
@@ -245,6 +303,10 @@ CleanMesh clean_mesh(const TriMesh& input, const CleanOptions& options) {
   if (!std::isfinite(options.weld_tolerance) || options.weld_tolerance < 0.0) {
     throw InputError("the weld tolerance must be a finite number >= 0");
   }
+  if (options.fill_holes_max_edges < 0 || options.fill_holes_max_edges > detail::kMaxFillEdges) {
+    throw InputError("holes to fill must have 0 (off) to " + std::to_string(detail::kMaxFillEdges) + " edges, got " +
+                     std::to_string(options.fill_holes_max_edges));
+  }
   require_finite(input.positions);
   detail::require_valid_indices(input.triangles, n, /*require_distinct=*/false);
 
@@ -268,10 +330,9 @@ CleanMesh clean_mesh(const TriMesh& input, const CleanOptions& options) {
   std::vector<Triangle> tris(filter.kept.size());
   for (size_t k = 0; k < tris.size(); ++k) tris[k] = welded[static_cast<size_t>(filter.kept[k])];
   welded = {};
-  report.zero_area_faces = count_zero_area(tris, input.positions);
+  const std::vector<char> used_before_cut = keep_manifold_part(tris, filter.kept, input.positions, options, report);
 
   const HalfEdgeGroups groups = detail::group_half_edges(tris, n);
-  detail::require_edge_manifold(groups, tris, input.positions);
 
   std::vector<int> copy_origin;
   report.nonmanifold_vertices_split = split_nonmanifold_vertices(tris, groups, n, copy_origin);
@@ -291,7 +352,8 @@ CleanMesh clean_mesh(const TriMesh& input, const CleanOptions& options) {
   for (size_t v = 0; v < total; ++v) {
     if (new_index[v] < 0) {
       // Only input vertices can be unreferenced (a copy exists because a face uses it).
-      report.unreferenced_vertices_removed += v < static_cast<size_t>(n) && rep[v] == static_cast<int>(v) ? 1 : 0;
+      const bool cut_away = !used_before_cut.empty() && v < used_before_cut.size() && used_before_cut[v];
+      report.unreferenced_vertices_removed += v < static_cast<size_t>(n) && rep[v] == static_cast<int>(v) && !cut_away ? 1 : 0;
       continue;
     }
     new_index[v] = static_cast<int>(vertex_name.size());
@@ -321,6 +383,8 @@ CleanMesh clean_mesh(const TriMesh& input, const CleanOptions& options) {
     out.input_vertex_to_clean[v] = new_index[static_cast<size_t>(rep[v])];
   }
   out.vertex_source = std::move(vertex_name);
+  detail::repair_locally(out, options);
+  report.zero_area_faces = count_zero_area(out.mesh.triangles, out.mesh.positions);
   return out;
 }
 

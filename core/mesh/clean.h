@@ -1,13 +1,15 @@
 #pragma once
 // Clean-up between reading and remeshing: weld coincident vertices, drop degenerate and
 // duplicate faces, split non-manifold vertices, make the orientation consistent (closed
-// parts outward), drop unreferenced vertices, and refuse what we cannot handle
-// (non-manifold edges, non-orientable surfaces, non-finite coordinates, bad indices, no
-// faces left) with an InputError naming where. Everything done is counted in CleanReport.
+// parts outward), drop unreferenced vertices, remove sliver faces, fill small holes when
+// asked, and refuse what we cannot handle (non-manifold edges unless asked for the largest
+// manifold part, non-orientable surfaces, non-finite coordinates, bad indices, no faces
+// left) with an InputError naming where. Everything done is counted in CleanReport.
 #include <string>
 #include <vector>
 
 #include "core/mesh/tri_mesh.h"
+#include "core/util/error.h"
 
 namespace ff {
 
@@ -19,6 +21,17 @@ struct CleanOptions {
   double weld_tolerance = 0.0;
   // Orient closed components so their signed volume is positive (normals outward).
   bool orient_closed_outward = true;
+  // Remove sliver faces (area below 1e-12 diag^2, or a corner within 1e-9 diag of the
+  // opposite edge's line; diag: the bounding-box diagonal) by collapsing their shortest
+  // edge or flipping their longest, never changing the topology (core/mesh/slivers.h).
+  // A mesh without slivers is returned exactly as without this.
+  bool remove_slivers = true;
+  // Fill boundary loops (holes) of at most this many edges with a least-area triangulation
+  // (core/mesh/fill_holes.h); 0 = off, at most 500.
+  int fill_holes_max_edges = 0;
+  // Instead of refusing non-manifold edges (NonManifoldError), cut the mesh there (each
+  // fan of faces becomes its own sheet) and keep the manifold part of largest area.
+  bool largest_manifold_part = false;
 };
 
 struct CleanReport {
@@ -27,7 +40,16 @@ struct CleanReport {
   int welded_vertices = 0;           // vertices merged into another one
   int degenerate_faces_dropped = 0;  // faces with a repeated vertex after welding
   int duplicate_faces_dropped = 0;   // faces with the same vertex set as an earlier face
-  int zero_area_faces = 0;           // kept (they carry no weight), counted for the report
+  int zero_area_faces = 0;           // left (sliver removal could not or was not to remove them)
+  int slivers_removed = 0;           // sliver faces collapsed, flipped or dropped
+  int holes_filled = 0;              // boundary loops filled (fill_holes_max_edges)
+  int hole_faces_added = 0;          // faces those fillings added
+  // largest_manifold_part: the non-manifold edges cut, the faces then (after dropping
+  // degenerate and duplicate ones), and the faces and parts left out.
+  int nonmanifold_edges_cut = 0;
+  int faces_before_cut = 0;
+  int faces_outside_part = 0;
+  int parts_dropped = 0;
   int nonmanifold_vertices_split = 0;
   int faces_flipped = 0;  // to make orientation consistent
   int unreferenced_vertices_removed = 0;
@@ -51,6 +73,21 @@ struct CleanMesh {
   CleanReport report;
 };
 
+// What clean_mesh() throws for non-manifold edges without largest_manifold_part: the
+// message names the first edge (vertices, position, faces) and how many more there are;
+// the numbers let a caller offer the largest manifold part ("N of M faces").
+class NonManifoldError : public InputError {
+ public:
+  NonManifoldError(const std::string& message, int edges, int part_faces, int faces)
+      : InputError(message), nonmanifold_edges(edges), largest_part_faces(part_faces), total_faces(faces) {}
+  int nonmanifold_edges;
+  int largest_part_faces;  // faces of the part largest_manifold_part would keep
+  int total_faces;         // after dropping degenerate and duplicate faces
+};
+
+// Faces added to fill a hole stand, in face_source, for the face along the hole's first
+// edge (so per-face data has a value for them); input_face_to_clean names only the face
+// that came from each input face.
 CleanMesh clean_mesh(const TriMesh& input, const CleanOptions& options = {});
 
 }  // namespace ff

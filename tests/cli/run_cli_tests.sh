@@ -492,6 +492,72 @@ expect_error 2 "non-manifold edge" remesh "$tmp/nonmanifold.obj" --panels 1 --su
 "$bin" --help >"$tmp/help.txt"  # to a file: grep -q exiting early would SIGPIPE a long usage text
 grep -q "subdivide N" "$tmp/help.txt" && ok || bad "--help lacks --subdivide"
 
+# Repair (issue 7): non-manifold edges named with the offer of the largest manifold part,
+# --largest-part keeps it; --fill-holes N fills holes of at most N edges, only when asked.
+python3 - "$tmp/twocubes.obj" <<'PY'
+import sys
+quads = [(0, 3, 2, 1), (4, 5, 6, 7), (0, 1, 5, 4), (2, 3, 7, 6), (1, 2, 6, 5), (0, 4, 7, 3)]
+corners = [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0), (0, 0, 1), (1, 0, 1), (1, 1, 1), (0, 1, 1)]
+# The second cube at (1, 1, 0) uses the first's vertices 3 and 7 on the shared edge x = y = 1.
+second = {0: 3, 4: 7}
+with open(sys.argv[1], "w") as f:
+    for x, y, z in corners:
+        f.write(f"v {x} {y} {z}\n")
+    extra = [i for i in range(8) if i not in second]
+    for i in extra:
+        x, y, z = corners[i]
+        f.write(f"v {x + 1} {y + 1} {z}\n")
+        second[i] = 9 + extra.index(i)
+    for q in quads:
+        f.write("f " + " ".join(str(1 + i) for i in q) + "\n")
+    for q in quads:
+        f.write("f " + " ".join(str(second[i]) for i in q) + "\n")
+PY
+expect_error 2 "non-manifold edge between vertices [0-9]+ and [0-9]+ at \(1, 1, 0.5\): shared by 4 faces; rerun with --largest-part to keep the largest manifold part \(12 of 24 faces\)" \
+  remesh "$tmp/twocubes.obj" --panels 6 "${o[@]}"
+expect_error 2 "rerun with --largest-part" cluster "$tmp/twocubes.obj" --panels 6 --labels "$tmp/never.txt"
+"$bin" remesh "$tmp/twocubes.obj" --panels 6 --largest-part --out "$tmp/cube.obj" --report "$tmp/cube.json" 2>"$tmp/err.txt"
+code=$?
+[ "$code" = 0 ] || [ "$code" = 3 ] && python3 -c "
+import json, sys
+r = json.load(open(sys.argv[1]))
+p = r['repair']
+assert p['largest_part'] and p['nonmanifold_edges_cut'] == 1 and p['faces_outside_part'] == 12 and p['parts_dropped'] == 1, p
+assert r['components'] == 1 and r['topology_preserved'], r
+assert any(m.startswith('kept the largest manifold part (12 of 24 faces)') for m in r['cleanup']), r['cleanup']
+" "$tmp/cube.json" && ok || bad "remesh --largest-part (exit $code): $(cat "$tmp/err.txt")"
+"$bin" cluster "$tmp/twocubes.obj" --panels 4 --largest-part --labels "$tmp/cube.labels" &&
+  [ "$(wc -l <"$tmp/cube.labels")" = 24 ] && ok || bad "cluster --largest-part: one label per input triangle"
+rm -f "$tmp"/never.*
+# epcot.off (closed) without its first triangle: one hole of 3 edges.
+python3 - "$meshes/epcot.off" "$tmp/holed.off" <<'PY'
+import sys
+lines = [l for l in open(sys.argv[1]).read().split("\n") if l.strip() and not l.startswith("#")]
+nv, nf = (int(x) for x in lines[1].split()[:2])
+faces = lines[2 + nv:2 + nv + nf]
+with open(sys.argv[2], "w") as f:
+    f.write(f"OFF\n{nv} {nf - 1} 0\n" + "\n".join(lines[2:2 + nv] + faces[1:]) + "\n")
+PY
+for n in 0 2 3; do
+  "$bin" remesh "$tmp/holed.off" --panels 20 --prepare off --fill-holes "$n" --report "$tmp/holed$n.json" 2>/dev/null
+  python3 -c "
+import json, sys
+r, n = json.load(open(sys.argv[1])), int(sys.argv[2])
+p = r['repair']
+filled = 1 if n >= 3 else 0
+assert p['fill_holes_max_edges'] == n and p['holes_filled'] == filled and p['hole_faces_added'] == filled, p
+assert r['triangles'] == 1535 + filled, r['triangles']
+" "$tmp/holed$n.json" "$n" && ok || bad "remesh --fill-holes $n"
+done
+expect_error 2 "fill-holes.*501.*range" remesh "$tmp/holed.off" --panels 10 --fill-holes 501 "${o[@]}"
+python3 -c "
+import json, sys
+p = json.load(open(sys.argv[1]))['repair']
+assert p['slivers_removed'] == 0 and p['holes_filled'] == 0 and not p['largest_part'], p
+" "$tmp/r1.json" && ok || bad "report repair object of a clean mesh"
+grep -q -- "--fill-holes N" "$tmp/help.txt" && grep -q -- "--largest-part" "$tmp/help.txt" && ok ||
+  bad "--help lacks --fill-holes / --largest-part"
+
 # The usage text names the command.
 grep -q "remesh INPUT --panels N" "$tmp/help.txt" && ok || bad "--help lacks remesh"
 

@@ -234,11 +234,19 @@ TEST(CleanMesh, ZeroAreaFacesAreCountedAndKept) {
   TriMesh m = test::grid(1, 1);
   m.positions.emplace_back(0.5, 0.0, 0.0);  // on the edge from 0 to 1
   m.triangles.push_back({1, 0, 4});
-  const CleanMesh c = clean_mesh(m);
+  CleanOptions keep;
+  keep.remove_slivers = false;
+  const CleanMesh c = clean_mesh(m, keep);
   expect_clean(m, c);
   EXPECT_EQ(c.report.zero_area_faces, 1);
   EXPECT_EQ(c.mesh.num_faces(), 3);
   EXPECT_TRUE(contains(c.report.messages(), "kept 1 face with zero area (it carries no weight)"));
+  // By default the sliver goes: its edge 0-1 is flipped into 4-3 (test_repair.cpp).
+  const CleanMesh removed = clean_mesh(m);
+  expect_clean(m, removed);
+  EXPECT_EQ(removed.report.zero_area_faces, 0);
+  EXPECT_EQ(removed.report.slivers_removed, 1);
+  EXPECT_EQ(removed.mesh.num_faces(), 3);
 }
 
 TEST(CleanMesh, WeldTolerance) {
@@ -413,6 +421,7 @@ TEST(CleanMesh, SharedMeshesCleanToTheirTopology) {
     EXPECT_EQ(t.num_components, 1);
     EXPECT_EQ(euler_characteristic(c.mesh, t), euler.at(expected.file));
     EXPECT_EQ(c.report.messages(), std::vector<std::string>{});
+    EXPECT_EQ(c.report.slivers_removed, 0);  // none has slivers: cleaned exactly as before
     EXPECT_EQ(c.mesh.num_vertices(), raw.mesh.num_vertices());
     if (expected.closed) {
       EXPECT_GT(signed_volume(c.mesh), 0.0);

@@ -247,3 +247,21 @@ test("a mesh's preparation travels with it; a hostile one is refused by name", (
   refused(withPrepare([150, 1]), /not an object/);
   refused(withPrepare('refine'), /not an object/);
 });
+
+test("a mesh's repair travels with it; the default adds nothing; a hostile one is refused by name", () => {
+  const state = { mesh: { kind: 'example', id: 'YasIsland', repair: { fillHoles: 12, largestPart: true } }, params, history: [] };
+  const decoded = hashToState(stateToHash(state));
+  assert.ok(decoded.ok, decoded.message);
+  assert.deepEqual(decoded.value, state);
+  // No repair asked: the link is byte for byte the one made without the field.
+  const plain = { mesh: { kind: 'example', id: 'YasIsland' }, params, history: [] };
+  assert.equal(stateToHash({ ...plain, mesh: { ...plain.mesh, repair: { fillHoles: 0, largestPart: false } } }), stateToHash(plain));
+  const withRepair = (repair) => hashOf({ v: 1, mesh: { example: 'YasIsland', repair }, params, history: [] });
+  refused(withRepair({ fillHoles: 501, largestPart: false }), /holes to fill must have 0 to 500 edges/);
+  refused(withRepair({ fillHoles: -1, largestPart: false }), /holes to fill/);
+  refused(withRepair({ fillHoles: 2.5, largestPart: false }), /holes to fill/);
+  refused(withRepair({ fillHoles: 3, largestPart: 'yes' }), /largest manifold part/);
+  refused(withRepair({ fillHoles: 3 }), /largest manifold part/);
+  refused(withRepair({ fillHoles: 3, largestPart: true, script: 'alert(1)' }), /unknown field "script"/);
+  refused(withRepair([3, true]), /not an object/);
+});

@@ -18,6 +18,8 @@ import { rhinoLoaded } from './rhino/rhinoOpen.ts';
 import type { DesignParams } from './params.ts';
 import { ParamsForm } from './paramsForm.ts';
 import { PrepareControl } from './prepareControl.ts';
+import type { MeshRepair } from './meshRepair.ts';
+import { RepairControl } from './repairControl.ts';
 import type { SolveResult, WorkerResponse } from './protocol.ts';
 import { saveSession } from './sessionStore.ts';
 import { MAX_HISTORY, type DesignMesh, type DesignState } from './share.ts';
@@ -61,6 +63,9 @@ export class App {
   private readonly viewer = new Viewer(element('viewport', HTMLElement));
   private readonly form = new ParamsForm();
   private readonly preparation = new PrepareControl();
+  private readonly repair = new RepairControl();
+  // The last open sent to the worker: what "Use largest manifold part" opens again.
+  private lastOpen: { design: DesignMesh; params: DesignParams; history: DesignParams[]; options: OpenOptions } | null = null;
   private readonly status = new StatusView();
   private readonly outputs = new Outputs();
   private readonly examples = new ExamplePicker((id) => void this.openExample(id));
@@ -104,6 +109,7 @@ export class App {
     this.shareButton.addEventListener('click', () => void this.share());
     this.form.onChange(() => this.parametersChanged());
     this.preparation.onChange(() => void this.reopenPrepared());
+    this.repair.onChange(() => void this.reopenRepaired());
     renderStats(this.statsBox, null);
     this.updateButtons();
   }
@@ -155,7 +161,12 @@ export class App {
       this.status.error(prepare.message);
       return;
     }
-    await this.open({ kind: 'example', id: example.id, prepare: prepare.value }, checked.value, [], options);
+    const repair = this.repair.read();
+    if (!repair.ok) {
+      this.status.error(repair.message);
+      return;
+    }
+    await this.open(withRepair({ kind: 'example', id: example.id, prepare: prepare.value }, repair.value), checked.value, [], options);
   }
 
   async openFile(file: File): Promise<void> {
@@ -170,8 +181,13 @@ export class App {
       this.status.error(prepare.message);
       return;
     }
+    const repair = this.repair.read();
+    if (!repair.ok) {
+      this.status.error(repair.message);
+      return;
+    }
     const bytes = new Uint8Array(await file.arrayBuffer());
-    await this.open({ kind: 'file', name: file.name, bytes, prepare: prepare.value }, params.value, [], { solve: true, note: '' });
+    await this.open(withRepair({ kind: 'file', name: file.name, bytes, prepare: prepare.value }, repair.value), params.value, [], { solve: true, note: '' });
   }
 
   // New subdivision levels: the design's mesh opened again, prepared with them.
@@ -188,10 +204,33 @@ export class App {
     await this.open({ ...design, prepare: prepare.value }, params.value, [], { solve: true, note: '' });
   }
 
+  // New holes to fill: the design's mesh opened again with them (its largest-part choice kept).
+  private async reopenRepaired(): Promise<void> {
+    const design = this.machine.mesh?.design;
+    const params = this.form.read();
+    if (!design || !params.ok) return;
+    const repair = this.repair.read(design.repair?.largestPart ?? false);
+    if (!repair.ok) {
+      this.status.error(repair.message);
+      return;
+    }
+    this.editor.forgetPaint(); // painted on the previous mesh
+    await this.open(withRepair(design, repair.value), params.value, [], { solve: true, note: '' });
+  }
+
+  // "Use largest manifold part": the refused open again, keeping that part.
+  private async openLargestPart(): Promise<void> {
+    const last = this.lastOpen;
+    if (!last) return;
+    const repair = { fillHoles: last.design.repair?.fillHoles ?? 0, largestPart: true };
+    await this.open(withRepair(last.design, repair), last.params, last.history, { ...last.options, note: 'Keeping the largest manifold part' });
+  }
+
   async openState(state: DesignState, note: string, fromLink: boolean): Promise<void> {
     this.editor.adopt(state);
     this.form.write(state.params);
     this.preparation.show(state.mesh);
+    this.repair.show(state.mesh);
     if (state.fabrication) this.fabrication.write(state.fabrication);
     await this.open(state.mesh, state.params, state.history, { solve: true, note, fromLink });
   }
@@ -199,12 +238,15 @@ export class App {
   private async open(design: DesignMesh, params: DesignParams, history: DesignParams[], options: OpenOptions): Promise<void> {
     const { example, label, fileName, up } = describeDesign(design);
     const token = this.machine.beginOpen({ design, label, fileName, up, params, history, solve: options.solve });
+    this.lastOpen = { design, params, history, options };
+    this.repair.hideOffer();
     if (!options.fromLink) this.outputs.forgetLink();
     this.updateButtons();
     this.status.show(`${options.note ? `${options.note}: ` : ''}loading ${label}…`);
     const payload = example ? await payloadFromExample(example) : design.kind === 'file' ? await payloadFromFile(design.name, design.bytes) : null;
     if (!this.machine.isCurrentOpen(token)) return; // a later open won
     if (payload?.ok && design.prepare) payload.value.prepare = { ...design.prepare };
+    if (payload?.ok && design.repair) payload.value.repair = { ...design.repair };
     if (!payload || !payload.ok) {
       this.machine.abandonOpen(token);
       this.failOpen(payload ? payload.message : 'nothing to open');
@@ -374,7 +416,7 @@ export class App {
         this.onLoaded(message.job, message.info, message.positions, message.indices);
         return;
       case 'failed':
-        this.onFailed(message.job, message.message);
+        this.onFailed(message.job, message.message, message.largestPart);
         return;
       case 'progress':
         if (this.machine.solving?.job === message.job) this.status.showProgress(message.progress, message.elapsedSeconds);
@@ -400,9 +442,14 @@ export class App {
   }
 
   // The core refused a mesh or parameters: the previous design stays loaded and usable.
-  private onFailed(job: number, reason: string): void {
+  private onFailed(job: number, reason: string, largestPart?: { faces: number; of: number }): void {
     const what = this.machine.failed(job);
     if (what === null) return; // an answer to a request the page moved past
+    if (what === 'open' && largestPart && !this.machine.opening) {
+      // Non-manifold edges: offer the largest manifold part (issue 7).
+      this.repair.showOffer(largestPart.faces, largestPart.of, () => void this.openLargestPart());
+      reason = `${reason}. Use the largest manifold part (${largestPart.faces.toLocaleString('en-US')} of ${largestPart.of.toLocaleString('en-US')} faces)?`;
+    }
     if (what === 'open') {
       if (this.machine.opening) this.status.error(reason); // a later open goes on
       else this.failOpen(reason);
@@ -485,3 +532,8 @@ export class App {
   }
 }
 
+// The design's mesh with this repair (none: the field left out, as links before it had).
+function withRepair(design: DesignMesh, repair: MeshRepair | undefined): DesignMesh {
+  const { repair: _old, ...rest } = design;
+  return repair ? { ...rest, repair } : rest;
+}

@@ -1,6 +1,7 @@
 // The messages between the page and the solver worker. The worker owns the wasm Session; the
 // page only ever sees copies. Every request carries a job number and every answer repeats
 // it, so the page drops answers to jobs it has moved past (a cancelled solve, a replaced mesh).
+import type { MeshRepair } from './meshRepair.ts';
 import type { FabricationParams, MeshInfo, Problems, Progress, RemeshParams, SheetStats, SpreadNodes } from '@flatfacet/wasm';
 
 // What the worker loads: file bytes for the core's readers (OBJ, OFF, STL, PLY), a triangle
@@ -16,6 +17,9 @@ export type MeshPayload = (
   // Applied right after the load (Session.prepare): subdivision, then the resolution the panel
   // count needs. Part of the payload, so a worker restart prepares the same mesh again.
   prepare?: { panels: number; subdivide: number };
+  // How the load repairs the mesh (Session.setRepair; absent: no holes filled, non-manifold
+  // edges refused). Part of the payload for the same reason.
+  repair?: MeshRepair;
 };
 
 // One solve of a chain: the parameters and the painted density field (brush/densityField.ts
@@ -87,7 +91,8 @@ export type WorkerResponse =
   | { type: 'crashed'; message: string }
   | { type: 'loaded'; job: number; info: MeshInfo; positions: Float32Array; indices: Uint32Array }
   // A load or solve the core refused; the worker's previous mesh and result are intact.
-  | { type: 'failed'; job: number; message: string }
+  // largestPart: refused for non-manifold edges; the largest manifold part has `faces` of `of`.
+  | { type: 'failed'; job: number; message: string; largestPart?: { faces: number; of: number } }
   | { type: 'progress'; job: number; progress: Progress; elapsedSeconds: number }
   | { type: 'clusters'; job: number; clusterIds: Int32Array }
   | { type: 'solved'; job: number; result: SolveResult }

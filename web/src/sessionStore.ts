@@ -6,6 +6,7 @@
 import { findExample } from './examples.ts';
 import { failure, type Checked } from './params.ts';
 import { checkPaintFields, paintEntries } from './paintFields.ts';
+import { checkRepair, repairJson, type MeshRepair } from './meshRepair.ts';
 import { checkFileName, checkParamsAndHistory, checkPrepare, decodePayload, prepareJson, MAX_SHARED_PAINT_BYTES, optionalFabrication, type DesignMesh, type DesignState } from './share.ts';
 
 const DB_NAME = 'flatfacet';
@@ -19,7 +20,7 @@ const RECORD_VERSION = 2;
 // What `sessions` holds under KEY (version 1 of the page stored a share-link payload there).
 interface SessionRecord {
   v: typeof RECORD_VERSION;
-  mesh: ({ example: string } | { file: string; size: number; key: string }) & { prepare?: { panels: number; subdivide: number } };
+  mesh: ({ example: string } | { file: string; size: number; key: string }) & { prepare?: { panels: number; subdivide: number }; repair?: MeshRepair };
   params: unknown;
   history: unknown;
   fabrication?: unknown; // absent in sessions stored before fabrication came to the page
@@ -112,7 +113,7 @@ export async function saveSession(state: DesignState): Promise<SaveOutcome> {
   const key = mesh.kind === 'file' ? keyOf(mesh.name, mesh.bytes) : null;
   const record: SessionRecord = {
     v: RECORD_VERSION,
-    mesh: { ...(mesh.kind === 'example' ? { example: mesh.id } : { file: mesh.name, size: mesh.bytes.length, key: key! }), ...prepareJson(mesh) },
+    mesh: { ...(mesh.kind === 'example' ? { example: mesh.id } : { file: mesh.name, size: mesh.bytes.length, key: key! }), ...prepareJson(mesh), ...repairJson(mesh) },
     params: state.params,
     history: state.history,
     ...(state.fabrication ? { fabrication: state.fabrication } : {}),
@@ -168,6 +169,9 @@ function checkRecord(record: unknown, meshBytes: unknown): Checked<DesignState> 
   const prepare = checkPrepare(meshValue.prepare, 'in the stored session');
   if (!prepare.ok) return prepare;
   if (prepare.value) mesh.prepare = prepare.value;
+  const repair = checkRepair(meshValue.repair, 'in the stored session');
+  if (!repair.ok) return repair;
+  if (repair.value) mesh.repair = repair.value;
   const checked = checkParamsAndHistory(record.params, record.history, 'the stored session');
   if (!checked.ok) return checked;
   const fabrication = optionalFabrication(record.fabrication, 'the stored session');

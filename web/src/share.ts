@@ -15,6 +15,7 @@ import { Unzlib, zlibSync } from 'fflate';
 import { decodeBase64url, encodeBase64url } from './base64url.ts';
 import { findExample } from './examples.ts';
 import { fabricationOrDefault, type FabricationSettings } from './fabricationParams.ts';
+import { checkRepair, repairJson, type MeshRepair } from './meshRepair.ts';
 import { checkPaintFields, checkPaintTable, paintEntries, type PaintFields } from './paintFields.ts';
 import { failure, LIMITS, validateParams, type Checked, type DesignParams } from './params.ts';
 
@@ -41,7 +42,8 @@ export interface MeshPrepare {
 }
 export const MAX_SUBDIVIDE = 4;
 
-export type DesignMesh = ({ kind: 'example'; id: string } | { kind: 'file'; name: string; bytes: Uint8Array }) & { prepare?: MeshPrepare };
+// repair: how the mesh was repaired on opening (meshRepair.ts); absent: no repair asked.
+export type DesignMesh = ({ kind: 'example'; id: string } | { kind: 'file'; name: string; bytes: Uint8Array }) & { prepare?: MeshPrepare; repair?: MeshRepair };
 
 // A mesh's preparation from a link or the stored session: absent, or exactly {panels, subdivide}.
 export function checkPrepare(value: unknown, where: string): Checked<MeshPrepare | undefined> {
@@ -92,7 +94,7 @@ export function checkFileName(value: unknown): Checked<string> {
 
 // The binary payload (before compression).
 export function encodePayload(state: DesignState): Uint8Array {
-  const meshJson = { ...(state.mesh.kind === 'example' ? { example: state.mesh.id } : { file: state.mesh.name, size: state.mesh.bytes.length }), ...prepareJson(state.mesh) };
+  const meshJson = { ...(state.mesh.kind === 'example' ? { example: state.mesh.id } : { file: state.mesh.name, size: state.mesh.bytes.length }), ...prepareJson(state.mesh), ...repairJson(state.mesh) };
   const paint = paintEntries(state.params, state.history, state.paint);
   const paintJson = paint.length > 0 ? { paint: paint.map(({ key, field }) => ({ key, vertices: field.length })) } : {};
   const json = new TextEncoder().encode(JSON.stringify({ v: SHARE_VERSION, mesh: meshJson, params: state.params, history: state.history, ...(state.fabrication ? { fabrication: state.fabrication } : {}), ...paintJson }));
@@ -227,6 +229,9 @@ export function decodePayload(payload: Uint8Array, limits: DecodeLimits): Checke
   const prepare = checkPrepare(meshValue.prepare, 'in the link');
   if (!prepare.ok) return prepare;
   if (prepare.value) mesh.prepare = prepare.value;
+  const repair = checkRepair(meshValue.repair, 'in the link');
+  if (!repair.ok) return repair;
+  if (repair.value) mesh.repair = repair.value;
   const checked = checkParamsAndHistory(parsed.params, parsed.history, 'the link');
   if (!checked.ok) return checked;
   const fabrication = optionalFabrication(parsed.fabrication, 'the link');

@@ -33,8 +33,16 @@ let crashed = false;
 let crashAfterSteps: number | null = null; // test hook: counts down in the second solve
 let solvesFinished = 0;
 
-// A Status with ok false: the request failed, the session kept its mesh and result.
-class StatusError extends Error {}
+// A Status with ok false: the request failed, the session kept its mesh and result. A load
+// refused for non-manifold edges says how large its largest manifold part is.
+class StatusError extends Error {
+  constructor(
+    message: string,
+    readonly largestPart?: { faces: number; of: number },
+  ) {
+    super(message);
+  }
+}
 
 function post(message: WorkerResponse): void {
   scope.postMessage(message, transferablesOf(message));
@@ -57,7 +65,7 @@ function checked<T extends Status>(text: string, what: string): T {
   const parsed = JSON.parse(text) as unknown;
   if (typeof parsed !== 'object' || parsed === null || typeof (parsed as Status).ok !== 'boolean') throw new Error(`${what}: the core answered something that is not a status`);
   const status = parsed as T;
-  if (!status.ok) throw new StatusError(status.message || `${what} failed`);
+  if (!status.ok) throw new StatusError(status.message || `${what} failed`, (status as { largestPart?: { faces: number; of: number } }).largestPart);
   return status;
 }
 
@@ -68,6 +76,8 @@ function checkedText(text: string, what: string): string {
 }
 
 function loadInto(target: Session, mesh: MeshPayload): MeshInfo {
+  // Every load sets the repair, so a previous design's never carries over.
+  checked<Status>(target.setRepair(mesh.repair?.fillHoles ?? 0, mesh.repair?.largestPart ?? false), 'the repair options');
   const loaded = loadAsIs(target, mesh);
   if (!mesh.prepare) return loaded;
   // What the load said (a Rhino file's surfaces, say) stays; the counts and notes are now the
@@ -187,7 +197,7 @@ async function handleSolve(run: Run, fresh: boolean, chain: SolveStep[]): Promis
 function failWith(job: number, error: unknown): void {
   if (crashed) return;
   if (error instanceof StatusError) {
-    post({ type: 'failed', job, message: error.message });
+    post({ type: 'failed', job, message: error.message, ...(error.largestPart ? { largestPart: error.largestPart } : {}) });
     return;
   }
   crashed = true;

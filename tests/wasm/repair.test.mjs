@@ -1,0 +1,96 @@
+// Session.setRepair, the page's mesh repair (issue 7): a mesh with a non-manifold edge is
+// refused naming the edge and how large its largest manifold part is; with largestPart it
+// loads that part and solves to valid panels; holes are filled only when asked and small
+// enough; bad options are refused and change nothing.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { json, loadModule, maxPlanarity, parseObj, solve } from './module.mjs';
+
+const ff = await loadModule();
+
+// Two unit cubes sharing the edge x = y = 1 (the second uses the first's vertices 3 and 7).
+function twoCubesObj() {
+  const quads = [[0, 3, 2, 1], [4, 5, 6, 7], [0, 1, 5, 4], [2, 3, 7, 6], [1, 2, 6, 5], [0, 4, 7, 3]];
+  const corners = [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0, 0, 1], [1, 0, 1], [1, 1, 1], [0, 1, 1]];
+  const lines = corners.map(([x, y, z]) => `v ${x} ${y} ${z}`);
+  const second = { 0: 3, 4: 7 };
+  for (let i = 0; i < 8; ++i) {
+    if (i in second) continue;
+    const [x, y, z] = corners[i];
+    lines.push(`v ${x + 1} ${y + 1} ${z}`);
+    second[i] = lines.length;
+  }
+  for (const q of quads) lines.push(`f ${q.map((i) => i + 1).join(' ')}`);
+  for (const q of quads) lines.push(`f ${q.map((i) => second[i]).join(' ')}`);
+  return new TextEncoder().encode(lines.join('\n') + '\n');
+}
+
+// A closed cube as OFF without `open` of its 12 triangles: holes.
+function cubeOff(drop = []) {
+  const corners = [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0, 0, 1], [1, 0, 1], [1, 1, 1], [0, 1, 1]];
+  const quads = [[0, 3, 2, 1], [4, 5, 6, 7], [0, 1, 5, 4], [2, 3, 7, 6], [1, 2, 6, 5], [0, 4, 7, 3]];
+  const tris = quads.flatMap(([a, b, c, d]) => [[a, b, c], [a, c, d]]).filter((_, f) => !drop.includes(f));
+  const text = `OFF\n8 ${tris.length} 0\n${corners.map((p) => p.join(' ')).join('\n')}\n${tris.map((t) => `3 ${t.join(' ')}`).join('\n')}\n`;
+  return new TextEncoder().encode(text);
+}
+
+test('a non-manifold edge is named, with the size of the largest manifold part', () => {
+  const s = new ff.Session();
+  const refused = json(s.loadMesh('twocubes.obj', twoCubesObj()));
+  assert.equal(refused.ok, false);
+  assert.match(refused.message, /non-manifold edge between vertices \d+ and \d+ at \(1, 1, 0\.5\): shared by 4 faces/);
+  assert.deepEqual(refused.largestPart, { faces: 12, of: 24 });
+  s.delete();
+});
+
+test('with largestPart the load keeps one closed cube, says what it dropped, and solves', () => {
+  const s = new ff.Session();
+  assert.equal(json(s.setRepair(0, true)).ok, true);
+  const info = json(s.loadMesh('twocubes.obj', twoCubesObj()));
+  assert.equal(info.ok, true, info.message);
+  assert.equal(info.triangles, 12);
+  assert.equal(info.vertices, 8);
+  assert.equal(info.components, 1);
+  assert.equal(info.boundaryLoops, 0);
+  assert.equal(info.euler, 2);
+  assert.deepEqual(info.repair, { fillHoles: 0, largestPart: true, slivers: 0, holesFilled: 0, holeFaces: 0, nonmanifoldEdgesCut: 1, facesDropped: 12, partsDropped: 1 });
+  assert.ok(info.cleanup.some((line) => line.startsWith('kept the largest manifold part (12 of 24 faces)')), info.cleanup.join(' | '));
+  assert.equal(json(s.prepare(6, 0)).ok, true);
+  assert.equal(json(s.setParams(JSON.stringify({ panels: 6 }))).ok, true);
+  solve(s);
+  const report = json(s.reportJson());
+  assert.equal(report.invalid_panels, 0);
+  assert.equal(report.topology_preserved, true);
+  assert.ok(maxPlanarity(parseObj(s.objText())) <= 1e-9);
+  s.delete();
+});
+
+test('holes are filled only when asked and no larger than asked', () => {
+  const s = new ff.Session();
+  const holed = cubeOff([0, 1]); // the bottom square: one hole of 4 edges
+  const open = json(s.loadMesh('holed.off', holed));
+  assert.equal(open.ok, true, open.message);
+  assert.equal(open.boundaryLoops, 1);
+  assert.equal(open.repair.holesFilled, 0);
+  assert.equal(json(s.setRepair(3, false)).ok, true);
+  assert.equal(json(s.loadMesh('holed.off', holed)).boundaryLoops, 1, '4 edges > 3');
+  assert.equal(json(s.setRepair(4, false)).ok, true);
+  const closed = json(s.loadMesh('holed.off', holed));
+  assert.equal(closed.boundaryLoops, 0);
+  assert.equal(closed.euler, 2);
+  assert.equal(closed.triangles, 12);
+  assert.equal(closed.repair.holesFilled, 1);
+  assert.equal(closed.repair.holeFaces, 2);
+  s.delete();
+});
+
+test('bad repair options are refused and the next load is as before', () => {
+  const s = new ff.Session();
+  for (const edges of [-1, 501]) {
+    const status = json(s.setRepair(edges, false));
+    assert.equal(status.ok, false);
+    assert.match(status.message, /holes to fill must have 0 \(off\) to 500 edges/);
+  }
+  assert.equal(json(s.loadMesh('twocubes.obj', twoCubesObj())).ok, false, 'still refused: largestPart unchanged');
+  s.delete();
+});
