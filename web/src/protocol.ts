@@ -2,6 +2,9 @@
 // page only ever sees copies. Every request carries a job number and every answer repeats
 // it, so the page drops answers to jobs it has moved past (a cancelled solve, a replaced mesh).
 import type { FabricationParams, MeshInfo, Problems, Progress, RemeshParams, SheetStats, SpreadNodes } from '@flatfacet/wasm';
+import type { MeshPrepare } from './share.ts';
+
+export type { MeshPrepare };
 
 // What the worker loads: file bytes for the core's readers (OBJ, OFF, STL, PLY), a triangle
 // soup from three.js (glTF/GLB), or a generated surface.
@@ -15,8 +18,15 @@ export type MeshPayload = (
 ) & {
   // Applied right after the load (Session.prepare): subdivision, then the resolution the panel
   // count needs. Part of the payload, so a worker restart prepares the same mesh again.
-  prepare?: { panels: number; subdivide: number };
+  prepare?: MeshPrepare;
 };
+
+// What a re-preparation carries from the mesh before to the new one: the painted density
+// (levels per vertex; null: none) and the triangles the panel edits name (preparation.ts).
+export interface Carry {
+  paint: Int8Array | null;
+  faces: Int32Array;
+}
 
 // One solve of a chain: the parameters and the painted density field (brush/densityField.ts
 // levels, one per vertex of the loaded mesh; null: none), set in the session before it.
@@ -28,6 +38,9 @@ export interface SolveStep {
 export type WorkerRequest =
   // quiet: reload after a worker restart; answer without the display arrays.
   | { type: 'load'; job: number; mesh: MeshPayload; quiet: boolean }
+  // Prepares the loaded mesh again, from the mesh as loaded (Session.prepare), and carries
+  // `carry` over to it; answered like a load (`loaded`, with `carried`).
+  | { type: 'prepare'; job: number; prepare: MeshPrepare; carry: Carry }
   // fresh: start cold from the loaded mesh (Session.resetSolve), else warm-start from what the
   // session holds.
   // chain: parameter sets solved one after the other (a share link replays a warm-start chain).
@@ -81,7 +94,7 @@ export type WorkerResponse =
   // A wasm call threw something that is not a Status (out of memory, a trap, a bug): the
   // module's state is unknown, so the page replaces this worker.
   | { type: 'crashed'; message: string }
-  | { type: 'loaded'; job: number; info: MeshInfo; positions: Float32Array; indices: Uint32Array }
+  | { type: 'loaded'; job: number; info: MeshInfo; positions: Float32Array; indices: Uint32Array; carried?: Carry }
   // A load or solve the core refused; the worker's previous mesh and result are intact.
   | { type: 'failed'; job: number; message: string }
   | { type: 'progress'; job: number; progress: Progress; elapsedSeconds: number }
@@ -96,8 +109,10 @@ export type WorkerResponse =
 // (shared/notes/toolchain.md, note 7), so the worker transfers it without another copy.
 export function transferablesOf(message: WorkerResponse): Transferable[] {
   switch (message.type) {
-    case 'loaded':
-      return [message.positions.buffer, message.indices.buffer];
+    case 'loaded': {
+      const carried = message.carried ? [message.carried.faces.buffer, ...(message.carried.paint ? [message.carried.paint.buffer] : [])] : [];
+      return [message.positions.buffer, message.indices.buffer, ...carried];
+    }
     case 'clusters':
       return [message.clusterIds.buffer];
     case 'solved': {
