@@ -4,6 +4,7 @@
 // context prepares the same mesh and exports the very same OBJ. Run after `npm run build`.
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
+import { unzlibSync, zlibSync } from 'fflate';
 import { browserSuite, download, exampleLink, maxPlanarity, parseObj, remesh, screenshot, selectExample, setPanels, solveAfter, waitForDone } from './harness.mjs';
 
 const suite = browserSuite();
@@ -76,3 +77,86 @@ test('raising Panels prepares the mesh again: the note, valid panels, the same O
     assert.equal(await page.getByLabel('Panels', { exact: true }).inputValue(), '150');
     assert.equal((await download(page, 'Export OBJ')).text, obj150, 'undo gives back the very same panels');
   }));
+
+// A link's payload (web/src/share.ts): u32 JSON length | JSON | mesh bytes | paint bytes.
+function linkOf(url, json, meshBytes, paint) {
+  const text = new TextEncoder().encode(JSON.stringify(json));
+  const payload = new Uint8Array(4 + text.length + meshBytes.length + paint.length);
+  new DataView(payload.buffer).setUint32(0, text.length, true);
+  payload.set(text, 4);
+  payload.set(meshBytes, 4 + text.length);
+  payload.set(new Uint8Array(paint.buffer), 4 + text.length + meshBytes.length);
+  return `${url}#v1=${Buffer.from(zlibSync(payload)).toString('base64url')}`;
+}
+
+function readLink(href) {
+  const payload = unzlibSync(Buffer.from(href.slice(href.indexOf('#v1=') + 4), 'base64url'));
+  const length = new DataView(payload.buffer, payload.byteOffset).getUint32(0, true);
+  const json = JSON.parse(new TextDecoder().decode(payload.subarray(4, 4 + length)));
+  const paintAt = 4 + length + (json.mesh.size ?? 0);
+  return { json, paint: new Int8Array(payload.buffer, payload.byteOffset + paintAt, payload.length - paintAt) };
+}
+
+// web/src/brush/densityField.ts fieldKey, the content key a link's field must hash to.
+function fieldKey(field) {
+  let a = 0x811c9dc5 ^ field.length;
+  let b = 0x01000193 ^ Math.imul(field.length, 0x9e3779b1);
+  for (let i = 0; i < field.length; i++) {
+    const byte = field[i] & 0xff;
+    a = Math.imul(a ^ byte, 0x01000193);
+    b = Math.imul(b ^ byte, 0x5bd1e995);
+    b ^= b >>> 15;
+  }
+  return (a >>> 0).toString(16).padStart(8, '0') + (b >>> 0).toString(16).padStart(8, '0');
+}
+
+test('preparing again carries the paint (by position) and the panel edits to the new mesh', () => {
+  // A flat 12 x 12 grid of quads (288 triangles): 4 panels take it as it is; 20 need more.
+  const n = 12;
+  const lines = [];
+  for (let j = 0; j <= n; j++) for (let i = 0; i <= n; i++) lines.push(`v ${i} ${j} 0`);
+  for (let j = 0; j < n; j++) for (let i = 0; i < n; i++) {
+    const v = (a, b) => b * (n + 1) + a + 1;
+    lines.push(`f ${v(i, j)} ${v(i + 1, j)} ${v(i + 1, j + 1)} ${v(i, j + 1)}`);
+  }
+  const bytes = new TextEncoder().encode(`${lines.join('\n')}\n`);
+  // Painted: level 32 (4x density) where x > 6, none elsewhere.
+  const paint = Int8Array.from({ length: (n + 1) * (n + 1) }, (_, k) => (k % (n + 1) > 6 ? 32 : 0));
+  const key = fieldKey(paint);
+  const params = { ...quick, panels: 4, paint: key, edits: [{ op: 'lock', face: 0 }] };
+  const link = linkOf(suite.url, { v: 1, mesh: { file: 'grid.obj', size: bytes.length, prepare: { panels: 4, subdivide: 0 } }, params, history: [], paint: [{ key, vertices: paint.length }] }, bytes, paint);
+  return suite.withPage(link, async (page) => {
+    assert.equal(await waitForDone(page), 4);
+    assert.match(await page.locator('#mesh-details').textContent(), /^288 triangles/);
+    await setPanels(page, 20);
+    assert.equal(await solveAfter(page, () => remesh(page), 300_000), 20);
+    assert.match(await cleanupNote(page), /refined 288 triangles to [\d,]+ .*20 panels/);
+    const details = await page.locator('#mesh-details').textContent();
+    const triangles = Number(/^([\d,]+) triangles/.exec(details)[1].replace(/,/g, ''));
+    const vertices = Number(/([\d,]+) vertices/.exec(details)[1].replace(/,/g, ''));
+    await page.getByRole('button', { name: 'Copy share link' }).click();
+    await page.waitForFunction(() => location.hash.startsWith('#v1='));
+    const shared = readLink(await page.evaluate(() => location.href));
+    assert.deepEqual(shared.json.mesh.prepare, { panels: 20, subdivide: 0 }, 'the new preparation is recorded');
+    assert.equal(shared.json.history.length, 0, 'solved afresh on the prepared mesh');
+    const carried = shared.paint;
+    assert.equal(carried.length, vertices, 'one level per vertex of the prepared mesh');
+    assert.equal(shared.json.params.paint, fieldKey(carried));
+    assert.ok(carried.includes(32) && carried.includes(0), 'both sides of the paint are still there');
+    assert.ok(carried.every((level) => level >= 0 && level <= 32), 'nothing outside the painted range');
+    const edits = shared.json.params.edits;
+    assert.equal(edits.length, 1);
+    assert.equal(edits[0].op, 'lock');
+    assert.ok(edits[0].face >= 0 && edits[0].face < triangles, 'the lock names a triangle of the prepared mesh');
+
+    // Undo: the 288-triangle mesh and the paint and edit as they were.
+    assert.equal(await solveAfter(page, () => page.getByRole('button', { name: 'Undo' }).click()), 4);
+    assert.match(await page.locator('#mesh-details').textContent(), /^288 triangles/);
+    await page.getByRole('button', { name: 'Copy share link' }).click();
+    await page.waitForFunction((before) => location.hash.startsWith('#v1=') && location.href !== before, link);
+    const back = readLink(await page.evaluate(() => location.href));
+    assert.deepEqual(back.json.mesh.prepare, { panels: 4, subdivide: 0 });
+    assert.deepEqual(back.json.params.edits, [{ op: 'lock', face: 0 }]);
+    assert.deepEqual([...back.paint], [...paint]);
+  });
+});
