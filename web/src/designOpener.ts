@@ -210,6 +210,7 @@ export class DesignOpener {
       return;
     }
     this.host.editor.meshLoaded(opening.params, opening.design.prepare);
+    this.host.preparation.show(opening.design); // what this mesh was prepared with
     showMeshInfo(loaded.mesh.label, loaded.mesh.info);
     rhinoLoaded(loaded.mesh.fileName, loaded.mesh.info);
     renderStats(this.host.statsBox, null);
