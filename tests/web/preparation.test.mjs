@@ -5,7 +5,7 @@
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
 import { DEFAULT_PARAMS } from '../../build/web-tests/params.js';
-import { carriedParams, editFaces, HUGE_TRIANGLES, levelsOf, MIN_TRIANGLES_PER_PANEL, preparationNeeded, remapEdits, samePrepare } from '../../build/web-tests/preparation.js';
+import { carriedParams, editFaces, HUGE_TRIANGLES, levelsOf, MIN_TRIANGLES_PER_PANEL, preparationNeeded, refusedPreparation, remapEdits, samePrepare } from '../../build/web-tests/preparation.js';
 import { checkPrepare, hashToState, stateToHash } from '../../build/web-tests/share.js';
 
 const opened = { panels: 150, subdivide: 0 }; // Yas Island as opened: 1,952 triangles refined
@@ -23,6 +23,13 @@ test('raising the panel count past 20 triangles per panel prepares the mesh agai
   assert.deepEqual(preparationNeeded(opened, HUGE_TRIANGLES + 1000, 100, auto), { panels: 100, subdivide: 0 });
   // A design from a link made before preparations were recorded: the same rule.
   assert.deepEqual(preparationNeeded(undefined, 1952, 150, auto), { panels: 150, subdivide: 0 });
+});
+
+test('a refinement beyond what a browser tab should make is refused by name; an edge length opts in', () => {
+  assert.equal(refusedPreparation({ panels: 8000, subdivide: 0 }, 8000), null, '400,000 triangles: made');
+  assert.match(refusedPreparation({ panels: 8001, subdivide: 0 }, 8000), /^8,001 panels need the mesh refined to about 400,050 triangles, more than the page makes \(400,000\); ask for at most 8,000 panels, or set a Target edge length$/);
+  assert.equal(refusedPreparation({ panels: 99999, subdivide: 0, edgeLength: 0.01 }, 8000), null, 'the core checks an edge length itself');
+  assert.equal(refusedPreparation({ panels: 9000, subdivide: 1 }, 500_000), null, 'not a refinement for the count');
 });
 
 test('a new subdivision or edge length prepares again; with an edge length the count does not', () => {

@@ -16,7 +16,7 @@ import type { Outputs } from './outputs.ts';
 import type { DesignParams } from './params.ts';
 import type { ParamsForm } from './paramsForm.ts';
 import type { PrepareControl } from './prepareControl.ts';
-import { carriedParams, editFaces, preparationNeeded } from './preparation.ts';
+import { carriedParams, editFaces, preparationNeeded, refusedPreparation } from './preparation.ts';
 import type { Carry, SolveResult } from './protocol.ts';
 import { rhinoLoaded } from './rhino/rhinoOpen.ts';
 import type { DesignMesh, DesignState, MeshPrepare } from './share.ts';
@@ -136,7 +136,9 @@ export class DesignOpener {
     }
     const needed = preparationNeeded(mesh.design.prepare, mesh.info.triangles, params.panels, choice.value);
     if (!needed) return false;
-    this.prepareAgain(needed, params, [], 'carry');
+    const refused = refusedPreparation(needed, mesh.info.triangles);
+    if (refused) this.host.status.error(refused);
+    else this.prepareAgain(needed, params, [], 'carry');
     return true;
   }
 

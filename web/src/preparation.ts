@@ -48,6 +48,22 @@ export function preparationNeeded(current: MeshPrepare | undefined, triangles: n
   return null;
 }
 
+// The most triangles the page refines a mesh to for a panel count (about 50 per panel): the
+// core's "huge" threshold. More takes minutes and gigabytes in a browser tab, and the worker
+// cannot be interrupted inside one preparation; a target edge length opts in to more.
+export const TARGET_TRIANGLES_PER_PANEL = 50;
+export const MAX_PAGE_REFINE_TRIANGLES = HUGE_TRIANGLES;
+
+// Why `needed` (preparationNeeded's answer) is refused on the page, or null. triangles: of the
+// mesh on show; only a refinement for the panel count is capped.
+export function refusedPreparation(needed: MeshPrepare, triangles: number): string | null {
+  if (needed.edgeLength !== undefined || triangles / needed.panels >= MIN_TRIANGLES_PER_PANEL) return null;
+  const wanted = needed.panels * TARGET_TRIANGLES_PER_PANEL;
+  if (wanted <= MAX_PAGE_REFINE_TRIANGLES) return null;
+  const most = Math.floor(MAX_PAGE_REFINE_TRIANGLES / TARGET_TRIANGLES_PER_PANEL);
+  return `${needed.panels.toLocaleString('en')} panels need the mesh refined to about ${wanted.toLocaleString('en')} triangles, more than the page makes (${MAX_PAGE_REFINE_TRIANGLES.toLocaleString('en')}); ask for at most ${most.toLocaleString('en')} panels, or set a Target edge length`;
+}
+
 // The triangles the edits name, in order (a merge names two): what the worker remaps.
 export function editFaces(edits: readonly PanelEdit[]): Int32Array {
   const faces: number[] = [];
