@@ -5,7 +5,7 @@
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
 import { unzlibSync, zlibSync } from 'fflate';
-import { browserSuite, download, exampleLink, maxPlanarity, parseObj, remesh, screenshot, selectExample, setPanels, solveAfter, waitForDone } from './harness.mjs';
+import { browserSuite, download, errorAfter, exampleLink, maxPlanarity, parseObj, remesh, screenshot, selectExample, setPanels, solveAfter, waitForDone } from './harness.mjs';
 
 const suite = browserSuite();
 // A quick start (the default example is a 50k-triangle tower, slow to solve here).
@@ -110,9 +110,10 @@ function fieldKey(field) {
   return (a >>> 0).toString(16).padStart(8, '0') + (b >>> 0).toString(16).padStart(8, '0');
 }
 
-test('preparing again carries the paint (by position) and the panel edits to the new mesh', () => {
-  // A flat 12 x 12 grid of quads (288 triangles): 4 panels take it as it is; 20 need more.
-  const n = 12;
+// A flat 12 x 12 grid of quads (288 triangles) and a link that opens it for 4 panels, painted
+// (level 32, 4x density, where x > 6) with one lock edit.
+const n = 12;
+function gridLink({ edits = [{ op: 'lock', face: 0 }] } = {}) {
   const lines = [];
   for (let j = 0; j <= n; j++) for (let i = 0; i <= n; i++) lines.push(`v ${i} ${j} 0`);
   for (let j = 0; j < n; j++) for (let i = 0; i < n; i++) {
@@ -120,11 +121,14 @@ test('preparing again carries the paint (by position) and the panel edits to the
     lines.push(`f ${v(i, j)} ${v(i + 1, j)} ${v(i + 1, j + 1)} ${v(i, j + 1)}`);
   }
   const bytes = new TextEncoder().encode(`${lines.join('\n')}\n`);
-  // Painted: level 32 (4x density) where x > 6, none elsewhere.
   const paint = Int8Array.from({ length: (n + 1) * (n + 1) }, (_, k) => (k % (n + 1) > 6 ? 32 : 0));
   const key = fieldKey(paint);
-  const params = { ...quick, panels: 4, paint: key, edits: [{ op: 'lock', face: 0 }] };
-  const link = linkOf(suite.url, { v: 1, mesh: { file: 'grid.obj', size: bytes.length, prepare: { panels: 4, subdivide: 0 } }, params, history: [], paint: [{ key, vertices: paint.length }] }, bytes, paint);
+  const params = { ...quick, panels: 4, paint: key, edits };
+  return { paint, link: linkOf(suite.url, { v: 1, mesh: { file: 'grid.obj', size: bytes.length, prepare: { panels: 4, subdivide: 0 } }, params, history: [], paint: [{ key, vertices: paint.length }] }, bytes, paint) };
+}
+
+test('preparing again carries the paint (by position) and the panel edits to the new mesh', () => {
+  const { paint, link } = gridLink();
   return suite.withPage(link, async (page) => {
     assert.equal(await waitForDone(page), 4);
     assert.match(await page.locator('#mesh-details').textContent(), /^288 triangles/);
@@ -158,5 +162,30 @@ test('preparing again carries the paint (by position) and the panel edits to the
     assert.deepEqual(back.json.mesh.prepare, { panels: 4, subdivide: 0 });
     assert.deepEqual(back.json.params.edits, [{ op: 'lock', face: 0 }]);
     assert.deepEqual([...back.paint], [...paint]);
+  });
+});
+
+test('a Target edge length prepares the mesh to it, travels in the link, and a bad one is refused', () => {
+  // No edits here: a lock makes a warm-started count change keep 4 panels (the core's rule for
+  // edits, not the preparation's).
+  const { link } = gridLink({ edits: [] });
+  return suite.withPage(link, async (page) => {
+    assert.equal(await waitForDone(page), 4);
+    const edge = page.getByLabel('Target edge length');
+    assert.equal(await edge.inputValue(), '', 'automatic');
+    assert.equal(await solveAfter(page, () => edge.fill('0.5').then(() => edge.blur())), 4);
+    assert.match(await cleanupNote(page), /remeshed 288 triangles to [\d,]+ \(target edge 0\.5\).*at the edge length asked for/);
+    const triangles = Number(/^([\d,]+) triangles/.exec(await page.locator('#mesh-details').textContent())[1].replace(/,/g, ''));
+    assert.ok(triangles > 1000, `${triangles} triangles at edge 0.5 on a 12 x 12 square`);
+    await page.getByRole('button', { name: 'Copy share link' }).click();
+    await page.waitForFunction((before) => location.hash.startsWith('#v1=') && location.href !== before, link);
+    assert.deepEqual(readLink(await page.evaluate(() => location.href)).json.mesh.prepare, { panels: 4, subdivide: 0, edgeLength: 0.5 });
+    // Raising the count keeps the designer's resolution: no new preparation.
+    await setPanels(page, 8);
+    assert.equal(await solveAfter(page, () => remesh(page)), 8);
+    assert.match(await page.locator('#mesh-details').textContent(), new RegExp(`^${triangles.toLocaleString('en')} triangles`));
+    const message = await errorAfter(page, () => edge.fill('-1').then(() => edge.blur()));
+    assert.match(message, /Target edge length must be a positive number/);
+    assert.equal(await edge.getAttribute('aria-invalid'), 'true');
   });
 });
