@@ -290,8 +290,15 @@ void Remesher::set_params(RemeshParams params) {
   // A changed edit list replays on a fresh solve (set_edits is the incremental way).
   const bool restart = clustering_.labels.empty() || params.seed != params_.seed ||
                        params.seeding != params_.seeding || !(params.edits == params_.edits);
-  // After edits the clustering has its own count: the new one is reached from there.
+  // After edits the clustering has its own count: the new one is reached from there, unless
+  // the count asked for is no change (kept_count): then params().panels stays the target.
   const int old_panels = next_edit_ > 0 ? clustering_.num_clusters() : params_.panels;
+  const bool keep_count = !restart && kept_count(params);
+  if (keep_count) {
+    params.panels = params_.panels;
+    if (same_solve(params, params_)) return;  // nothing changed: no re-solve
+  }
+  const int target = keep_count ? old_panels : params.panels;
   params_ = std::move(params);
   if (faces) faces_ = std::move(*faces);
   metric_ = Metric(faces_, params_.weights, params_.panels);
@@ -308,13 +315,13 @@ void Remesher::set_params(RemeshParams params) {
   base_edits_ = next_edit_;
   base_.reset();
   if (!locks_.empty()) {
-    change_count_held(params_.panels);
+    change_count_held(target);
     start_lloyd();
     return;
   }
-  if (params_.panels > old_panels) add_clusters(metric_, topology_, clustering_, params_.panels - old_panels);
-  if (params_.panels < old_panels) remove_clusters(metric_, topology_, clustering_, old_panels - params_.panels);
-  if (params_.panels == old_panels) refit(metric_, clustering_);  // proxies and energy under the new metric
+  if (target > old_panels) add_clusters(metric_, topology_, clustering_, target - old_panels);
+  if (target < old_panels) remove_clusters(metric_, topology_, clustering_, old_panels - target);
+  if (target == old_panels) refit(metric_, clustering_);  // proxies and energy under the new metric
   start_lloyd();
 }
 

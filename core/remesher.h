@@ -40,6 +40,9 @@ struct PanelEdit {
 const char* edit_name(PanelEdit::Op op);
 
 struct RemeshParams {
+  // The count the solve targets. With edits the design has this many panels plus splits minus
+  // merges (Remesher::num_panels()); set_params with the same edits and either this target or
+  // that current count changes nothing about the count (Remesher::kept_count).
   int panels = 100;
   std::uint64_t seed = 1;
   MetricWeights weights;
@@ -68,6 +71,7 @@ struct RemeshParams {
   double min_corner_angle_deg = 0.0;
   // Per-panel edits, applied in order once the solve is done (PanelEdit; DESIGN.md 3).
   std::vector<PanelEdit> edits;
+  // A new field must be compared in Remesher::same_solve too (remesher_edits.cpp).
 };
 
 enum class Stage { Seeding, Lloyd, Panels, Optimize, Done };
@@ -103,7 +107,13 @@ class Remesher {
   // then the Lloyd phase runs again. A changed seed or seeding method starts over (and the
   // clustering is empty until the next step()). Throws InputError for bad parameters and
   // then leaves everything as it was. Locked panels keep their faces and planes (set_edits).
+  // After edits, a count that is no change (kept_count) keeps the target and the count now;
+  // when nothing else changed either, nothing happens (no re-solve; undo still replays).
   void set_params(RemeshParams params);
+  // Whether `params` leaves the panel count as it is: edits are applied, the edit list is the
+  // same, and params.panels is the target (params().panels) or the count now (num_panels()),
+  // so a page showing the count after a split can send either.
+  bool kept_count(const RemeshParams& params) const;
 
   // The edit list (params().edits) changes: if it is the current list plus more edits, the
   // new ones are applied to the current design; otherwise the design from before the first
@@ -137,6 +147,7 @@ class Remesher {
 
  private:
   void validate(const RemeshParams& params) const;
+  static bool same_solve(const RemeshParams& a, const RemeshParams& b);  // all but the edits
   void start_lloyd();
   void after_lloyd();
   void panel_round();

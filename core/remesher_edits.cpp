@@ -317,6 +317,26 @@ void Remesher::apply_pending_edits() {
   }
 }
 
+bool Remesher::same_solve(const RemeshParams& a, const RemeshParams& b) {
+  const MetricWeights &u = a.weights, &v = b.weights;
+  return a.panels == b.panels && a.seed == b.seed && u.euclidean == v.euclidean && u.l2 == v.l2 &&
+         u.l21 == v.l21 && u.density == v.density && u.boundary == v.boundary && a.density == b.density &&
+         a.density_expression == b.density_expression && a.anisotropy == b.anisotropy &&
+         a.lloyd_iterations == b.lloyd_iterations && a.seeding == b.seeding &&
+         a.teleport_interval == b.teleport_interval && a.teleport_moves == b.teleport_moves &&
+         a.make_panels == b.make_panels && a.panel_rounds == b.panel_rounds &&
+         a.single_point_nodes == b.single_point_nodes && a.optimize_planes == b.optimize_planes &&
+         a.glass == b.glass && a.min_corner_angle_deg == b.min_corner_angle_deg;
+}
+
+// The count after edits is the target plus splits minus merges (or what a new count reached):
+// asking for either the target or that count is no change, so a page may show the count now
+// and send it back unchanged without moving a single panel.
+bool Remesher::kept_count(const RemeshParams& params) const {
+  if (next_edit_ == 0 || !(params.edits == params_.edits)) return false;
+  return params.panels == params_.panels || params.panels == num_panels();
+}
+
 void Remesher::set_edits(std::vector<PanelEdit> edits) {
   validate_edits(edits);
   if (!params_.make_panels && !edits.empty()) throw InputError("edits need panels (the panel phase is off)");

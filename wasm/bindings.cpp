@@ -85,6 +85,11 @@ EMSCRIPTEN_BINDINGS(flatfacet) {
       .function(
           "panelTriangleIds", +[](const Session& s) { return to_typed_array(s.panel_triangle_ids(), "Uint32Array"); })
       .function(
+          "facePanels", +[](const Session& s) { return to_typed_array(s.face_panels(), "Int32Array"); })
+      .function(
+          "expressionDensity",
+          +[](const Session& s, const std::string& e) { return to_typed_array(s.expression_density(e), "Float64Array"); })
+      .function(
           "cornerPositions", +[](const Session& s) { return to_typed_array(s.corner_positions(), "Float64Array"); })
       .function(
           "cornerPlanarity", +[](const Session& s) { return to_typed_array(s.corner_planarity(), "Float64Array"); })

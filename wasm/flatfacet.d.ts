@@ -196,6 +196,12 @@ export interface Session {
   // indices into panelPositions, and the panel of each triangle.
   panelTriangles(): Uint32Array;
   panelTriangleIds(): Uint32Array;
+  // Per cleaned triangle: its panel (an index of panelOffsets' panels; glass pieces and
+  // unbuilt clusters make it differ from clusterIds), -1 for none.
+  facePanels(): Int32Array;
+  // A density expression evaluated per vertex of the cleaned mesh (the factor the solver
+  // multiplies the painted density with); empty for '' or an expression the core refuses.
+  expressionDensity(expression: string): Float64Array;
   // "Before the fix": each panel vertex moved back to its mesh corner (same layout as
   // panelPositions), i.e. the polygons a plain corner remeshing would give, and per panel how
   // far those are from planar (max distance to the best-fit plane / panel diameter).

@@ -158,8 +158,9 @@ std::string Session::set_params(const std::string& params_json) {
     RemeshParams params = remesh_params_from_json(params_json);
     params.make_panels = true;
     params.density = params_.density;  // set apart (set_density)
+    params.panels = kept_target(params);
     // Only the edit list changed: edit the design in place (undo / redo replay, session_edits.cpp).
-    const std::string key = solve_key(params_json);
+    const std::string key = solve_key(params_json, params.panels);
     if (apply_edits_only(key, params)) return status_json(true, "");
     if (remesher_) {
       const bool mid_solve = !remesher_->done();

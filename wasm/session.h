@@ -78,6 +78,12 @@ class Session {
   std::vector<std::uint32_t> panel_indices() const;
   std::vector<std::uint32_t> panel_triangles() const;
   std::vector<std::uint32_t> panel_triangle_ids() const;
+  // Per cleaned triangle: its panel (index into panel_offsets' panels), -1 for none. One
+  // selected panel on the page names both its triangle (edits) and its panel (thickness).
+  std::vector<std::int32_t> face_panels() const;
+  // The density expression evaluated per vertex of the cleaned mesh, as the solver multiplies
+  // it with the paint (session_density.cpp); empty for no expression or one it refuses.
+  std::vector<double> expression_density(const std::string& expression) const;
   std::vector<double> corner_positions() const;
   std::vector<double> corner_planarity() const;
   std::string problems();
@@ -123,8 +129,10 @@ class Session {
   const QualityReport* quality();
   void forget_result();
   // Edits (session_edits.cpp): what set_params compares to tell an edit from a new solve
-  // (the parameters' JSON without `edits`, canonical), and the edit-only path.
-  static std::string solve_key(const std::string& params_json);
+  // (the parameters' JSON without `edits`, canonical, with `panels` as the target a count
+  // that is no change stands for: kept_target), and the edit-only path.
+  static std::string solve_key(const std::string& params_json, int panels);
+  int kept_target(const RemeshParams& params) const;
   bool apply_edits_only(const std::string& key, const RemeshParams& params);
 
   std::string name_;

@@ -2,9 +2,11 @@
 // field the page paints. It lives in params_.density, so set_params keeps it and a new
 // Remesher starts with it; a change warm-starts a solve like a parameter change does.
 #include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "core/density/density_field.h"
 #include "core/util/error.h"
 #include "wasm/guarded.h"
 #include "wasm/session.h"
@@ -41,6 +43,21 @@ std::string Session::set_density(const std::vector<double>& density) {
     params_ = std::move(params);
     return status_json(true, "");
   });
+}
+
+// The page's colour map of the effective density (expression x paint) needs the expression's
+// values; they depend on curvature and the bounding box, which only the core computes.
+std::vector<double> Session::expression_density(const std::string& expression) const {
+  if (expression.empty() || mesh_.num_vertices() == 0) return {};
+  try {
+    const Expression parsed = Expression::parse(expression);
+    const MeshTopology topology = build_topology(mesh_);
+    std::optional<VertexCurvature> curvature;
+    if (parsed.uses_curvature()) curvature = vertex_curvature(mesh_, topology);
+    return ff::expression_density(mesh_, topology, parsed, curvature ? &*curvature : nullptr);
+  } catch (const InputError&) {
+    return {};  // the solve reports it
+  }
 }
 
 }  // namespace ff::wasm

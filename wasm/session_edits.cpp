@@ -62,14 +62,27 @@ void canonical(const JsonValue& v, std::string& out) {
 
 }  // namespace
 
-std::string Session::solve_key(const std::string& params_json) {
+std::string Session::solve_key(const std::string& params_json, int panels) {
   JsonValue root = parse_json(params_json, 4, 1 << 20);
   root.object.erase(std::remove_if(root.object.begin(), root.object.end(),
-                                   [](const auto& m) { return m.first == "edits"; }),
+                                   [](const auto& m) { return m.first == "edits" || m.first == "panels"; }),
                     root.object.end());
+  JsonValue count;
+  count.type = JsonValue::Type::Number;
+  count.number = panels;
+  root.object.emplace_back("panels", std::move(count));
   std::string out;
   canonical(root, out);
   return out;
+}
+
+// After edits the page shows the count now (target plus splits minus merges): sent back, with
+// these edits or more, it is the target unchanged (Remesher::kept_count), not a new count.
+int Session::kept_target(const RemeshParams& params) const {
+  if (!remesher_) return params.panels;
+  RemeshParams same = params;
+  same.edits = remesher_->params().edits;
+  return remesher_->kept_count(same) ? remesher_->params().panels : params.panels;
 }
 
 bool Session::apply_edits_only(const std::string& key, const RemeshParams& params) {
@@ -98,6 +111,16 @@ std::vector<std::int32_t> Session::locked_panels() const {
   if (!remesher_) return {};
   const std::vector<int> locked = remesher_->locked_clusters();
   return std::vector<std::int32_t>(locked.begin(), locked.end());
+}
+
+// The selected panel on the page is a triangle; its panel in the panel mesh (glass pieces and
+// unbuilt clusters apart from clusterIds) is what the per-panel thickness names.
+std::vector<std::int32_t> Session::face_panels() const {
+  std::vector<std::int32_t> out(mesh_.triangles.size(), -1);
+  if (!remesher_) return out;
+  const std::vector<int>& face_panel = remesher_->panels().face_panel;
+  for (size_t f = 0; f < out.size() && f < face_panel.size(); ++f) out[f] = face_panel[f];
+  return out;
 }
 
 int Session::panel_count() const { return remesher_ ? remesher_->num_panels() : 0; }

@@ -3,6 +3,9 @@
 // panel count and re-solve (its polygon is still in the OBJ, the same vertices within 1e-9);
 // merge a panel with a clicked neighbour; undo and redo give back the very same OBJ bytes;
 // a reload (the stored session) and a share link with the edits, opened in a fresh context, reproduces the OBJ byte for byte.
+// "Panels" shows the count after the edits (61 after a split of 60) and undo / redo restore
+// it; a weight change after a split keeps its count. Paint and edits travel in one link. One
+// click selects one panel for the edits and its own thickness alike.
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
 import { browserSuite, exampleLink, download, maxPlanarity, outcomes, parseObj, remesh, screenshot, setPanels, waitForDone, waitForSaved } from './harness.mjs';
@@ -13,6 +16,8 @@ const PANELS = 60;
 const params = { panels: PANELS, seed: 1, weights: { euclidean: 1, l2: 1, l21: 1, boundary: 1 }, lloydIterations: 20, panelRounds: 30, seeding: 'farthest', teleport: true, singlePointNodes: false, optimizePlanes: true };
 
 const saddleLink = () => exampleLink(suite.url, 'saddle', params);
+
+const panelsInput = (page) => page.getByLabel('Panels', { exact: true }).inputValue();
 
 async function objOf(page) {
   return (await download(page, 'Export OBJ')).text;
@@ -53,6 +58,7 @@ test('panel edits: split, lock through a re-solve, merge; undo/redo give the sam
     await screenshot(page, 'edits-selected');
     assert.equal(await split.isDisabled(), false);
     assert.equal(await after_(page, () => split.click()), PANELS + 1, 'a split makes one panel more');
+    assert.equal(await panelsInput(page), String(PANELS + 1), '"Panels" shows the count after the split');
     const afterSplit = await objOf(page);
     const planarity = maxPlanarity(parseObj(afterSplit));
     assert.ok(planarity <= 1e-9, `split panels are planar (${planarity})`);
@@ -100,14 +106,16 @@ test('panel edits: split, lock through a re-solve, merge; undo/redo give the sam
     assert.equal(await objOf(page), resolved, 'undo the merge: the OBJ before it, byte for byte');
     assert.equal(await after_(page, () => page.getByRole('button', { name: 'Undo' }).click()), PANELS + 1);
     assert.equal(await objOf(page), afterLock, 'undo the re-solve: the locked design, byte for byte');
-    assert.equal(await page.getByLabel('Panels', { exact: true }).inputValue(), String(PANELS));
+    assert.equal(await panelsInput(page), String(PANELS + 1), 'undo gives back the count of the design (the split of 60)');
     assert.equal(await after_(page, () => page.getByRole('button', { name: 'Undo' }).click()), PANELS + 1);
     assert.equal(await objOf(page), afterSplit, 'undo the lock');
     assert.equal(await after_(page, () => page.getByRole('button', { name: 'Undo' }).click()), PANELS);
     assert.equal(await objOf(page), before, 'undo the split: the first OBJ');
+    assert.equal(await panelsInput(page), String(PANELS));
     await page.locator('#viewport canvas').click({ position: { x: 5, y: 5 } }); // focus off the inputs
     assert.equal(await after_(page, () => page.keyboard.press('Control+Shift+Z')), PANELS + 1);
     assert.equal(await objOf(page), afterSplit, 'redo (Ctrl+Shift+Z) the split');
+    assert.equal(await panelsInput(page), String(PANELS + 1), 'redo gives back the count after the split');
     let lastRedo = null;
     for (const expected of [afterLock, resolved, final]) {
       lastRedo = await outcomes(page);
@@ -133,5 +141,94 @@ test('panel edits: split, lock through a re-solve, merge; undo/redo give the sam
     assert.equal(await objOf(page), final, 'the link reproduces the OBJ byte for byte');
     assert.match(await page.evaluate(() => document.body.dataset.lockedPanels), /^\d+$/, 'the lock came with it');
     await screenshot(page, 'edits-shared');
+  });
+});
+
+// One stroke of density paint across the middle-left of the view, solved.
+async function paintStroke(page) {
+  await page.getByRole('button', { name: 'Paint density' }).click();
+  await page.getByLabel('Brush radius').fill('12');
+  await page.getByLabel('Brush strength').fill('1');
+  const box = await page.locator('#viewport canvas').boundingBox();
+  const y = box.y + box.height * 0.5;
+  await page.mouse.move(box.x + box.width * 0.36, y);
+  const since = await outcomes(page);
+  await page.mouse.down();
+  for (let i = 1; i <= 12; i++) await page.mouse.move(box.x + box.width * (0.36 + (0.14 * i) / 12), y + box.height * 0.04 * Math.sin(i / 2));
+  await page.mouse.up();
+  const panels = await waitForDone(page, since);
+  await page.getByRole('button', { name: 'Paint density' }).click(); // off: clicks select panels
+  return panels;
+}
+
+const selection = (page) => page.evaluate(() => ({ edit: document.body.dataset.editPanel ?? '', thickness: document.body.dataset.selectedPanel ?? '' }));
+
+test('paint and edits in one link: a stroke, a split, a lock; the link gives the same OBJ bytes; one selection for edits and thickness', async () => {
+  let link = '';
+  let edited = '';
+  await suite.withPage(saddleLink(), async (page) => {
+    assert.equal(await waitForDone(page), PANELS);
+    assert.equal(await paintStroke(page), PANELS);
+    const painted = await objOf(page);
+
+    // One click: one selected panel, named alike by the edits and the per-panel thickness.
+    const first = await clickView(page, 0.5, 0.5);
+    assert.match(first, /^\d+$/);
+    assert.deepEqual(await selection(page), { edit: first, thickness: `P${Number(first) + 1}` }, 'the edits and the thickness select the same panel');
+    assert.equal(await page.getByLabel('Panel thickness').isDisabled(), false, 'the thickness input acts on it');
+    assert.match(await page.locator('#fab-selected-panel').textContent(), new RegExp(`selected P${Number(first) + 1}\\b`));
+    await screenshot(page, 'edits-one-selection');
+    await page.getByLabel('Panel thickness').scrollIntoViewIfNeeded();
+    await screenshot(page, 'edits-one-selection-thickness');
+    await page.keyboard.press('Escape');
+    assert.deepEqual(await selection(page), { edit: '', thickness: '' }, 'Esc clears the one selection');
+    assert.equal(await page.getByLabel('Panel thickness').isDisabled(), true);
+
+    assert.match(await clickView(page, 0.5, 0.5), /^\d+$/);
+    assert.equal(await after_(page, () => page.getByRole('button', { name: 'Split panel' }).click()), PANELS + 1);
+    assert.equal(await panelsInput(page), String(PANELS + 1));
+    const afterSplit = await selection(page);
+    assert.match(afterSplit.edit, /^\d+$/, 'the selection stays on the clicked triangle through the split');
+    assert.equal(afterSplit.thickness, `P${Number(afterSplit.edit) + 1}`);
+    assert.match(await clickView(page, 0.3, 0.45), /^\d+$/);
+    assert.equal(await after_(page, () => page.getByRole('button', { name: 'Lock panel' }).click()), PANELS + 1);
+    edited = await objOf(page);
+    assert.notEqual(edited, painted);
+    assert.equal(await page.getByRole('button', { name: 'Clear paint' }).isDisabled(), false, 'the paint is part of the design');
+    await page.getByRole('button', { name: 'Copy share link' }).click();
+    await page.waitForFunction(() => location.hash.startsWith('#v1='));
+    link = await page.getByLabel('Share link').inputValue();
+
+    // The count after the split is no change: another weight re-solves at 61, not 60.
+    await page.getByText('Metric and solver').click(); // its section opens
+    await page.getByLabel('Boundary', { exact: true }).fill('1.5');
+    assert.equal(await after_(page, () => remesh(page)), PANELS + 1, 'a weight change keeps the split count');
+    assert.equal(await panelsInput(page), String(PANELS + 1));
+  });
+
+  await suite.withPage(link, async (page) => {
+    assert.equal(await waitForDone(page), PANELS + 1);
+    assert.equal(await objOf(page), edited, 'paint and edits: the link reproduces the OBJ byte for byte');
+    assert.equal(await panelsInput(page), String(PANELS + 1), '"Panels" shows the count of the linked design');
+    assert.match(await page.evaluate(() => document.body.dataset.lockedPanels), /^\d+$/, 'the lock came with it');
+    assert.equal(await page.getByRole('button', { name: 'Clear paint' }).isDisabled(), false, 'the paint came with it');
+    await screenshot(page, 'edits-paint-shared');
+  });
+});
+
+test('the density map shows expression x paint when an expression is set', async () => {
+  await suite.withPage(saddleLink(), async (page) => {
+    assert.equal(await waitForDone(page), PANELS);
+    const title = page.locator('#density-legend-title');
+    await page.getByRole('button', { name: 'Paint density' }).click();
+    assert.equal(await title.textContent(), 'Density paint');
+    assert.equal(await page.evaluate(() => document.body.dataset.densityMap), 'paint');
+    await page.getByLabel('Density preset').selectOption({ label: 'Gradient' });
+    await page.waitForFunction(() => document.body.dataset.densityMap === 'effective');
+    assert.equal(await title.textContent(), 'Effective density: expression × paint');
+    await screenshot(page, 'density-effective');
+    await page.getByLabel('Density preset').selectOption({ label: 'none' });
+    await page.waitForFunction(() => document.body.dataset.densityMap === 'paint');
+    assert.equal(await title.textContent(), 'Density paint');
   });
 });

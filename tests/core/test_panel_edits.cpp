@@ -252,6 +252,61 @@ TEST(PanelEditLists, ReplayToTheSameBytes) {
   EXPECT_EQ(live.num_panels(), 43);
 }
 
+// After a split the page shows the count now (43 from 42): that count, or the target, sent
+// back with the same edits is no change: no re-solve, the very same panels, the target kept,
+// and undo still gives what the shorter list gives. A new count still re-solves.
+TEST(PanelEditLists, CountNowIsNoChange) {
+  const TriMesh mesh = test::load_clean("inspired_mesh.obj");
+  RemeshParams p;
+  p.panels = 42;
+  Remesher r(mesh, p);
+  r.run();
+  const std::string before = obj(r);
+  const std::vector<PanelEdit> edits{edit(PanelEdit::Op::Split, big_panel_face(r))};
+  r.set_edits(edits);
+  ASSERT_EQ(r.num_panels(), 43);
+  const std::string split = obj(r);
+  for (int count : {43, 42}) {
+    RemeshParams q = r.params();
+    q.panels = count;
+    EXPECT_TRUE(r.kept_count(q)) << count;
+    r.set_params(q);
+    EXPECT_TRUE(r.done()) << count << ": solving again";
+    EXPECT_EQ(r.params().panels, 42) << count;
+    EXPECT_EQ(r.num_panels(), 43) << count;
+    EXPECT_EQ(obj(r), split) << count;
+  }
+  // Undo and redo replay from the design before the split, as without the calls above.
+  r.set_edits({});
+  EXPECT_EQ(obj(r), before);
+  r.set_edits(edits);
+  EXPECT_EQ(obj(r), split);
+  // Other parameters with the count now: a re-solve that keeps 43 panels (not back to 42).
+  RemeshParams w = r.params();
+  w.panels = 43;
+  w.weights.l21 = 0.5;
+  r.set_params(w);
+  EXPECT_FALSE(r.done());
+  r.run();
+  EXPECT_EQ(r.num_panels(), 43);
+  EXPECT_EQ(r.params().panels, 42);
+  EXPECT_TRUE(test::valid_panels(r, 43, 0.08));
+  // A new count is one: 50 panels reached from the design.
+  RemeshParams n = r.params();
+  n.panels = 50;
+  EXPECT_FALSE(r.kept_count(n));
+  r.set_params(n);
+  r.run();
+  EXPECT_EQ(r.num_panels(), 50);
+  EXPECT_EQ(r.params().panels, 50);
+  // Without edits the count is what it always was: the same parameters solve again.
+  Remesher plain(mesh, p);
+  plain.run();
+  EXPECT_FALSE(plain.kept_count(p));
+  plain.set_params(p);
+  EXPECT_FALSE(plain.done());
+}
+
 TEST(PanelEditLists, BadEditsThrowAndKeepTheDesign) {
   RemeshParams p;
   p.panels = 42;

@@ -109,3 +109,25 @@ test('a dense half gets smaller panels; the field survives setParams, warm-start
   s.delete();
   t.delete();
 });
+
+test('expressionDensity: the expression per vertex, as the solver multiplies it with the paint', () => {
+  const s = new ff.Session();
+  assert.equal(s.expressionDensity('1 + 3 * u').length, 0, 'no mesh: no values');
+  const info = json(s.loadShape('saddle', 2000));
+  assert.equal(info.ok, true);
+  const p = s.inputPositions();
+  let lo = Infinity;
+  let hi = -Infinity;
+  for (let i = 0; i < p.length; i += 3) lo = Math.min(lo, p[i]), hi = Math.max(hi, p[i]);
+  const values = s.expressionDensity('1 + 3 * u');
+  assert.equal(values.length, info.vertices);
+  for (let v = 0; v < info.vertices; v++) {
+    const u = (p[v * 3] - lo) / (hi - lo);
+    assert.ok(Math.abs(values[v] - (1 + 3 * u)) < 1e-5, `vertex ${v}: ${values[v]} vs ${1 + 3 * u}`);
+  }
+  assert.ok(s.expressionDensity('1 + 2 * min(curv, 4)').every((x) => x >= 1 && x <= 9), 'curvature expressions evaluate too');
+  assert.equal(s.expressionDensity('').length, 0);
+  assert.equal(s.expressionDensity('1 +').length, 0, 'a refused expression: none (the solve says why)');
+  assert.equal(s.expressionDensity('u - 1').length, 0, 'values that are not > 0: none');
+  s.delete();
+});

@@ -114,3 +114,43 @@ test('edits in setParams: counts, locks, undo / redo, the native result, bad edi
   assert.equal(s.objText(), full);
   s.delete();
 });
+
+test('the count after edits is no change: the same panels, no solve; panels per triangle for the page', () => {
+  const file = 'inspired_mesh.obj';
+  const s = new ff.Session();
+  assert.equal(json(s.loadMesh(file, readFileSync(path.join(meshes, file)))).ok, true);
+  const base = { panels: 42, seed: 5 };
+  assert.equal(json(s.setParams(JSON.stringify(base))).ok, true);
+  solve(s);
+  const edits = [{ op: 'split', face: s.panelFace(largestPanel(s)) }];
+  assert.equal(json(s.setParams(JSON.stringify({ ...base, edits }))).ok, true);
+  assert.equal(s.panelCount(), 43);
+  const split = s.objText();
+  // The page shows 43 and may send it back: no change (done, the same bytes); so is 42.
+  for (const panels of [43, 42]) {
+    assert.equal(json(s.setParams(JSON.stringify({ ...base, panels, edits }))).ok, true);
+    assert.equal(s.done(), true, `${panels}: no re-solve`);
+    assert.equal(s.objText(), split, `${panels}: the same panels`);
+  }
+  // More edits with the count now are edited in place, as with the target.
+  const [a, b] = neighbourFaces(s);
+  const merged = [...edits, { op: 'merge', face: a, with: b }];
+  assert.equal(json(s.setParams(JSON.stringify({ ...base, panels: 43, edits: merged }))).ok, true);
+  assert.equal(s.done(), true, 'edited in place');
+  assert.equal(s.panelCount(), 42);
+  // Undo (the shorter list, the target): the split design back, byte for byte.
+  assert.equal(json(s.setParams(JSON.stringify({ ...base, edits }))).ok, true);
+  assert.equal(s.objText(), split);
+  // Per triangle, its panel in the panel mesh: here (no glass) the cluster's panel.
+  const facePanels = s.facePanels();
+  const clusters = s.clusterIds();
+  assert.equal(facePanels.length, clusters.length);
+  const panelOf = new Map();
+  for (let f = 0; f < clusters.length; f++) {
+    assert.ok(facePanels[f] >= 0 && facePanels[f] < 43);
+    if (panelOf.has(clusters[f])) assert.equal(panelOf.get(clusters[f]), facePanels[f], 'one panel per cluster');
+    panelOf.set(clusters[f], facePanels[f]);
+  }
+  assert.equal(panelOf.size, 43);
+  s.delete();
+});

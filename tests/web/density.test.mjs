@@ -8,6 +8,7 @@ import { zlibSync } from 'fflate';
 import { encodeBase64url } from '../../build/web-tests/base64url.js';
 import { applyDab, dabsAlong, falloff, vertexAdjacency } from '../../build/web-tests/brush/brushPainter.js';
 import { decodeField, densityOfLevel, fieldKey, fieldProblem, isUniform, levelOf, MAX_LEVEL, quantiseField } from '../../build/web-tests/brush/densityField.js';
+import { expressionLog2, fieldColors, log2Colors } from '../../build/web-tests/brush/densityColors.js';
 import { History } from '../../build/web-tests/history.js';
 import { paintKeys } from '../../build/web-tests/paintFields.js';
 import { checkExpression, DEFAULT_PARAMS, DENSITY_PRESETS, toRemeshParams, validateParams } from '../../build/web-tests/params.js';
@@ -308,4 +309,26 @@ test('paint too large for a link is refused when sharing, not written', () => {
   const outcome = shareHash({ mesh: { kind: 'example', id: 'saddle' }, params: { ...DEFAULT_PARAMS, paint: key }, history: [], paint: new Map([[key, big]]) });
   assert.equal(outcome.ok, false);
   assert.equal(outcome.message, PAINT_TOO_LARGE);
+});
+
+test('density colours: with an expression the map shows expression x paint (the solver\'s density)', () => {
+  const rgb = (colors, v) => [...colors.slice(v * 3, v * 3 + 3)].map((c) => c.toFixed(4)).join(',');
+  const levels = Int8Array.from([0, 16, -16, 0]); // 1x, 2x, 1/2x, 1x painted
+  const paintOnly = fieldColors(levels, 4);
+  const expression = expressionLog2(Float64Array.from([1, 0.5, 2, 4]), 4); // the core's values
+  assert.deepEqual([...expression], [0, -1, 1, 2]);
+  const effective = fieldColors(levels, 4, expression);
+  assert.equal(rgb(effective, 0), rgb(paintOnly, 0), '1 x 1 = 1');
+  assert.equal(rgb(effective, 1), rgb(fieldColors(null, 1), 0), '0.5 x 2 = 1: neutral');
+  assert.equal(rgb(effective, 2), rgb(paintOnly, 0), '2 x 0.5 = 1: neutral');
+  assert.equal(rgb(effective, 3), rgb(fieldColors(Int8Array.from([32]), 1), 0), 'unpainted: the expression alone (4x)');
+  assert.notEqual(rgb(effective, 3), rgb(paintOnly, 3), 'the paint-only map would show 1x there');
+  // The stroke preview adds it the same way.
+  const preview = new Float32Array(12);
+  log2Colors(Float32Array.from([0, 1, -1, 0]), preview, expression);
+  assert.deepEqual([...preview].map((c) => c.toFixed(4)), [...effective].map((c) => c.toFixed(4)));
+  // No values, another mesh's, or a non-positive one: no expression on the map.
+  assert.equal(expressionLog2(new Float64Array(0), 4), null);
+  assert.equal(expressionLog2(Float64Array.from([1, 2]), 4), null);
+  assert.equal(expressionLog2(Float64Array.from([1, 0, 1, 1]), 4), null);
 });

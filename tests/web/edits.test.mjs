@@ -6,7 +6,8 @@
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
 import { DesignMachine } from '../../build/web-tests/designMachine.js';
-import { checkEdits, checkEditsFit, compactChain, lockedPanels, MAX_EDITS, neighbourPanels, sameButEdits } from '../../build/web-tests/edits/panelEdits.js';
+import { checkEdits, checkEditsFit, clusterCount, compactChain, countAfterEdits, lockedPanels, MAX_EDITS, neighbourPanels, sameButEdits, targetOfTyped } from '../../build/web-tests/edits/panelEdits.js';
+import { PanelSelection, panelsOfClusters, selectedIn } from '../../build/web-tests/panelSelection.js';
 import { History } from '../../build/web-tests/history.js';
 import { DEFAULT_PARAMS, sameParams, toRemeshParams, validateParams } from '../../build/web-tests/params.js';
 import { hashToState, stateToHash } from '../../build/web-tests/share.js';
@@ -182,4 +183,50 @@ test('edits: travel in share links inside the parameters and their history', () 
   assert.match(refused.message, /unknown field "evil"/);
   const hostileHistory = { ...state, history: [{ ...p, edits: [{ op: 'lock', face: -1 }] }] };
   assert.equal(hashToState(stateToHash(hostileHistory)).ok, false);
+});
+
+test('panels count: "Panels" shows the count after the edits, and reading it back gives the target', () => {
+  const split = { op: 'split', face: 3 };
+  const merge = { op: 'merge', face: 4, with: 9 };
+  const lock = { op: 'lock', face: 0 };
+  assert.equal(countAfterEdits(60, []), 60);
+  assert.equal(countAfterEdits(60, [split]), 61);
+  assert.equal(countAfterEdits(60, [split, split, lock, merge]), 61);
+  assert.equal(countAfterEdits(60, [merge, lock, { op: 'unlock', face: 0 }]), 59);
+  // The count shown (61 after a split of 60) is no change: the target goes to the core.
+  assert.equal(targetOfTyped(61, 61, 60, true), 60);
+  // Any other number is a new count, even the old target typed back.
+  assert.equal(targetOfTyped(70, 61, 60, true), 70);
+  assert.equal(targetOfTyped(60, 61, 60, true), 60);
+  // Without edits the number is the count, as it always was.
+  assert.equal(targetOfTyped(61, 61, 60, false), 61);
+  assert.equal(clusterCount(Int32Array.from([0, 2, 1, 2, -1])), 3);
+  assert.equal(clusterCount(new Int32Array(0)), 0);
+  // The stored parameters keep the target with the edits, so a link solves 60 then splits.
+  const stored = validateParams(JSON.parse(JSON.stringify(params({ panels: 60, edits: [split] }))));
+  assert.ok(stored.ok);
+  assert.equal(stored.value.panels, 60);
+  assert.equal(countAfterEdits(stored.value.panels, stored.value.edits), 61);
+});
+
+test('panel selection: one selected triangle names the panel for the edits and the thickness alike', () => {
+  // Triangles 0-1 in cluster 0 (panel 0), 2-3 in cluster 1 cut into glass pieces 1 and 2,
+  // 4 in cluster 2 whose polygon was not built (no panel).
+  const result = { clusterIds: Int32Array.from([0, 0, 1, 1, 2]), facePanels: Int32Array.from([0, 0, 1, 2, -1]) };
+  const selection = new PanelSelection();
+  let heard = 0;
+  selection.onChange(() => (heard += 1));
+  assert.equal(selection.in(result), null);
+  selection.select(3);
+  selection.select(3); // the same: no change to hear of
+  assert.equal(heard, 1);
+  assert.deepEqual(selection.in(result), { face: 3, cluster: 1, panel: 2 });
+  assert.equal(selection.in(null), null, 'nothing on show: nothing selected there');
+  assert.equal(selectedIn(4, result), null, 'a triangle in no panel');
+  assert.equal(selectedIn(9, result), null, 'a triangle the result does not have');
+  selection.select(null);
+  assert.equal(heard, 2);
+  assert.equal(selection.face, null);
+  assert.deepEqual([...panelsOfClusters(new Set([1]), result)].sort(), [1, 2], 'a locked cluster is all its pieces');
+  assert.deepEqual([...panelsOfClusters(new Set([2]), result)], []);
 });

@@ -10,7 +10,9 @@ import { DesignOpener, type LoadedMesh, type OpenInfo, type OpenOptions } from '
 import { ExamplePicker } from './examplePicker.ts';
 import { designStem } from './exports.ts';
 import { FabricationPanel } from './fabricationPanel.ts';
+import { clusterCount } from './edits/panelEdits.ts';
 import { Outputs } from './outputs.ts';
+import { PanelSelection } from './panelSelection.ts';
 import type { DesignParams } from './params.ts';
 import { ParamsForm } from './paramsForm.ts';
 import { PrepareControl } from './prepareControl.ts';
@@ -43,9 +45,13 @@ export class App {
   private readonly exportObjButton = element('export-obj', HTMLButtonElement);
   private readonly shareButton = element('share', HTMLButtonElement);
   private readonly statsBox = element('stats', HTMLDivElement);
+  // One selected panel for the panel edits and the per-panel thickness.
+  private readonly selection = new PanelSelection();
   private readonly fabrication = new FabricationPanel({
     solver: this.solver,
     viewer: this.viewer,
+    selection: this.selection,
+    panels: () => (this.machine.solving ? null : (this.machine.solved?.result ?? null)),
     stem: () => designStem(this.machine.mesh?.fileName ?? 'design'),
     error: (message) => this.status.error(message),
     settingsChanged: () => this.fabricationChanged(),
@@ -54,6 +60,8 @@ export class App {
   private readonly editor = new DesignEditor({
     form: this.form,
     viewer: this.viewer,
+    selection: this.selection,
+    requestExpression: (expression) => this.solver.expressionDensity(expression),
     error: (message) => this.status.error(message),
     canEdit: () => this.machine.canRemesh,
     solvedChain: () => this.machine.solved?.chain ?? null,
@@ -235,7 +243,7 @@ export class App {
     if (notice) this.status.show(`${notice} ${summary.text}`, 'info'); // it still ends "Done: N panels"
     else this.status.show(summary.text, summary.warning ? 'info' : 'done');
     this.fabrication.panelsChanged(result.panelTriangles.length > 0);
-    this.editor.solved(solved.params, solved.chain);
+    this.editor.solved(solved.params, solved.chain, clusterCount(result.clusterIds));
     this.save({ mesh: mesh.design, params: solved.params, history: solved.chain ? solved.chain.slice(0, -1) : [], fabrication: this.fabrication.current });
     this.updateButtons();
   }
@@ -276,6 +284,9 @@ export class App {
       case 'fabricationFailed':
         this.fabrication.onFailed(message.job, message.message);
         return;
+      case 'expressionDensity':
+        this.editor.expressionAnswered(message.expression, message.values);
+        return;
     }
   }
 
@@ -310,6 +321,7 @@ export class App {
     if (solved) this.viewer.setClusters(solved.result.clusterIds);
     this.opener.pendingNotice = null;
     this.fabrication.workerLost();
+    this.editor.workerReplaced();
     this.opener.syncExampleSelect();
     this.status.resetProgress();
     const parts = [crash.meshKept ? CRASH_MESSAGE : `${CRASH_MESSAGE}, but without the mesh: open it again`];

@@ -11,6 +11,7 @@ import { compactChain, type PanelEdit } from './edits/panelEdits.ts';
 import { History } from './history.ts';
 import { paintKeys, type PaintFields } from './paintFields.ts';
 import { sameParams, toRemeshParams, type DesignParams } from './params.ts';
+import type { PanelSelection } from './panelSelection.ts';
 import type { ParamsForm } from './paramsForm.ts';
 import type { SolveResult, SolveStep } from './protocol.ts';
 import { samePrepare } from './preparation.ts';
@@ -25,6 +26,9 @@ export interface DesignStep {
   // The chain of solves that reproduces this step's panels from the loaded mesh, once solved
   // (null: not solved, or solved in a way no chain reproduces).
   chain: DesignParams[] | null;
+  // The panels it has once solved ("Panels" shows it: after edits it is not params.panels,
+  // the count the solve targeted); null until then.
+  count: number | null;
   // The preparation of the mesh the parameters belong to (their paint and edits name its
   // vertices and triangles): undo across a re-preparation prepares the mesh back.
   prepare: MeshPrepare | undefined;
@@ -33,6 +37,8 @@ export interface DesignStep {
 export interface EditorHost {
   form: ParamsForm;
   viewer: Viewer;
+  selection: PanelSelection; // the page's one selected panel
+  requestExpression(expression: string): void; // its values per vertex, for the density map
   error(message: string): void;
   canEdit(): boolean; // a mesh loaded, none opening
   solvedChain(): DesignParams[] | null; // the chain of the result on show, if reproducible
@@ -62,12 +68,15 @@ export class DesignEditor {
     this.density = new DensityPanel({
       viewer: host.viewer,
       field: () => this.fields.get(host.form.paint) ?? null,
+      expression: () => host.form.densityExpression,
+      requestExpression: (expression) => host.requestExpression(expression),
       canPaint: () => host.canEdit() && host.viewer.surface !== null,
       strokeEnded: (field) => this.paint(isUniform(field) ? null : field),
       clear: () => this.paint(null),
     });
     this.panelEdits = new EditPanel({
       viewer: host.viewer,
+      selection: host.selection,
       result: () => (host.solving() ? null : host.result()),
       edits: () => host.form.edits,
       canEdit: () => host.canEdit() && !host.solving(),
@@ -90,6 +99,16 @@ export class DesignEditor {
     this.pinned = new Set();
   }
 
+  // The core's values of a density expression (DensityPanel.show asked for them).
+  expressionAnswered(expression: string, values: Float64Array): void {
+    this.density.expressionAnswered(expression, values);
+  }
+
+  // A new worker: questions to the old one go unanswered.
+  workerReplaced(): void {
+    this.density.surfaceChanged();
+  }
+
   // A design from a link or the stored session: its fields, before its parameters are used.
   adopt(state: DesignState): void {
     this.pinned = new Set(state.paint?.keys() ?? []);
@@ -98,7 +117,7 @@ export class DesignEditor {
 
   // The mesh of the design is shown: history starts over from its parameters.
   meshLoaded(params: DesignParams, prepare: MeshPrepare | undefined): void {
-    this.history.reset({ kind: 'open', params, chain: null, prepare });
+    this.history.reset({ kind: 'open', params, chain: null, count: null, prepare });
     this.surfaceChanged();
   }
 
@@ -115,7 +134,7 @@ export class DesignEditor {
   reprepared(before: DesignParams, after: DesignParams, prepare: MeshPrepare, paint: Int8Array | null): void {
     if (paint) this.fields.set(after.paint, paint);
     this.host.form.write(after);
-    const step: DesignStep = { kind: 'prepare', params: after, chain: null, prepare };
+    const step: DesignStep = { kind: 'prepare', params: after, chain: null, count: null, prepare };
     const current = this.history.current;
     if (current && current.kind === 'params' && current.chain === null && sameParams(current.params, before)) this.history.replaceCurrent(step);
     else this.history.push(step);
@@ -128,12 +147,16 @@ export class DesignEditor {
     return key === '' ? null : (this.fields.get(key) ?? null);
   }
 
-  // A solve finished: its chain reproduces the current step (or a step of its own when the
-  // parameters were not recorded yet, e.g. Enter before the field's change event).
-  solved(params: DesignParams, chain: DesignParams[] | null): void {
+  // A solve finished with `count` panels: its chain reproduces the current step (or a step of
+  // its own when the parameters were not recorded yet, e.g. Enter before the field's change
+  // event). "Panels" shows the count when the form shows this design.
+  solved(params: DesignParams, chain: DesignParams[] | null, count: number): void {
     const current = this.history.current;
-    if (current && sameParams(current.params, params)) this.history.replaceCurrent({ ...current, chain });
-    else if (!this.history.all.some((step) => sameParams(step.params, params) && samePrepare(step.prepare, this.host.prepared()))) this.history.push({ kind: 'params', params, chain, prepare: this.host.prepared() });
+    const prepare = this.host.prepared();
+    if (current && sameParams(current.params, params)) this.history.replaceCurrent({ ...current, chain, count });
+    else if (!this.history.all.some((step) => sameParams(step.params, params) && samePrepare(step.prepare, prepare))) this.history.push({ kind: 'params', params, chain, count, prepare });
+    const read = this.host.form.read();
+    if (read.ok && sameParams(read.value, params)) this.host.form.showCount(params.panels, count);
     this.prune();
     this.updateButtons();
   }
@@ -145,7 +168,7 @@ export class DesignEditor {
     const current = this.history.current;
     if (!current || current.kind !== 'edit' || current.chain !== null) return;
     const previous = this.history.discardCurrent();
-    if (previous) this.host.form.write(previous.params);
+    if (previous) this.host.form.write(previous.params, previous.count ?? undefined);
     this.updateButtons();
   }
 
@@ -187,7 +210,7 @@ export class DesignEditor {
     }
     const current = this.history.current;
     if (current && sameParams(current.params, read.value)) return; // the stroke changed nothing
-    this.history.push({ kind: 'paint', params: read.value, chain: null, prepare: this.host.prepared() });
+    this.history.push({ kind: 'paint', params: read.value, chain: null, count: null, prepare: this.host.prepared() });
     countOutcome('strokes');
     this.prune();
     this.updateButtons();
@@ -206,7 +229,7 @@ export class DesignEditor {
       this.host.error(read.message);
       return;
     }
-    this.history.push({ kind: 'edit', params: read.value, chain: null, prepare: this.host.prepared() });
+    this.history.push({ kind: 'edit', params: read.value, chain: null, count: null, prepare: this.host.prepared() });
     countOutcome('edits');
     this.prune();
     this.updateButtons();
@@ -216,8 +239,9 @@ export class DesignEditor {
   private formChanged(): void {
     const read = this.host.form.read();
     const current = this.history.current;
+    this.density.show(); // the expression may have changed
     if (!read.ok || !current || sameParams(current.params, read.value)) return;
-    this.history.push({ kind: 'params', params: read.value, chain: null, prepare: this.host.prepared() });
+    this.history.push({ kind: 'params', params: read.value, chain: null, count: null, prepare: this.host.prepared() });
     this.prune();
     this.updateButtons();
   }
@@ -238,7 +262,7 @@ export class DesignEditor {
   // when its chain is known. A step never solved (parameters typed, no Remesh) only goes back
   // in the form, as typing it would: the panels on show stay until Remesh.
   private restore(step: DesignStep): void {
-    this.host.form.write(step.params);
+    this.host.form.write(step.params, step.count ?? undefined);
     this.density.show();
     this.updateButtons();
     // A step on another preparation of the mesh: the mesh is prepared back, then solved.

@@ -7,13 +7,16 @@ import { PanelThicknessControl } from './panelThickness.ts';
 import { FabricationForm } from './fabricationForm.ts';
 import { renderFabricationStats } from './fabricationStats.ts';
 import { downloadText } from './exports.ts';
-import type { FabricationResult } from './protocol.ts';
+import type { PanelSelection } from './panelSelection.ts';
+import type { FabricationResult, SolveResult } from './protocol.ts';
 import type { SolverClient } from './solverClient.ts';
 import type { Viewer } from './view/viewer.ts';
 
 export interface FabricationHost {
   solver: SolverClient;
   viewer: Viewer;
+  selection: PanelSelection; // the page's one selected panel
+  panels(): SolveResult | null; // the panels on show
   stem(): string; // file name stem of the design ("saddle")
   error(message: string): void;
   settingsChanged(): void; // save the session, forget a link in the address bar
@@ -38,7 +41,7 @@ export class FabricationPanel {
   private readonly panelThickness: PanelThicknessControl;
 
   constructor(private readonly host: FabricationHost) {
-    this.panelThickness = new PanelThicknessControl(host.viewer, (label, value) => this.setPanelThickness(label, value));
+    this.panelThickness = new PanelThicknessControl(host.selection, () => host.panels(), (label, value) => this.setPanelThickness(label, value));
     this.form.write(this.settings);
     this.panelThickness.setValues(this.settings.panelThickness, this.settings.units);
     this.form.onChange(() => this.formChanged());

@@ -23,6 +23,9 @@ export interface Anisotropy {
 
 // Every field explicit (unlike RemeshParams), so equal designs compare equal.
 export interface DesignParams {
+  // The count the solve targeted (what links store and the core reads as RemeshParams.panels).
+  // With edits the design has this plus splits minus merges, which "Panels" shows and reads
+  // back as this (edits/panelEdits.ts, countAfterEdits and targetOfTyped).
   panels: number;
   seed: number;
   weights: MetricWeights;

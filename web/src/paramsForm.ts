@@ -2,8 +2,8 @@
 // params.ts, so the form, links and stored sessions share one set of rules.
 import { element } from './dom.ts';
 import { readNumber, setRange } from './formInputs.ts';
-import type { PanelEdit } from './edits/panelEdits.ts';
-import { DENSITY_PRESETS, LIMITS, validateParams, type Checked, type DesignParams } from './params.ts';
+import { countAfterEdits, targetOfTyped, type PanelEdit } from './edits/panelEdits.ts';
+import { checkExpression, DENSITY_PRESETS, LIMITS, validateParams, type Checked, type DesignParams } from './params.ts';
 
 export class ParamsForm {
   private readonly panels = element('panels', HTMLInputElement);
@@ -28,6 +28,11 @@ export class ParamsForm {
   private readonly minCornerAngle = element('min-corner-angle', HTMLInputElement);
   // The per-panel edits (edits/editPanel.ts): made by clicking panels, not typed.
   private editList: PanelEdit[] = [];
+  // "Panels" shows the count now, which after edits is not DesignParams.panels (the count the
+  // solve targeted): the target, and the count shown for it; reading the count shown gives
+  // the target back (edits/panelEdits.ts, targetOfTyped).
+  private target = 0;
+  private shown = 0;
 
   constructor() {
     // The inputs' ranges come from LIMITS (params.ts), the same rules links are checked by.
@@ -81,7 +86,7 @@ export class ParamsForm {
     for (const input of [...this.numberInputs, this.expression, this.stretch]) input.removeAttribute('aria-invalid');
     const number = readNumber;
     const checked = validateParams({
-      panels: number(this.panels),
+      panels: targetOfTyped(number(this.panels), this.shown, this.target, this.editList.length > 0),
       seed: number(this.seed),
       weights: { euclidean: number(this.euclidean), l2: number(this.l2), l21: number(this.l21), boundary: number(this.boundary) },
       lloydIterations: number(this.lloydIterations),
@@ -119,8 +124,11 @@ export class ParamsForm {
     match?.[1].setAttribute('aria-invalid', 'true');
   }
 
-  write(params: DesignParams): void {
-    this.panels.value = String(params.panels);
+  // `count`: the panels the design has (its solve's clusters), when known; else the target
+  // plus splits minus merges, which is what a solve from scratch gives.
+  write(params: DesignParams, count?: number): void {
+    this.editList = params.edits.map((edit) => ({ ...edit }));
+    this.showCount(params.panels, count ?? countAfterEdits(params.panels, params.edits));
     this.seed.value = String(params.seed);
     this.euclidean.value = String(params.weights.euclidean);
     this.l2.value = String(params.weights.l2);
@@ -139,7 +147,6 @@ export class ParamsForm {
     this.direction.value = params.anisotropy.direction;
     this.stretch.value = String(params.anisotropy.stretch);
     this.paintKey = params.paint;
-    this.editList = params.edits.map((edit) => ({ ...edit }));
     for (const input of [...this.numberInputs, this.expression, this.stretch]) input.removeAttribute('aria-invalid');
   }
 
@@ -160,6 +167,20 @@ export class ParamsForm {
   }
 
   setPanels(panels: number): void {
-    this.panels.value = String(panels);
+    this.showCount(panels, panels);
+  }
+
+  // The solved design's count in "Panels" for its target (the form shows that design, edits
+  // included). Without edits "Panels" is the target, as it always was.
+  showCount(target: number, count: number): void {
+    this.target = target;
+    this.shown = this.editList.length > 0 ? count : target;
+    this.panels.value = String(this.shown);
+  }
+
+  // The density expression as the design uses it ('' for none or one the page refuses).
+  get densityExpression(): string {
+    const checked = checkExpression(this.expression.value);
+    return checked.ok ? checked.value : '';
   }
 }

@@ -51,6 +51,9 @@ export type WorkerRequest =
   // The fabrication outputs of the session's current panels with these settings. Its own job
   // numbers (SolverClient.fabricate), so it never disturbs a solve's.
   | { type: 'fabricate'; job: number; settings: FabricationParams }
+  // A density expression's values per vertex of the loaded mesh (the Density colour map shows
+  // expression x paint). Its own job numbers too (SolverClient.expressionDensity).
+  | { type: 'expressionDensity'; job: number; expression: string }
   // Test hook (?crashAfterSteps=N): N steps into its second solve the worker makes a wasm call
   // that throws a non-Status error, as running out of memory would.
   | { type: 'test'; job: 0; crashAfterSteps: number };
@@ -65,6 +68,7 @@ export interface SolveResult {
   panelIndices: Uint32Array;
   panelTriangles: Uint32Array;
   panelTriangleIds: Uint32Array;
+  facePanels: Int32Array; // per mesh triangle: its panel (an index of panelOffsets), -1 none
   // "Before the fix": the same polygons through their mesh corners (layout of panelPositions),
   // and per panel how far each is from planar (distance / diameter).
   cornerPositions: Float64Array;
@@ -102,7 +106,9 @@ export type WorkerResponse =
   | { type: 'solved'; job: number; result: SolveResult }
   | { type: 'cancelled'; job: number }
   | { type: 'fabricated'; job: number; result: FabricationResult }
-  | { type: 'fabricationFailed'; job: number; message: string };
+  | { type: 'fabricationFailed'; job: number; message: string }
+  // Empty `values`: no expression, or one the core refuses (the solve says why).
+  | { type: 'expressionDensity'; job: number; expression: string; values: Float64Array };
 
 // The buffers a message can hand over instead of copying. Each is the fresh array an Embind
 // getter returns (wasm/bindings.cpp copies out of the heap), never a view of the wasm heap
@@ -117,10 +123,12 @@ export function transferablesOf(message: WorkerResponse): Transferable[] {
       return [message.clusterIds.buffer];
     case 'solved': {
       const r = message.result;
-      return [r.clusterIds, r.panelPositions, r.panelOffsets, r.panelIndices, r.panelTriangles, r.panelTriangleIds, r.cornerPositions, r.cornerPlanarity].map((a) => a.buffer);
+      return [r.clusterIds, r.panelPositions, r.panelOffsets, r.panelIndices, r.panelTriangles, r.panelTriangleIds, r.facePanels, r.cornerPositions, r.cornerPlanarity].map((a) => a.buffer);
     }
     case 'fabricated':
       return [message.result.innerPositions.buffer];
+    case 'expressionDensity':
+      return [message.values.buffer];
     default:
       return [];
   }

@@ -34,6 +34,7 @@ export class SolverClient {
   private worker: Worker;
   private job = 0;
   private fabricateJob = 0;
+  private densityJob = 0;
   private quietJob = 0;
   private readonly quietJobs = new Set<number>();
   private loadedMesh: MeshPayload | null = null;
@@ -74,6 +75,10 @@ export class SolverClient {
     }
     if (message.type === 'fabricated' || message.type === 'fabricationFailed') {
       if (message.job === this.fabricateJob) this.events.onMessage(message);
+      return;
+    }
+    if (message.type === 'expressionDensity') {
+      if (message.job === this.densityJob) this.events.onMessage(message);
       return;
     }
     const pendingMesh = this.pendingMeshes.get(message.job);
@@ -137,6 +142,12 @@ export class SolverClient {
     return this.fabricateJob;
   }
 
+  // A density expression's values on the loaded mesh; only the latest request is answered.
+  expressionDensity(expression: string): void {
+    this.densityJob += 1;
+    this.send({ type: 'expressionDensity', job: this.densityJob, expression });
+  }
+
   update(job: number, step: SolveStep): void {
     if (job === this.job) this.send({ type: 'update', job, step });
   }
@@ -149,7 +160,7 @@ export class SolverClient {
     if (this.held) {
       // An earlier cancel is still waiting for the worker, which has not seen this job's
       // requests yet: dropping them is the whole cancel.
-      this.held = this.held.filter((request) => request.type === 'fabricate' || request.job !== job);
+      this.held = this.held.filter((request) => request.type === 'fabricate' || request.type === 'expressionDensity' || request.job !== job);
       return;
     }
     const worker = this.worker;

@@ -137,6 +137,7 @@ function collectResult(target: Session, solveSeconds: number, steps: number): So
     panelIndices: target.panelIndices(),
     panelTriangles: target.panelTriangles(),
     panelTriangleIds: target.panelTriangleIds(),
+    facePanels: target.facePanels(),
     cornerPositions: target.cornerPositions(),
     cornerPlanarity: target.cornerPlanarity(),
     problems,
@@ -248,6 +249,9 @@ function handle(request: WorkerRequest): void {
       post(outcome.ok ? { type: 'fabricated', job: request.job, result: outcome.value } : { type: 'fabricationFailed', job: request.job, message: outcome.message });
       return;
     }
+    case 'expressionDensity':
+      post({ type: 'expressionDensity', job: request.job, expression: request.expression, values: requireSession().expressionDensity(request.expression) });
+      return;
     case 'test':
       crashAfterSteps = request.crashAfterSteps;
       return;

@@ -24,13 +24,28 @@ export function densityColor(log2: number, out: Float32Array, offset: number): v
   for (let k = 1; k <= 3; k++) out[offset + k - 1] = a[k]! + (b[k]! - a[k]!) * t;
 }
 
-// RGB per vertex of a field of levels (densityField.ts), or of a working log2 buffer.
-export function fieldColors(levels: Int8Array | null, vertexCount: number): Float32Array {
+// RGB per vertex of a field of levels (densityField.ts), or of a working log2 buffer. With
+// `expression` (log2 of the density expression per vertex, expressionLog2), the colours show
+// the effective density the solver uses: expression x paint, i.e. the sum of the log2s.
+export function fieldColors(levels: Int8Array | null, vertexCount: number, expression: Float32Array | null = null): Float32Array {
   const rgb = new Float32Array(vertexCount * 3);
-  for (let v = 0; v < vertexCount; v++) densityColor(levels ? levels[v]! / STEPS_PER_OCTAVE : 0, rgb, v * 3);
+  for (let v = 0; v < vertexCount; v++) densityColor((levels ? levels[v]! / STEPS_PER_OCTAVE : 0) + (expression?.[v] ?? 0), rgb, v * 3);
   return rgb;
 }
 
-export function log2Colors(log2: Float32Array, rgb: Float32Array): void {
-  for (let v = 0; v < log2.length; v++) densityColor(Math.round(log2[v]! * STEPS_PER_OCTAVE) / STEPS_PER_OCTAVE, rgb, v * 3);
+export function log2Colors(log2: Float32Array, rgb: Float32Array, expression: Float32Array | null = null): void {
+  for (let v = 0; v < log2.length; v++) densityColor(Math.round(log2[v]! * STEPS_PER_OCTAVE) / STEPS_PER_OCTAVE + (expression?.[v] ?? 0), rgb, v * 3);
+}
+
+// The expression's values (the core's, Session.expressionDensity) as log2 per vertex; null
+// when there are none or not one per vertex (another mesh, an expression the core refused).
+export function expressionLog2(values: Float64Array, vertexCount: number): Float32Array | null {
+  if (values.length === 0 || values.length !== vertexCount) return null;
+  const out = new Float32Array(vertexCount);
+  for (let v = 0; v < vertexCount; v++) {
+    const value = values[v]!;
+    if (!(value > 0) || !Number.isFinite(value)) return null;
+    out[v] = Math.log2(value);
+  }
+  return out;
 }

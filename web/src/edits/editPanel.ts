@@ -1,17 +1,21 @@
 // The "Panel edits" section: click a panel in the view to select it (while the density brush
 // is off), then split it, merge it with a neighbour (the next panel clicked), or lock / unlock
 // it. It owns no design state: the edit list is the design's (DesignParams.edits, kept by the
-// form), each edit goes to the editor (designEditor.ts) as one undoable step.
+// form), each edit goes to the editor (designEditor.ts) as one undoable step. The selection is
+// the page's one (panelSelection.ts), which the per-panel thickness acts on too; this draws
+// its highlight.
 import * as THREE from 'three';
 import { MeshBVH } from 'three-mesh-bvh';
 import { element } from '../dom.ts';
 import type { SolveResult } from '../protocol.ts';
+import { panelsOfClusters, selectedIn, type PanelSelection } from '../panelSelection.ts';
 import type { Viewer } from '../view/viewer.ts';
 import { EditOverlay } from './editOverlay.ts';
 import { lockedPanels, neighbourPanels, type PanelEdit } from './panelEdits.ts';
 
 export interface EditPanelHost {
   viewer: Viewer;
+  selection: PanelSelection;
   result(): SolveResult | null; // the panels on show, null while solving or before any
   edits(): readonly PanelEdit[]; // of the design on show
   canEdit(): boolean; // a mesh loaded, none opening
@@ -31,12 +35,12 @@ export class EditPanel {
   private readonly overlay = new EditOverlay();
   private readonly raycaster = new THREE.Raycaster();
   private bvh: MeshBVH | null = null;
-  private selectedFace: number | null = null;
   private merging = false;
   private press: { x: number; y: number; id: number } | null = null;
 
   constructor(private readonly host: EditPanelHost) {
     host.viewer.addOverlay(this.overlay.group);
+    host.selection.onChange(() => this.show());
     const canvas = host.viewer.canvas;
     canvas.addEventListener('pointerdown', (event) => {
       this.press = event.button === 0 && !event.altKey ? { x: event.clientX, y: event.clientY, id: event.pointerId } : null;
@@ -49,9 +53,9 @@ export class EditPanel {
       this.show();
     });
     window.addEventListener('keydown', (event) => {
-      if (event.key === 'Escape' && (this.merging || this.selectedFace !== null)) {
+      if (event.key === 'Escape' && (this.merging || host.selection.face !== null)) {
         if (this.merging) this.merging = false;
-        else this.selectedFace = null;
+        else host.selection.select(null);
         this.show();
       }
     });
@@ -60,16 +64,17 @@ export class EditPanel {
   // A new surface: nothing selected, picking rebuilt on first use.
   surfaceChanged(): void {
     this.bvh = null;
-    this.selectedFace = null;
     this.merging = false;
+    this.host.selection.select(null);
     this.show();
   }
 
   // The panel under the selected triangle in the result on show.
   private selectedPanel(): number | null {
     const result = this.host.result();
-    if (!result || this.selectedFace === null) return null;
-    const panel = result.clusterIds[this.selectedFace];
+    const face = this.host.selection.face;
+    if (!result || face === null) return null;
+    const panel = result.clusterIds[face];
     return panel === undefined || panel < 0 ? null : panel;
   }
 
@@ -118,18 +123,19 @@ export class EditPanel {
         return;
       }
       this.merging = false;
-      this.host.apply({ op: 'merge', face: this.selectedFace!, with: face });
+      this.host.apply({ op: 'merge', face: this.host.selection.face!, with: face });
       return;
     }
     this.merging = false;
-    this.selectedFace = panel >= 0 ? face : null;
+    this.host.selection.select(panel >= 0 ? face : null);
     this.show();
   }
 
   private edit(op: 'split' | 'lock' | 'unlock'): void {
-    if (this.selectedFace === null || this.selectedPanel() === null || !this.host.canEdit()) return;
+    const face = this.host.selection.face;
+    if (face === null || this.selectedPanel() === null || !this.host.canEdit()) return;
     this.merging = false;
-    this.host.apply({ op, face: this.selectedFace });
+    this.host.apply({ op, face });
   }
 
   // The result on show changed (a solve, undo, a new mesh): redraw and relabel.
@@ -141,7 +147,10 @@ export class EditPanel {
     if (panel === null) this.merging = false;
     const isLocked = panel !== null && locked.has(panel);
     const surface = this.host.viewer.surface;
-    this.overlay.set(result, this.host.viewer.offset, panel, locked, (surface?.diagonal ?? 1) / 60);
+    // Drawn by panel mesh ids (glass pieces and unbuilt clusters make them differ from clusters).
+    const shown = selectedIn(this.host.selection.face, result)?.panel ?? null;
+    const lockedShown = result ? panelsOfClusters(locked, result) : new Set<number>();
+    this.overlay.set(result, this.host.viewer.offset, shown, lockedShown, (surface?.diagonal ?? 1) / 60);
     this.host.viewer.requestRender();
     const can = this.host.canEdit() && result !== null && panel !== null;
     this.splitButton.disabled = !can || isLocked;
@@ -154,7 +163,7 @@ export class EditPanel {
     else if (!result) this.hint.textContent = 'Solve first, then click a panel in the view to edit it.';
     else if (this.merging) this.hint.textContent = 'Click a neighbouring panel to merge the selected one with (Esc: stop).';
     else if (panel === null) this.hint.textContent = 'Click a panel in the view to select it (the density brush must be off).';
-    else this.hint.textContent = `Panel ${panel} selected${isLocked ? ' (locked: unlock it to split or merge)' : ''}. Esc: clear.`;
+    else this.hint.textContent = `${shown === null ? `Panel ${panel}` : `P${shown + 1}`} selected${isLocked ? ' (locked: unlock it to split or merge)' : ''}. Esc: clear.`;
     const count = (op: PanelEdit['op']): number => edits.filter((e) => e.op === op).length;
     const parts = [`${count('split')} split`, `${count('merge')} merged`, `${locked.size} locked`];
     const panels = result ? Math.max(0, result.panelOffsets.length - 1) : 0;

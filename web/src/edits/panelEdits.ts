@@ -100,6 +100,33 @@ export function neighbourPanels(panel: number, clusterIds: ArrayLike<number>, in
   return found;
 }
 
+// The panels a design has after its edits when solved from scratch: the count the solve
+// targeted (DesignParams.panels) plus splits minus merges. (A new count typed after edits is
+// reached from the edited design, so there the solve's own count is the truth: clusterCount.)
+export function countAfterEdits(panels: number, edits: readonly PanelEdit[]): number {
+  let count = panels;
+  for (const edit of edits) {
+    if (edit.op === 'split') count += 1;
+    else if (edit.op === 'merge') count -= 1;
+  }
+  return count;
+}
+
+// The panels (clusters) of a result: ids run 0 .. n-1.
+export function clusterCount(clusterIds: ArrayLike<number>): number {
+  let max = -1;
+  for (let i = 0; i < clusterIds.length; i++) max = Math.max(max, clusterIds[i]!);
+  return max + 1;
+}
+
+// What "Panels" stands for: it shows the count now (`shown`), which after edits differs from
+// the count the solve targeted (`target`, what DesignParams.panels stores, so links replay).
+// The count shown, read back with edits, is the target: no change, no re-solve (the core
+// agrees: Remesher::kept_count). Any other number typed is a new count to reach.
+export function targetOfTyped(typed: number, shown: number, target: number, hasEdits: boolean): number {
+  return hasEdits && typed === shown ? target : typed;
+}
+
 export function describeEdit(edit: PanelEdit): string {
   switch (edit.op) {
     case 'split':
