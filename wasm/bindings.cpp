@@ -53,6 +53,16 @@ EMSCRIPTEN_BINDINGS(flatfacet) {
       .function("loadSurfaces", &load_surfaces)
       .function("prepare", &Session::prepare)
       .function("setRepair", &Session::set_repair)
+      .function(
+          "transferField",
+          +[](const Session& s, const val& values) {
+            return to_typed_array(s.transfer_field(from_typed_array<double>(values)), "Float64Array");
+          })
+      .function(
+          "remapFaces",
+          +[](const Session& s, const val& faces) {
+            return to_typed_array(s.remap_faces(from_typed_array<std::int32_t>(faces)), "Int32Array");
+          })
       .function("setParams", &Session::set_params)
       .function(
           "setDensity", +[](Session& s, const val& density) { return s.set_density(from_typed_array<double>(density)); })

@@ -166,11 +166,18 @@ export interface Session {
   // A generated example: 'saddle' | 'barrel_vault' | 'groin_vault' | 'helicoid' | 'freeform_roof'
   // | 'torus' | 'bump' | 'roof_with_hole' | 'twisted_strip', with about `triangles` triangles.
   loadShape(name: string, triangles: number): string;
-  // Right after a load: subdivide `subdivide` levels (0..4; Loop on triangles, else
+  // After a load, and again whenever the panel count outgrows the mesh: from the mesh as
+  // loaded (kept in the session), subdivide `subdivide` levels (0..4; Loop on triangles, else
   // Catmull-Clark on the file's polygons), then refine to the resolution `panels` need (below
-  // 20 triangles per panel; else the mesh stays as loaded). MeshInfo JSON, its cleanup saying
-  // what was done and why; a Status on failure (the loaded mesh kept).
-  prepare(panels: number, subdivide: number): string;
+  // 20 triangles per panel; else the mesh stays as loaded), or to `edgeLength` when > 0 (0:
+  // automatic). MeshInfo JSON, its `prepared` saying what was done and why; a Status on
+  // failure (the mesh kept).
+  prepare(panels: number, subdivide: number, edgeLength: number): string;
+  // Carried from the mesh before the last prepare() that changed it to the mesh now: values
+  // per vertex (closest point, barycentric), triangle ids (nearest centroid). Empty arrays
+  // when refused (wrong length, an id out of range, no mesh before).
+  transferField(values: Float64Array): Float64Array;
+  remapFaces(faces: Int32Array): Int32Array;
   // How the next loads repair the mesh (issue 7): fill holes of at most `fillHoles` edges
   // (0 = off, at most 500); with `largestPart`, a mesh with non-manifold edges is cut there and
   // its largest manifold part kept. Without it such a load fails with a NonManifoldStatus.

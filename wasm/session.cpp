@@ -74,6 +74,8 @@ std::string Session::load(const std::string& name, TriMesh raw, int input_triang
   // Everything built: only now replace the previous design.
   name_ = name;
   mesh_ = std::move(clean.mesh);
+  original_ = mesh_;
+  previous_ = TriMesh{};
   topology_ = std::move(topology);
   face_polygon_ = std::move(face_polygon);
   input_triangles_ = input_triangles;

@@ -44,12 +44,18 @@ class Session {
   // "surfaces": [{"name", "triangles", "samplesU", "samplesV", "seamWelded"}].
   std::string load_surfaces(const std::string& name, const std::string& surfaces_json,
                             const std::vector<double>& positions, const std::vector<std::uint32_t>& indices);
-  // Right after a load (wasm/session_prepare.cpp): subdivide the mesh as a control mesh
-  // `subdivide` levels (Loop on triangles, else Catmull-Clark on the file's polygons), then
-  // remesh it to the resolution `panels` need (core/prepare/prepare.h: refined below 20
-  // triangles per panel, else untouched bit for bit). MeshInfo JSON whose "prepared" lists
-  // what was done and why; on failure a Status and the loaded mesh stays as it was.
-  std::string prepare(int panels, int subdivide);
+  // After a load (wasm/session_prepare.cpp), and again whenever the panel count outgrows the
+  // mesh: from the mesh as loaded, subdivide it as a control mesh `subdivide` levels (Loop on
+  // triangles, else Catmull-Clark on the file's polygons), then remesh it to the resolution
+  // `panels` need (core/prepare/prepare.h: refined below 20 triangles per panel, else
+  // untouched bit for bit), or to `edge_length` when > 0 (0: automatic). MeshInfo JSON whose
+  // "prepared" lists what was done and why; on failure a Status and the mesh stays as it was.
+  std::string prepare(int panels, int subdivide, double edge_length);
+  // What was attached to the mesh before the last prepare() that changed it, carried to the
+  // mesh now (core/prepare/mesh_transfer.h): per-vertex values by closest point, triangle ids
+  // by nearest centroid. Empty when refused (wrong length, an id out of range, no mesh before).
+  std::vector<double> transfer_field(const std::vector<double>& values) const;
+  std::vector<std::int32_t> remap_faces(const std::vector<std::int32_t>& faces) const;
   // How the next loads repair the mesh (wasm/session_repair.cpp, core/mesh/clean.h): fill
   // holes of at most `fill_holes` edges (0 = off, at most 500) and, with `largest_part`, cut
   // a mesh with non-manifold edges there and keep its largest manifold part (otherwise such
@@ -138,15 +144,17 @@ class Session {
   bool apply_edits_only(const std::string& key, const RemeshParams& params);
 
   std::string name_;
-  TriMesh mesh_;  // cleaned
+  TriMesh mesh_;      // cleaned, then prepared
+  TriMesh original_;  // cleaned as loaded: what every prepare() starts from
+  TriMesh previous_;  // the mesh before the last prepare() that changed it
   MeshTopology topology_;
   std::vector<std::string> cleanup_;   // what clean-up repaired, one sentence each
   CleanOptions repair_;                // set_repair(): how loads repair the mesh
   CleanReport clean_report_;           // of the loaded mesh
   std::vector<std::string> prepared_notes_;  // what prepare() did and why
-  std::vector<int> face_polygon_;     // per cleaned triangle: its polygon in the file
+  std::vector<int> face_polygon_;     // per triangle of original_: its polygon in the file
   int input_triangles_ = 0;
-  bool prepared_ = false;  // prepare() ran on this load
+  bool prepared_ = false;  // mesh_ is not original_ (prepare() changed it)
   RemeshParams params_;
   FabricationSettings fabrication_;
   // The last cut-sheet packing and what it was packed from (session_fabrication.cpp): one

@@ -4,9 +4,12 @@
 // context prepares the same mesh and exports the very same OBJ. Run after `npm run build`.
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
-import { browserSuite, download, maxPlanarity, parseObj, screenshot, selectExample, solveAfter, waitForDone } from './harness.mjs';
+import { unzlibSync, zlibSync } from 'fflate';
+import { browserSuite, download, errorAfter, exampleLink, maxPlanarity, parseObj, remesh, screenshot, selectExample, setPanels, solveAfter, waitForDone } from './harness.mjs';
 
 const suite = browserSuite();
+// A quick start (the default example is a 50k-triangle tower, slow to solve here).
+const quick = { panels: 30, seed: 1, weights: { euclidean: 1, l2: 1, l21: 1, boundary: 1 }, lloydIterations: 20, panelRounds: 30, seeding: 'farthest', teleport: true, singlePointNodes: false, optimizePlanes: true };
 
 const cleanupNote = (page) => page.locator('#mesh-prepared').textContent();
 
@@ -36,3 +39,153 @@ test('a coarse mesh is refined for its panels, subdivided on request, and a link
       assert.equal((await download(opened, 'Export OBJ')).text, subdivided, 'the link prepares the same mesh: the same OBJ bytes');
     });
   }));
+
+// Issue 7: a panel count the prepared mesh cannot serve prepares it again, from the mesh as
+// loaded, as one undoable step recorded in the design.
+test('raising Panels prepares the mesh again: the note, valid panels, the same OBJ from the link, and undo', () =>
+  suite.withPage(exampleLink(suite.url, 'saddle', quick), async (page) => {
+    await waitForDone(page);
+    assert.equal(await solveAfter(page, () => selectExample(page, 'YasIsland')), 150);
+    const note150 = await cleanupNote(page);
+    assert.match(note150, /so 150 panels get/);
+    const obj150 = (await download(page, 'Export OBJ')).text;
+
+    await setPanels(page, 1200);
+    assert.equal(await solveAfter(page, () => remesh(page), 900_000), 1200);
+    const note1200 = await cleanupNote(page);
+    assert.match(note1200, /refined 1,952 triangles to [\d,]+ \(target edge [\d.]+\) so 1,200 panels get about [\d.]+ triangles each/);
+    const triangles = Number(/([\d,]+) triangles/.exec(await page.locator('#mesh-details').textContent())[1].replace(/,/g, ''));
+    assert.ok(triangles >= 1200 * 20, `${triangles} triangles for 1,200 panels`);
+    assert.match(await page.locator('#stats').textContent(), /Invalid\s*0\s*Topology\s*preserved/);
+    const obj1200 = (await download(page, 'Export OBJ')).text;
+    const panels = parseObj(obj1200);
+    assert.equal(panels.faces.length, 1200);
+    assert.ok(maxPlanarity(panels) <= 1e-9);
+    await screenshot(page, 'yasisland-prepared-1200');
+
+    await page.getByRole('button', { name: 'Copy share link' }).click();
+    await page.waitForFunction(() => location.hash.startsWith('#v1='));
+    const link = await page.evaluate(() => location.href);
+    await suite.withPage(link, async (opened) => {
+      assert.equal(await waitForDone(opened, undefined, 900_000), 1200);
+      assert.equal(await cleanupNote(opened), note1200);
+      assert.equal((await download(opened, 'Export OBJ')).text, obj1200, 'the link prepares the same mesh: the same OBJ bytes');
+    });
+
+    assert.equal(await solveAfter(page, () => page.getByRole('button', { name: 'Undo' }).click(), 300_000), 150);
+    assert.equal(await cleanupNote(page), note150, 'the mesh prepared for 150 panels again');
+    assert.equal(await page.getByLabel('Panels', { exact: true }).inputValue(), '150');
+    assert.equal((await download(page, 'Export OBJ')).text, obj150, 'undo gives back the very same panels');
+  }));
+
+// A link's payload (web/src/share.ts): u32 JSON length | JSON | mesh bytes | paint bytes.
+function linkOf(url, json, meshBytes, paint) {
+  const text = new TextEncoder().encode(JSON.stringify(json));
+  const payload = new Uint8Array(4 + text.length + meshBytes.length + paint.length);
+  new DataView(payload.buffer).setUint32(0, text.length, true);
+  payload.set(text, 4);
+  payload.set(meshBytes, 4 + text.length);
+  payload.set(new Uint8Array(paint.buffer), 4 + text.length + meshBytes.length);
+  return `${url}#v1=${Buffer.from(zlibSync(payload)).toString('base64url')}`;
+}
+
+function readLink(href) {
+  const payload = unzlibSync(Buffer.from(href.slice(href.indexOf('#v1=') + 4), 'base64url'));
+  const length = new DataView(payload.buffer, payload.byteOffset).getUint32(0, true);
+  const json = JSON.parse(new TextDecoder().decode(payload.subarray(4, 4 + length)));
+  const paintAt = 4 + length + (json.mesh.size ?? 0);
+  return { json, paint: new Int8Array(payload.buffer, payload.byteOffset + paintAt, payload.length - paintAt) };
+}
+
+// web/src/brush/densityField.ts fieldKey, the content key a link's field must hash to.
+function fieldKey(field) {
+  let a = 0x811c9dc5 ^ field.length;
+  let b = 0x01000193 ^ Math.imul(field.length, 0x9e3779b1);
+  for (let i = 0; i < field.length; i++) {
+    const byte = field[i] & 0xff;
+    a = Math.imul(a ^ byte, 0x01000193);
+    b = Math.imul(b ^ byte, 0x5bd1e995);
+    b ^= b >>> 15;
+  }
+  return (a >>> 0).toString(16).padStart(8, '0') + (b >>> 0).toString(16).padStart(8, '0');
+}
+
+// A flat 12 x 12 grid of quads (288 triangles) and a link that opens it for 4 panels, painted
+// (level 32, 4x density, where x > 6) with one lock edit.
+const n = 12;
+function gridLink({ edits = [{ op: 'lock', face: 0 }] } = {}) {
+  const lines = [];
+  for (let j = 0; j <= n; j++) for (let i = 0; i <= n; i++) lines.push(`v ${i} ${j} 0`);
+  for (let j = 0; j < n; j++) for (let i = 0; i < n; i++) {
+    const v = (a, b) => b * (n + 1) + a + 1;
+    lines.push(`f ${v(i, j)} ${v(i + 1, j)} ${v(i + 1, j + 1)} ${v(i, j + 1)}`);
+  }
+  const bytes = new TextEncoder().encode(`${lines.join('\n')}\n`);
+  const paint = Int8Array.from({ length: (n + 1) * (n + 1) }, (_, k) => (k % (n + 1) > 6 ? 32 : 0));
+  const key = fieldKey(paint);
+  const params = { ...quick, panels: 4, paint: key, edits };
+  return { paint, link: linkOf(suite.url, { v: 1, mesh: { file: 'grid.obj', size: bytes.length, prepare: { panels: 4, subdivide: 0 } }, params, history: [], paint: [{ key, vertices: paint.length }] }, bytes, paint) };
+}
+
+test('preparing again carries the paint (by position) and the panel edits to the new mesh', () => {
+  const { paint, link } = gridLink();
+  return suite.withPage(link, async (page) => {
+    assert.equal(await waitForDone(page), 4);
+    assert.match(await page.locator('#mesh-details').textContent(), /^288 triangles/);
+    await setPanels(page, 20);
+    assert.equal(await solveAfter(page, () => remesh(page), 300_000), 20);
+    assert.match(await cleanupNote(page), /refined 288 triangles to [\d,]+ .*20 panels/);
+    const details = await page.locator('#mesh-details').textContent();
+    const triangles = Number(/^([\d,]+) triangles/.exec(details)[1].replace(/,/g, ''));
+    const vertices = Number(/([\d,]+) vertices/.exec(details)[1].replace(/,/g, ''));
+    await page.getByRole('button', { name: 'Copy share link' }).click();
+    await page.waitForFunction(() => location.hash.startsWith('#v1='));
+    const shared = readLink(await page.evaluate(() => location.href));
+    assert.deepEqual(shared.json.mesh.prepare, { panels: 20, subdivide: 0 }, 'the new preparation is recorded');
+    assert.equal(shared.json.history.length, 0, 'solved afresh on the prepared mesh');
+    const carried = shared.paint;
+    assert.equal(carried.length, vertices, 'one level per vertex of the prepared mesh');
+    assert.equal(shared.json.params.paint, fieldKey(carried));
+    assert.ok(carried.includes(32) && carried.includes(0), 'both sides of the paint are still there');
+    assert.ok(carried.every((level) => level >= 0 && level <= 32), 'nothing outside the painted range');
+    const edits = shared.json.params.edits;
+    assert.equal(edits.length, 1);
+    assert.equal(edits[0].op, 'lock');
+    assert.ok(edits[0].face >= 0 && edits[0].face < triangles, 'the lock names a triangle of the prepared mesh');
+
+    // Undo: the 288-triangle mesh and the paint and edit as they were.
+    assert.equal(await solveAfter(page, () => page.getByRole('button', { name: 'Undo' }).click()), 4);
+    assert.match(await page.locator('#mesh-details').textContent(), /^288 triangles/);
+    await page.getByRole('button', { name: 'Copy share link' }).click();
+    await page.waitForFunction((before) => location.hash.startsWith('#v1=') && location.href !== before, link);
+    const back = readLink(await page.evaluate(() => location.href));
+    assert.deepEqual(back.json.mesh.prepare, { panels: 4, subdivide: 0 });
+    assert.deepEqual(back.json.params.edits, [{ op: 'lock', face: 0 }]);
+    assert.deepEqual([...back.paint], [...paint]);
+  });
+});
+
+test('a Target edge length prepares the mesh to it, travels in the link, and a bad one is refused', () => {
+  // No edits here: a lock makes a warm-started count change keep 4 panels (the core's rule for
+  // edits, not the preparation's).
+  const { link } = gridLink({ edits: [] });
+  return suite.withPage(link, async (page) => {
+    assert.equal(await waitForDone(page), 4);
+    const edge = page.getByLabel('Target edge length');
+    assert.equal(await edge.inputValue(), '', 'automatic');
+    assert.equal(await solveAfter(page, () => edge.fill('0.5').then(() => edge.blur())), 4);
+    assert.match(await cleanupNote(page), /remeshed 288 triangles to [\d,]+ \(target edge 0\.5\).*at the edge length asked for/);
+    const triangles = Number(/^([\d,]+) triangles/.exec(await page.locator('#mesh-details').textContent())[1].replace(/,/g, ''));
+    assert.ok(triangles > 1000, `${triangles} triangles at edge 0.5 on a 12 x 12 square`);
+    await page.getByRole('button', { name: 'Copy share link' }).click();
+    await page.waitForFunction((before) => location.hash.startsWith('#v1=') && location.href !== before, link);
+    assert.deepEqual(readLink(await page.evaluate(() => location.href)).json.mesh.prepare, { panels: 4, subdivide: 0, edgeLength: 0.5 });
+    // Raising the count keeps the designer's resolution: no new preparation.
+    await setPanels(page, 8);
+    assert.equal(await solveAfter(page, () => remesh(page)), 8);
+    assert.match(await page.locator('#mesh-details').textContent(), new RegExp(`^${triangles.toLocaleString('en')} triangles`));
+    const message = await errorAfter(page, () => edge.fill('-1').then(() => edge.blur()));
+    assert.match(message, /Target edge length must be a positive number/);
+    assert.equal(await edge.getAttribute('aria-invalid'), 'true');
+  });
+});

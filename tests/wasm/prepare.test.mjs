@@ -1,7 +1,9 @@
 // Session.prepare, the page's preparation of an opened mesh (issue 7): a coarse quad mesh is
 // refined for its panel count and solves to valid panels; subdivision of the file's quads;
 // a mesh fine enough stays exactly as loaded; bad requests come back as messages and leave
-// the loaded mesh as it was.
+// the loaded mesh as it was. Preparing again (a panel count the mesh cannot serve) starts
+// from the mesh as loaded, so it gives the mesh opening at that count gives; painted values
+// and edited triangles are carried over (transferField, remapFaces).
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
@@ -21,7 +23,7 @@ function loaded(file = 'YasIsland.off', bytes = yas) {
 test('a coarse quad mesh is refined for its panels, says so, and solves to valid planar panels', () => {
   const { s, info } = loaded();
   assert.equal(info.triangles, 1952);
-  const prepared = json(s.prepare(300, 0));
+  const prepared = json(s.prepare(300, 0, 0));
   assert.equal(prepared.ok, true, prepared.message);
   assert.ok(prepared.triangles >= 300 * 20, `${prepared.triangles} triangles for 300 panels`);
   assert.ok(prepared.prepared.some((line) => /^refined 1,952 triangles to [\d,]+ .*300 panels/.test(line)), prepared.prepared.join(' | '));
@@ -39,7 +41,7 @@ test('a coarse quad mesh is refined for its panels, says so, and solves to valid
 
 test('subdivision levels use the file\'s quads (Catmull-Clark) and name what they did', () => {
   const { s } = loaded();
-  const prepared = json(s.prepare(150, 1));
+  const prepared = json(s.prepare(150, 1, 0));
   assert.equal(prepared.ok, true, prepared.message);
   assert.equal(prepared.triangles, 976 * 4 * 2, 'each quad into 4 quads, each quad into 2 triangles');
   assert.match(prepared.prepared.join(' | '), /subdivided 976 polygons 1 level \(catmull-clark\) into 7,808 triangles/);
@@ -50,7 +52,7 @@ test('a mesh fine enough for its panels stays exactly as loaded', () => {
   const inspired = readFileSync(path.join(meshes, 'inspired_mesh.obj'));
   const { s, info } = loaded('inspired_mesh.obj', inspired);
   const before = s.inputPositions();
-  const prepared = json(s.prepare(42, 0));
+  const prepared = json(s.prepare(42, 0, 0));
   assert.deepEqual(prepared, info, 'the same mesh info, no notes added');
   assert.deepEqual(s.inputPositions(), before);
   s.delete();
@@ -64,15 +66,122 @@ test('bad requests are refused by name and the loaded mesh stays', () => {
     [0, 0, /panel count must be at least 1/],
     [5_000_000, 0, /at most/],
   ]) {
-    const status = json(s.prepare(panels, levels));
+    const status = json(s.prepare(panels, levels, 0));
     assert.equal(status.ok, false, `prepare(${panels}, ${levels})`);
     assert.match(status.message, pattern);
     assert.equal(s.inputIndices().length, info.triangles * 3, 'still the loaded mesh');
   }
-  assert.equal(json(s.prepare(300, 0)).ok, true);
-  assert.match(json(s.prepare(300, 0)).message, /already prepared/);
+  for (const edge of [-1, Number.NaN, Infinity]) {
+    const status = json(s.prepare(150, 0, edge));
+    assert.equal(status.ok, false, `edge length ${edge}`);
+    assert.match(status.message, /target edge length must be a positive number/);
+  }
+  assert.match(json(s.prepare(150, 0, 1e-6)).message, /.+/, 'an edge length far too small is refused by the core');
+  assert.equal(json(s.prepare(150, 0, 1e-6)).ok, false);
+  assert.equal(s.inputIndices().length, info.triangles * 3, 'still the loaded mesh');
   const empty = new ff.Session();
-  assert.match(json(empty.prepare(10, 0)).message, /no mesh loaded/);
+  assert.match(json(empty.prepare(10, 0, 0)).message, /no mesh loaded/);
   empty.delete();
+  s.delete();
+});
+
+function meshOf(s) {
+  return { positions: s.inputPositions(), indices: s.inputIndices() };
+}
+
+test('preparing again starts from the mesh as loaded: the same mesh as opening at that count', () => {
+  const { s } = loaded();
+  assert.equal(json(s.prepare(150, 0, 0)).ok, true);
+  const at150 = meshOf(s);
+  const again = json(s.prepare(1200, 0, 0));
+  assert.equal(again.ok, true, again.message);
+  assert.ok(again.triangles >= 1200 * 20, `${again.triangles} triangles for 1,200 panels`);
+  assert.match(again.prepared.join(' | '), /^refined 1,952 triangles to [\d,]+ .*1,200 panels/);
+  const { s: fresh } = loaded();
+  assert.deepEqual(json(fresh.prepare(1200, 0, 0)), again, 'the same mesh info');
+  assert.deepEqual(meshOf(s), meshOf(fresh), 'the very same vertices and triangles');
+  // And back: the 150-panel mesh again, bit for bit.
+  assert.equal(json(s.prepare(150, 0, 0)).ok, true);
+  assert.deepEqual(meshOf(s), at150);
+  // A count the loaded mesh serves: the mesh as loaded, notes gone.
+  const inspired = loaded('inspired_mesh.obj', readFileSync(path.join(meshes, 'inspired_mesh.obj')));
+  const before = inspired.s.inputPositions();
+  assert.ok(json(inspired.s.prepare(2000, 0, 0)).prepared.length > 0, 'refined for 2,000 panels');
+  const back = json(inspired.s.prepare(42, 0, 0));
+  assert.deepEqual(back, inspired.info, 'as loaded again');
+  assert.deepEqual(inspired.s.inputPositions(), before);
+  // A solve on the prepared mesh, then preparing again: the session holds no solve after it.
+  assert.equal(json(s.setParams(JSON.stringify({ panels: 150 }))).ok, true);
+  assert.equal(solve(s).stage, 'Done');
+  assert.equal(json(s.prepare(1200, 0, 0)).ok, true);
+  assert.ok(s.clusterIds().every((id) => id === -1), 'no panels of the previous mesh');
+  assert.equal(s.objText(), '', 'nothing to export before the next solve');
+  inspired.s.delete();
+  fresh.delete();
+  s.delete();
+});
+
+test('a target edge length remeshes to it, whatever the count, and says so', () => {
+  const { s, info } = loaded();
+  const edge = info.bboxDiagonal / 100;
+  const prepared = json(s.prepare(150, 0, edge));
+  assert.equal(prepared.ok, true, prepared.message);
+  assert.match(prepared.prepared.join(' | '), /target edge/);
+  const positions = s.inputPositions();
+  const indices = s.inputIndices();
+  let sum = 0;
+  for (let t = 0; t < indices.length; t += 3) {
+    for (let k = 0; k < 3; k++) {
+      const a = indices[t + k] * 3, b = indices[t + ((k + 1) % 3)] * 3;
+      sum += Math.hypot(positions[a] - positions[b], positions[a + 1] - positions[b + 1], positions[a + 2] - positions[b + 2]);
+    }
+  }
+  const mean = sum / indices.length;
+  assert.ok(mean > 0.6 * edge && mean < 1.4 * edge, `mean edge ${mean} for a target of ${edge}`);
+  const { s: other } = loaded();
+  assert.deepEqual(json(other.prepare(900, 0, edge)).triangles, prepared.triangles, 'the count does not change it');
+  other.delete();
+  s.delete();
+});
+
+// A linear function of position: what carried values should still be, up to the distance
+// between the two meshes (both lie on the surface as loaded).
+function linear(p) {
+  return 0.02 * p[0] - 0.03 * p[1] + 0.05 * p[2];
+}
+
+test('painted values and edited triangles are carried to the mesh prepared again', () => {
+  const { s } = loaded();
+  assert.equal(json(s.prepare(150, 0, 0)).ok, true);
+  const old = s.inputPositions();
+  const oldIndices = s.inputIndices();
+  const values = new Float64Array(old.length / 3);
+  for (let v = 0; v < values.length; v++) values[v] = linear([old[3 * v], old[3 * v + 1], old[3 * v + 2]]);
+  const info = json(s.prepare(1200, 0, 0));
+  const carried = s.transferField(values);
+  assert.equal(carried.length, info.vertices, 'one value per new vertex');
+  const now = s.inputPositions();
+  let worst = 0;
+  for (let v = 0; v < carried.length; v++) worst = Math.max(worst, Math.abs(carried[v] - linear([now[3 * v], now[3 * v + 1], now[3 * v + 2]])));
+  const spread = Math.max(...values) - Math.min(...values);
+  assert.ok(worst < 0.01 * spread, `carried within ${worst} of the linear field (range ${spread})`);
+  // A constant stays exactly that constant (the weights sum to one).
+  const levels = s.transferField(new Float64Array(values.length).fill(16));
+  assert.ok(levels.every((x) => Math.abs(x - 16) < 1e-9));
+  // Triangles: the nearest centroid, which lies within an old triangle's size of the old one.
+  const centroid = (p, idx, f) => [0, 1, 2].map((c) => (p[idx[3 * f] * 3 + c] + p[idx[3 * f + 1] * 3 + c] + p[idx[3 * f + 2] * 3 + c]) / 3);
+  const faces = Int32Array.from([0, 17, 500, oldIndices.length / 3 - 1]);
+  const mapped = s.remapFaces(faces);
+  assert.equal(mapped.length, faces.length);
+  const nowIndices = s.inputIndices();
+  for (let i = 0; i < faces.length; i++) {
+    assert.ok(mapped[i] >= 0 && mapped[i] < info.triangles);
+    const a = centroid(old, oldIndices, faces[i]);
+    const b = centroid(now, nowIndices, mapped[i]);
+    assert.ok(Math.hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]) < info.bboxDiagonal / 50, `face ${faces[i]} -> ${mapped[i]}`);
+  }
+  // Refusals: the wrong length, a triangle that does not exist.
+  assert.equal(s.transferField(new Float64Array(3)).length, 0);
+  assert.equal(s.remapFaces(Int32Array.from([oldIndices.length / 3])).length, 0);
   s.delete();
 });

@@ -1,56 +1,31 @@
 // The page's controller: turns clicks into worker requests and worker answers into what the
 // page shows. The design's state and its rules (what may run when, warm starts, which answer
-// belongs to which request) live in designMachine.ts; downloads, links and the session note
-// in outputs.ts; this file wires them to the worker, the view and the status line.
-import type { MeshInfo } from '@flatfacet/wasm';
+// belongs to which request) live in designMachine.ts; opening a design and preparing its mesh
+// again in designOpener.ts; downloads, links and the session note in outputs.ts; this file
+// wires them to the worker, the view and the status line.
 import { countOutcome, element } from './dom.ts';
 import { DesignEditor } from './designEditor.ts';
 import { DesignMachine, type ChainLoss } from './designMachine.ts';
-import { ExamplePicker, showMeshInfo } from './examplePicker.ts';
+import { DesignOpener, type LoadedMesh, type OpenInfo, type OpenOptions } from './designOpener.ts';
+import { ExamplePicker } from './examplePicker.ts';
 import { designStem } from './exports.ts';
 import { FabricationPanel } from './fabricationPanel.ts';
-import { describeDesign, findExample } from './examples.ts';
-import { checkEditsFit, clusterCount } from './edits/panelEdits.ts';
-import { payloadFromExample, payloadFromFile } from './meshFiles.ts';
+import { clusterCount } from './edits/panelEdits.ts';
 import { Outputs } from './outputs.ts';
 import { PanelSelection } from './panelSelection.ts';
-import { rhinoLoaded } from './rhino/rhinoOpen.ts';
 import type { DesignParams } from './params.ts';
 import { ParamsForm } from './paramsForm.ts';
 import { PrepareControl } from './prepareControl.ts';
-import type { MeshRepair } from './meshRepair.ts';
 import { RepairControl } from './repairControl.ts';
 import type { SolveResult, WorkerResponse } from './protocol.ts';
 import { saveSession } from './sessionStore.ts';
-import { MAX_HISTORY, type DesignMesh, type DesignState } from './share.ts';
+import { MAX_HISTORY, type DesignState } from './share.ts';
 import { SolverClient, solverTestHooks, type Crash } from './solverClient.ts';
 import { renderStats } from './stats.ts';
 import { solvedSummary, StatusView } from './statusView.ts';
-import { guessUpAxis } from './view/upAxis.ts';
 import { Viewer } from './view/viewer.ts';
 
-interface LoadedMesh {
-  design: DesignMesh;
-  label: string;
-  fileName: string;
-  info: MeshInfo;
-}
-
-interface OpenInfo {
-  design: DesignMesh;
-  label: string;
-  fileName: string;
-  up: 'y' | 'z' | 'guess';
-  params: DesignParams;
-  history: DesignParams[];
-  solve: boolean;
-}
-
-export interface OpenOptions {
-  solve: boolean;
-  note: string; // said in the status while loading, e.g. "Opening the shared design"
-  fromLink?: boolean; // keeps the link in the address bar (it describes this design)
-}
+export type { OpenOptions };
 
 export const CRASH_MESSAGE = 'the solver ran out of memory or crashed and was restarted; the last result is kept';
 
@@ -64,11 +39,9 @@ export class App {
   private readonly form = new ParamsForm();
   private readonly preparation = new PrepareControl();
   private readonly repair = new RepairControl();
-  // The last open sent to the worker: what "Use largest manifold part" opens again.
-  private lastOpen: { design: DesignMesh; params: DesignParams; history: DesignParams[]; options: OpenOptions } | null = null;
   private readonly status = new StatusView();
   private readonly outputs = new Outputs();
-  private readonly examples = new ExamplePicker((id) => void this.openExample(id));
+  private readonly examples = new ExamplePicker((id) => void this.opener.openExample(id));
   private readonly remeshButton = element('remesh', HTMLButtonElement);
   private readonly cancelButton = element('cancel', HTMLButtonElement);
   private readonly exportObjButton = element('export-obj', HTMLButtonElement);
@@ -98,9 +71,28 @@ export class App {
     result: () => this.machine.solved?.result ?? null,
     remesh: () => this.remesh(),
     replay: (chain) => this.replay(chain),
+    prepared: () => this.machine.mesh?.design.prepare,
+    // A design from before preparations were recorded has none: the nearest is no subdivision.
+    reprepare: (prepare, chain) => this.opener.prepareAgain(prepare ?? { panels: chain[chain.length - 1]!.panels, subdivide: 0 }, chain[chain.length - 1]!, chain.slice(0, -1), 'replay'),
   });
-  // A message to show once the mesh being opened has loaded (set only while opening).
-  private pendingNotice: string | null = null;
+  private readonly opener: DesignOpener = new DesignOpener({
+    machine: this.machine,
+    solver: this.solver,
+    viewer: this.viewer,
+    form: this.form,
+    preparation: this.preparation,
+    repair: this.repair,
+    editor: this.editor,
+    status: this.status,
+    outputs: this.outputs,
+    examples: this.examples,
+    fabrication: this.fabrication,
+    statsBox: this.statsBox,
+    dropSolve: () => this.dropSolve(),
+    startSolve: (run, fresh, chain) => this.startSolve(run, fresh, chain),
+    save: (state) => this.save(state),
+    updateButtons: () => this.updateButtons(),
+  });
 
   constructor() {
     this.remeshButton.addEventListener('click', () => this.remesh());
@@ -108,8 +100,8 @@ export class App {
     this.exportObjButton.addEventListener('click', () => this.exportFile('obj'));
     this.shareButton.addEventListener('click', () => void this.share());
     this.form.onChange(() => this.parametersChanged());
-    this.preparation.onChange(() => void this.reopenPrepared());
-    this.repair.onChange(() => void this.reopenRepaired());
+    this.preparation.onChange(() => this.opener.preparationChanged());
+    this.repair.onChange(() => void this.opener.repairChanged());
     renderStats(this.statsBox, null);
     this.updateButtons();
   }
@@ -137,7 +129,7 @@ export class App {
   // A message about how the page was opened (a broken link): while a mesh is opening it waits
   // until that mesh is shown, so it is what the designer reads; otherwise it shows at once.
   showError(message: string): void {
-    if (this.machine.opening) this.pendingNotice = message;
+    if (this.machine.opening) this.opener.pendingNotice = message;
     else this.status.error(message);
   }
 
@@ -145,162 +137,18 @@ export class App {
     this.outputs.noteRestore(message);
   }
 
-  // ---- opening a design
+  // ---- opening a design (designOpener.ts)
 
-  async openExample(id: string, options: OpenOptions = { solve: true, note: '' }): Promise<void> {
-    const example = findExample(id) ?? findExample(this.examples.defaultId)!;
-    this.form.setPanels(example.panels); // each example comes with a count that suits it
-    this.editor.forgetPaint(); // painted on the previous mesh
-    const checked = this.form.read();
-    if (!checked.ok) {
-      this.status.error(checked.message);
-      return;
-    }
-    const prepare = this.preparation.read(checked.value);
-    if (!prepare.ok) {
-      this.status.error(prepare.message);
-      return;
-    }
-    const repair = this.repair.read();
-    if (!repair.ok) {
-      this.status.error(repair.message);
-      return;
-    }
-    await this.open(withRepair({ kind: 'example', id: example.id, prepare: prepare.value }, repair.value), checked.value, [], options);
+  openExample(id: string, options?: OpenOptions): Promise<void> {
+    return this.opener.openExample(id, options);
   }
 
-  async openFile(file: File): Promise<void> {
-    this.editor.forgetPaint();
-    const params = this.form.read();
-    if (!params.ok) {
-      this.status.error(params.message);
-      return;
-    }
-    const prepare = this.preparation.read(params.value);
-    if (!prepare.ok) {
-      this.status.error(prepare.message);
-      return;
-    }
-    const repair = this.repair.read();
-    if (!repair.ok) {
-      this.status.error(repair.message);
-      return;
-    }
-    const bytes = new Uint8Array(await file.arrayBuffer());
-    await this.open(withRepair({ kind: 'file', name: file.name, bytes, prepare: prepare.value }, repair.value), params.value, [], { solve: true, note: '' });
+  openFile(file: File): Promise<void> {
+    return this.opener.openFile(file);
   }
 
-  // New subdivision levels: the design's mesh opened again, prepared with them.
-  private async reopenPrepared(): Promise<void> {
-    const design = this.machine.mesh?.design;
-    const params = this.form.read();
-    if (!design || !params.ok) return;
-    const prepare = this.preparation.read(params.value);
-    if (!prepare.ok) {
-      this.status.error(prepare.message);
-      return;
-    }
-    this.editor.forgetPaint(); // painted on the previous mesh
-    await this.open({ ...design, prepare: prepare.value }, params.value, [], { solve: true, note: '' });
-  }
-
-  // New holes to fill: the design's mesh opened again with them (its largest-part choice kept).
-  private async reopenRepaired(): Promise<void> {
-    const design = this.machine.mesh?.design;
-    const params = this.form.read();
-    if (!design || !params.ok) return;
-    const repair = this.repair.read(design.repair?.largestPart ?? false);
-    if (!repair.ok) {
-      this.status.error(repair.message);
-      return;
-    }
-    this.editor.forgetPaint(); // painted on the previous mesh
-    await this.open(withRepair(design, repair.value), params.value, [], { solve: true, note: '' });
-  }
-
-  // "Use largest manifold part": the refused open again, keeping that part.
-  private async openLargestPart(): Promise<void> {
-    const last = this.lastOpen;
-    if (!last) return;
-    const repair = { fillHoles: last.design.repair?.fillHoles ?? 0, largestPart: true };
-    await this.open(withRepair(last.design, repair), last.params, last.history, { ...last.options, note: 'Keeping the largest manifold part' });
-  }
-
-  async openState(state: DesignState, note: string, fromLink: boolean): Promise<void> {
-    this.editor.adopt(state);
-    this.form.write(state.params);
-    this.preparation.show(state.mesh);
-    this.repair.show(state.mesh);
-    if (state.fabrication) this.fabrication.write(state.fabrication);
-    await this.open(state.mesh, state.params, state.history, { solve: true, note, fromLink });
-  }
-
-  private async open(design: DesignMesh, params: DesignParams, history: DesignParams[], options: OpenOptions): Promise<void> {
-    const { example, label, fileName, up } = describeDesign(design);
-    const token = this.machine.beginOpen({ design, label, fileName, up, params, history, solve: options.solve });
-    this.lastOpen = { design, params, history, options };
-    this.repair.hideOffer();
-    if (!options.fromLink) this.outputs.forgetLink();
-    this.updateButtons();
-    this.status.show(`${options.note ? `${options.note}: ` : ''}loading ${label}…`);
-    const payload = example ? await payloadFromExample(example) : design.kind === 'file' ? await payloadFromFile(design.name, design.bytes) : null;
-    if (!this.machine.isCurrentOpen(token)) return; // a later open won
-    if (payload?.ok && design.prepare) payload.value.prepare = { ...design.prepare };
-    if (payload?.ok && design.repair) payload.value.repair = { ...design.repair };
-    if (!payload || !payload.ok) {
-      this.machine.abandonOpen(token);
-      this.failOpen(payload ? payload.message : 'nothing to open');
-      return;
-    }
-    // The session's mesh is about to change: a solve under way is of no use any more.
-    this.dropSolve();
-    this.machine.openSent(token, this.solver.load(payload.value));
-    this.updateButtons();
-  }
-
-  private failOpen(reason: string): void {
-    const notice = this.pendingNotice;
-    this.pendingNotice = null;
-    this.syncExampleSelect();
-    this.status.resetProgress();
-    this.status.error(notice ? `${notice} ${reason}` : reason);
-    this.updateButtons();
-  }
-
-  private onLoaded(job: number, info: MeshInfo, positions: Float32Array, indices: Uint32Array): void {
-    const loaded = this.machine.loaded(job, (opening) => ({ design: opening.design, label: opening.label, fileName: opening.fileName, info }));
-    if (!loaded) return;
-    const opening = loaded.info;
-    this.viewer.setSurface(positions, indices, opening.up === 'guess' ? guessUpAxis(positions) : opening.up);
-    this.editor.meshLoaded(opening.params);
-    showMeshInfo(loaded.mesh.label, loaded.mesh.info);
-    rhinoLoaded(loaded.mesh.fileName, loaded.mesh.info);
-    renderStats(this.statsBox, null);
-    this.fabrication.panelsChanged(false);
-    this.updateButtons();
-    // Overtaken by a later open: shown, since the worker holds it now, but that open goes on.
-    if (!loaded.newest) return;
-    this.syncExampleSelect();
-    this.save({ mesh: opening.design, params: opening.params, history: [], fabrication: this.fabrication.current });
-    // Panel edits name triangles: a link's must exist in the mesh it opened.
-    const misfit = [...opening.history, opening.params].map((p) => checkEditsFit(p.edits, info.triangles)).find((c) => !c.ok);
-    if (opening.solve && misfit && !misfit.ok) {
-      this.status.error(`${misfit.message}; not solved.`);
-    } else if (opening.solve) {
-      const chain = [...opening.history, opening.params];
-      this.startSolve(chain, false, chain);
-    } else {
-      this.status.show(`${opening.label} is loaded. Remesh to make panels.`);
-    }
-    if (this.pendingNotice) {
-      this.status.error(this.pendingNotice);
-      this.pendingNotice = null;
-    }
-    this.updateButtons();
-  }
-
-  private syncExampleSelect(): void {
-    this.examples.sync(this.machine.mesh?.design);
+  openState(state: DesignState, note: string, fromLink: boolean): Promise<void> {
+    return this.opener.openState(state, note, fromLink);
   }
 
   private save(state: DesignState): void {
@@ -324,6 +172,7 @@ export class App {
       this.status.error(checked.message);
       return;
     }
+    if (this.opener.prepareIfNeeded(checked.value)) return;
     this.dropSolve();
     const plan = this.machine.planRemesh(checked.value);
     if (plan.kind === 'refused') return;
@@ -376,6 +225,7 @@ export class App {
       this.status.error(checked.message);
       return;
     }
+    if (this.opener.prepareIfNeeded(checked.value)) return;
     const job = this.machine.update(checked.value);
     if (job === null) return;
     this.solver.update(job, this.editor.solveStep(checked.value));
@@ -392,7 +242,10 @@ export class App {
     renderStats(this.statsBox, result);
     this.status.finishProgress();
     const summary = solvedSummary(result);
-    this.status.show(summary.text, summary.warning ? 'info' : 'done');
+    const notice = this.opener.solveNotice;
+    this.opener.solveNotice = null;
+    if (notice) this.status.show(`${notice} ${summary.text}`, 'info'); // it still ends "Done: N panels"
+    else this.status.show(summary.text, summary.warning ? 'info' : 'done');
     this.fabrication.panelsChanged(result.panelTriangles.length > 0);
     this.editor.solved(solved.params, solved.chain, clusterCount(result.clusterIds));
     this.save({ mesh: mesh.design, params: solved.params, history: solved.chain ? solved.chain.slice(0, -1) : [], fabrication: this.fabrication.current });
@@ -413,7 +266,7 @@ export class App {
       case 'crashed': // handled by the client (onCrash)
         return;
       case 'loaded':
-        this.onLoaded(message.job, message.info, message.positions, message.indices);
+        this.opener.onLoaded(message.job, message.info, message.positions, message.indices, message.carried);
         return;
       case 'failed':
         this.onFailed(message.job, message.message, message.largestPart);
@@ -447,12 +300,13 @@ export class App {
     if (what === null) return; // an answer to a request the page moved past
     if (what === 'open' && largestPart && !this.machine.opening) {
       // Non-manifold edges: offer the largest manifold part (issue 7).
-      this.repair.showOffer(largestPart.faces, largestPart.of, () => void this.openLargestPart());
+      this.repair.showOffer(largestPart.faces, largestPart.of, () => void this.opener.openLargestPart());
       reason = `${reason}. Use the largest manifold part (${largestPart.faces.toLocaleString('en-US')} of ${largestPart.of.toLocaleString('en-US')} faces)?`;
     }
     if (what === 'open') {
+      if (this.machine.mesh) this.preparation.show(this.machine.mesh.design); // a preparation refused
       if (this.machine.opening) this.status.error(reason); // a later open goes on
-      else this.failOpen(reason);
+      else this.opener.failOpen(reason);
       return;
     }
     if (what === 'solve') {
@@ -474,10 +328,10 @@ export class App {
     this.viewer.setSolving(false);
     const solved = this.machine.solved;
     if (solved) this.viewer.setClusters(solved.result.clusterIds);
-    this.pendingNotice = null;
+    this.opener.pendingNotice = null;
     this.fabrication.workerLost();
     this.editor.workerReplaced();
-    this.syncExampleSelect();
+    this.opener.syncExampleSelect();
     this.status.resetProgress();
     const parts = [crash.meshKept ? CRASH_MESSAGE : `${CRASH_MESSAGE}, but without the mesh: open it again`];
     if (lost.lostOpening) parts.push(`${lost.lostOpening.label} was not opened`);
@@ -530,10 +384,4 @@ export class App {
     document.body.dataset.opening = opening === null ? 'false' : opening.job === null ? 'reading' : 'loading';
     this.editor.updateButtons();
   }
-}
-
-// The design's mesh with this repair (none: the field left out, as links before it had).
-function withRepair(design: DesignMesh, repair: MeshRepair | undefined): DesignMesh {
-  const { repair: _old, ...rest } = design;
-  return repair ? { ...rest, repair } : rest;
 }

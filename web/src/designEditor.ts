@@ -14,10 +14,11 @@ import { sameParams, toRemeshParams, type DesignParams } from './params.ts';
 import type { PanelSelection } from './panelSelection.ts';
 import type { ParamsForm } from './paramsForm.ts';
 import type { SolveResult, SolveStep } from './protocol.ts';
-import type { DesignState } from './share.ts';
+import { samePrepare } from './preparation.ts';
+import type { DesignState, MeshPrepare } from './share.ts';
 import type { Viewer } from './view/viewer.ts';
 
-export type StepKind = 'open' | 'params' | 'paint' | 'edit';
+export type StepKind = 'open' | 'params' | 'paint' | 'edit' | 'prepare';
 
 export interface DesignStep {
   kind: StepKind;
@@ -28,6 +29,9 @@ export interface DesignStep {
   // The panels it has once solved ("Panels" shows it: after edits it is not params.panels,
   // the count the solve targeted); null until then.
   count: number | null;
+  // The preparation of the mesh the parameters belong to (their paint and edits name its
+  // vertices and triangles): undo across a re-preparation prepares the mesh back.
+  prepare: MeshPrepare | undefined;
 }
 
 export interface EditorHost {
@@ -42,6 +46,9 @@ export interface EditorHost {
   result(): SolveResult | null; // the panels on show
   remesh(): void; // what Remesh does with the form's parameters
   replay(chain: DesignParams[]): void; // solve `chain` afresh from the loaded mesh
+  prepared(): MeshPrepare | undefined; // the preparation of the mesh on show
+  // Prepare the mesh as `prepare` says (from the mesh as loaded), then solve `chain` on it.
+  reprepare(prepare: MeshPrepare | undefined, chain: DesignParams[]): void;
 }
 
 const HISTORY_LIMIT = 100;
@@ -109,11 +116,35 @@ export class DesignEditor {
   }
 
   // The mesh of the design is shown: history starts over from its parameters.
-  meshLoaded(params: DesignParams): void {
-    this.history.reset({ kind: 'open', params, chain: null, count: null });
+  meshLoaded(params: DesignParams, prepare: MeshPrepare | undefined): void {
+    this.history.reset({ kind: 'open', params, chain: null, count: null, prepare });
+    this.surfaceChanged();
+  }
+
+  // The mesh was prepared again (undo or redo across a re-preparation): the history stays.
+  surfaceChanged(): void {
     this.density.surfaceChanged();
     this.panelEdits.surfaceChanged();
     this.updateButtons();
+  }
+
+  // The mesh was prepared again for `after` (preparation.ts), with `before`'s paint and edits
+  // carried to it: one history step (it takes the place of an unsolved parameter step that
+  // asked for it, e.g. the typed panel count), whose undo prepares the mesh back.
+  reprepared(before: DesignParams, after: DesignParams, prepare: MeshPrepare, paint: Int8Array | null): void {
+    if (paint) this.fields.set(after.paint, paint);
+    this.host.form.write(after);
+    const step: DesignStep = { kind: 'prepare', params: after, chain: null, count: null, prepare };
+    const current = this.history.current;
+    if (current && current.kind === 'params' && current.chain === null && sameParams(current.params, before)) this.history.replaceCurrent(step);
+    else this.history.push(step);
+    this.prune();
+    this.surfaceChanged();
+  }
+
+  // A painted field by its key (null: none, or not known).
+  field(key: string): Int8Array | null {
+    return key === '' ? null : (this.fields.get(key) ?? null);
   }
 
   // A solve finished with `count` panels: its chain reproduces the current step (or a step of
@@ -121,8 +152,9 @@ export class DesignEditor {
   // event). "Panels" shows the count when the form shows this design.
   solved(params: DesignParams, chain: DesignParams[] | null, count: number): void {
     const current = this.history.current;
+    const prepare = this.host.prepared();
     if (current && sameParams(current.params, params)) this.history.replaceCurrent({ ...current, chain, count });
-    else if (!this.history.all.some((step) => sameParams(step.params, params))) this.history.push({ kind: 'params', params, chain, count });
+    else if (!this.history.all.some((step) => sameParams(step.params, params) && samePrepare(step.prepare, prepare))) this.history.push({ kind: 'params', params, chain, count, prepare });
     const read = this.host.form.read();
     if (read.ok && sameParams(read.value, params)) this.host.form.showCount(params.panels, count);
     this.prune();
@@ -178,7 +210,7 @@ export class DesignEditor {
     }
     const current = this.history.current;
     if (current && sameParams(current.params, read.value)) return; // the stroke changed nothing
-    this.history.push({ kind: 'paint', params: read.value, chain: null, count: null });
+    this.history.push({ kind: 'paint', params: read.value, chain: null, count: null, prepare: this.host.prepared() });
     countOutcome('strokes');
     this.prune();
     this.updateButtons();
@@ -197,7 +229,7 @@ export class DesignEditor {
       this.host.error(read.message);
       return;
     }
-    this.history.push({ kind: 'edit', params: read.value, chain: null, count: null });
+    this.history.push({ kind: 'edit', params: read.value, chain: null, count: null, prepare: this.host.prepared() });
     countOutcome('edits');
     this.prune();
     this.updateButtons();
@@ -209,7 +241,7 @@ export class DesignEditor {
     const current = this.history.current;
     this.density.show(); // the expression may have changed
     if (!read.ok || !current || sameParams(current.params, read.value)) return;
-    this.history.push({ kind: 'params', params: read.value, chain: null, count: null });
+    this.history.push({ kind: 'params', params: read.value, chain: null, count: null, prepare: this.host.prepared() });
     this.prune();
     this.updateButtons();
   }
@@ -233,6 +265,11 @@ export class DesignEditor {
     this.host.form.write(step.params, step.count ?? undefined);
     this.density.show();
     this.updateButtons();
+    // A step on another preparation of the mesh: the mesh is prepared back, then solved.
+    if (!samePrepare(step.prepare, this.host.prepared())) {
+      this.host.reprepare(step.prepare, step.chain ?? [step.params]);
+      return;
+    }
     const shown = this.host.solvedChain();
     const same = step.chain !== null && shown !== null && shown.length === step.chain.length && shown.every((p, i) => sameParams(p, step.chain![i]!));
     if (same && !this.host.solving()) return;

@@ -3,6 +3,9 @@
 // it, so the page drops answers to jobs it has moved past (a cancelled solve, a replaced mesh).
 import type { MeshRepair } from './meshRepair.ts';
 import type { FabricationParams, MeshInfo, Problems, Progress, RemeshParams, SheetStats, SpreadNodes } from '@flatfacet/wasm';
+import type { MeshPrepare } from './share.ts';
+
+export type { MeshPrepare };
 
 // What the worker loads: file bytes for the core's readers (OBJ, OFF, STL, PLY), a triangle
 // soup from three.js (glTF/GLB), or a generated surface.
@@ -16,11 +19,18 @@ export type MeshPayload = (
 ) & {
   // Applied right after the load (Session.prepare): subdivision, then the resolution the panel
   // count needs. Part of the payload, so a worker restart prepares the same mesh again.
-  prepare?: { panels: number; subdivide: number };
+  prepare?: MeshPrepare;
   // How the load repairs the mesh (Session.setRepair; absent: no holes filled, non-manifold
   // edges refused). Part of the payload for the same reason.
   repair?: MeshRepair;
 };
+
+// What a re-preparation carries from the mesh before to the new one: the painted density
+// (levels per vertex; null: none) and the triangles the panel edits name (preparation.ts).
+export interface Carry {
+  paint: Int8Array | null;
+  faces: Int32Array;
+}
 
 // One solve of a chain: the parameters and the painted density field (brush/densityField.ts
 // levels, one per vertex of the loaded mesh; null: none), set in the session before it.
@@ -32,6 +42,9 @@ export interface SolveStep {
 export type WorkerRequest =
   // quiet: reload after a worker restart; answer without the display arrays.
   | { type: 'load'; job: number; mesh: MeshPayload; quiet: boolean }
+  // Prepares the loaded mesh again, from the mesh as loaded (Session.prepare), and carries
+  // `carry` over to it; answered like a load (`loaded`, with `carried`).
+  | { type: 'prepare'; job: number; prepare: MeshPrepare; carry: Carry }
   // fresh: start cold from the loaded mesh (Session.resetSolve), else warm-start from what the
   // session holds.
   // chain: parameter sets solved one after the other (a share link replays a warm-start chain).
@@ -89,7 +102,7 @@ export type WorkerResponse =
   // A wasm call threw something that is not a Status (out of memory, a trap, a bug): the
   // module's state is unknown, so the page replaces this worker.
   | { type: 'crashed'; message: string }
-  | { type: 'loaded'; job: number; info: MeshInfo; positions: Float32Array; indices: Uint32Array }
+  | { type: 'loaded'; job: number; info: MeshInfo; positions: Float32Array; indices: Uint32Array; carried?: Carry }
   // A load or solve the core refused; the worker's previous mesh and result are intact.
   // largestPart: refused for non-manifold edges; the largest manifold part has `faces` of `of`.
   | { type: 'failed'; job: number; message: string; largestPart?: { faces: number; of: number } }
@@ -107,8 +120,10 @@ export type WorkerResponse =
 // (shared/notes/toolchain.md, note 7), so the worker transfers it without another copy.
 export function transferablesOf(message: WorkerResponse): Transferable[] {
   switch (message.type) {
-    case 'loaded':
-      return [message.positions.buffer, message.indices.buffer];
+    case 'loaded': {
+      const carried = message.carried ? [message.carried.faces.buffer, ...(message.carried.paint ? [message.carried.paint.buffer] : [])] : [];
+      return [message.positions.buffer, message.indices.buffer, ...carried];
+    }
     case 'clusters':
       return [message.clusterIds.buffer];
     case 'solved': {

@@ -7,7 +7,7 @@ import { findExample } from './examples.ts';
 import { failure, type Checked } from './params.ts';
 import { checkPaintFields, paintEntries } from './paintFields.ts';
 import { checkRepair, repairJson, type MeshRepair } from './meshRepair.ts';
-import { checkFileName, checkParamsAndHistory, checkPrepare, decodePayload, prepareJson, MAX_SHARED_PAINT_BYTES, optionalFabrication, type DesignMesh, type DesignState } from './share.ts';
+import { checkFileName, checkParamsAndHistory, checkPrepare, decodePayload, prepareJson, MAX_SHARED_PAINT_BYTES, optionalFabrication, type DesignMesh, type DesignState, type MeshPrepare } from './share.ts';
 
 const DB_NAME = 'flatfacet';
 const DB_VERSION = 2;
@@ -20,7 +20,7 @@ const RECORD_VERSION = 2;
 // What `sessions` holds under KEY (version 1 of the page stored a share-link payload there).
 interface SessionRecord {
   v: typeof RECORD_VERSION;
-  mesh: ({ example: string } | { file: string; size: number; key: string }) & { prepare?: { panels: number; subdivide: number }; repair?: MeshRepair };
+  mesh: ({ example: string } | { file: string; size: number; key: string }) & { prepare?: MeshPrepare; repair?: MeshRepair };
   params: unknown;
   history: unknown;
   fabrication?: unknown; // absent in sessions stored before fabrication came to the page

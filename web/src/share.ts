@@ -32,32 +32,47 @@ const MAX_JSON_BYTES = 64 * 1024;
 const MAX_FILE_NAME = 200;
 const HASH_PREFIX = `v${SHARE_VERSION}=`;
 
-// How the loaded mesh was prepared for panelling (Session.prepare): subdivision levels, and the
-// panel count the resolution was chosen for. Recorded when the mesh is opened, so a link or a
-// reload prepares the very same mesh whatever the panel count is later; absent (links made
-// before this): the mesh as loaded.
+// How the loaded mesh was prepared for panelling (Session.prepare): subdivision levels, the
+// panel count the resolution was chosen for, and the target edge length when the designer set
+// one (absent: automatic). Recorded when the mesh is opened or prepared again for a panel
+// count it could not serve (preparation.ts), so a link or a reload prepares the very same mesh;
+// absent (links made before this): the mesh as loaded.
 export interface MeshPrepare {
   panels: number;
   subdivide: number;
+  edgeLength?: number;
 }
 export const MAX_SUBDIVIDE = 4;
+// A target edge length, in mesh units: positive, finite, and not absurd (the core refuses one
+// that would make more than its triangle cap with its own message).
+export const MAX_EDGE_LENGTH = 1e12;
 
 // repair: how the mesh was repaired on opening (meshRepair.ts); absent: no repair asked.
 export type DesignMesh = ({ kind: 'example'; id: string } | { kind: 'file'; name: string; bytes: Uint8Array }) & { prepare?: MeshPrepare; repair?: MeshRepair };
 
-// A mesh's preparation from a link or the stored session: absent, or exactly {panels, subdivide}.
+export function isEdgeLength(value: unknown): value is number {
+  return typeof value === 'number' && Number.isFinite(value) && value > 0 && value <= MAX_EDGE_LENGTH;
+}
+
+// A mesh's preparation from a link or the stored session: absent, or exactly {panels,
+// subdivide} with an optional edgeLength.
 export function checkPrepare(value: unknown, where: string): Checked<MeshPrepare | undefined> {
   if (value === undefined) return { ok: true, value: undefined };
   if (!isRecord(value)) return failure(`${where}: the mesh's preparation is not an object`);
-  for (const key of Object.keys(value)) if (key !== 'panels' && key !== 'subdivide') return failure(`${where}: the mesh's preparation has an unknown field "${key.slice(0, 40)}"`);
-  const { panels, subdivide } = value;
+  for (const key of Object.keys(value)) if (key !== 'panels' && key !== 'subdivide' && key !== 'edgeLength') return failure(`${where}: the mesh's preparation has an unknown field "${key.slice(0, 40)}"`);
+  const { panels, subdivide, edgeLength } = value;
   if (typeof panels !== 'number' || !Number.isInteger(panels) || panels < LIMITS.panels.min || panels > LIMITS.panels.max) return failure(`${where}: the mesh's preparation names no valid panel count`);
   if (typeof subdivide !== 'number' || !Number.isInteger(subdivide) || subdivide < 0 || subdivide > MAX_SUBDIVIDE) return failure(`${where}: subdivision levels must be 0 to ${MAX_SUBDIVIDE}`);
-  return { ok: true, value: { panels, subdivide } };
+  if (edgeLength === undefined) return { ok: true, value: { panels, subdivide } };
+  if (!isEdgeLength(edgeLength)) return failure(`${where}: the target edge length must be a positive number up to ${MAX_EDGE_LENGTH}`);
+  return { ok: true, value: { panels, subdivide, edgeLength } };
 }
 
+// The preparation as JSON, keys in one order (links and the stored session compare as text).
 export function prepareJson(mesh: DesignMesh): { prepare?: MeshPrepare } {
-  return mesh.prepare ? { prepare: { panels: mesh.prepare.panels, subdivide: mesh.prepare.subdivide } } : {};
+  const p = mesh.prepare;
+  if (!p) return {};
+  return { prepare: { panels: p.panels, subdivide: p.subdivide, ...(p.edgeLength !== undefined ? { edgeLength: p.edgeLength } : {}) } };
 }
 
 export interface DesignState {

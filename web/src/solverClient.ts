@@ -4,7 +4,7 @@
 // worker that crashed (an error event, or a wasm call that threw something other than a
 // Status) is replaced the same way, and the page is told so.
 import type { FabricationParams } from '@flatfacet/wasm';
-import type { MeshPayload, SolveStep, WorkerRequest, WorkerResponse } from './protocol.ts';
+import type { Carry, MeshPayload, MeshPrepare, SolveStep, WorkerRequest, WorkerResponse } from './protocol.ts';
 
 const CANCEL_GRACE_MS = 250;
 
@@ -116,6 +116,16 @@ export class SolverClient {
     this.job += 1;
     this.pendingMeshes.set(this.job, mesh);
     this.send({ type: 'load', job: this.job, mesh, quiet: false });
+    return this.job;
+  }
+
+  // The loaded mesh prepared again (answered like a load); a new worker gets the mesh back with
+  // this preparation. Null without a loaded mesh.
+  prepare(prepare: MeshPrepare, carry: Carry): number | null {
+    if (!this.loadedMesh) return null;
+    this.job += 1;
+    this.pendingMeshes.set(this.job, { ...this.loadedMesh, prepare: { ...prepare } });
+    this.send({ type: 'prepare', job: this.job, prepare, carry });
     return this.job;
   }
 

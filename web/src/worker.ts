@@ -9,8 +9,9 @@
 import createFlatfacet, { type FlatfacetModule, type MeshInfo, type Problems, type Progress, type Session, type Status } from '@flatfacet/wasm';
 import wasmUrl from '@flatfacet/wasm-binary?url';
 import { decodeField } from './brush/densityField.ts';
+import { levelsOf } from './preparation.ts';
 import { fabricationOf } from './workerFabrication.ts';
-import { transferablesOf, type MeshPayload, type QualityReport, type SolveResult, type SolveStep, type WorkerRequest, type WorkerResponse } from './protocol.ts';
+import { transferablesOf, type Carry, type MeshPayload, type MeshPrepare, type QualityReport, type SolveResult, type SolveStep, type WorkerRequest, type WorkerResponse } from './protocol.ts';
 
 // The DOM lib types `self` as a Window; in a dedicated worker postMessage takes a transfer list.
 const scope = self as unknown as {
@@ -82,7 +83,11 @@ function loadInto(target: Session, mesh: MeshPayload): MeshInfo {
   if (!mesh.prepare) return loaded;
   // What the load said (a Rhino file's surfaces, say) stays; the counts and notes are now the
   // prepared mesh's.
-  return { ...loaded, ...checked<MeshInfo>(target.prepare(mesh.prepare.panels, mesh.prepare.subdivide), 'preparing the mesh') };
+  return { ...loaded, ...prepareInto(target, mesh.prepare) };
+}
+
+function prepareInto(target: Session, prepare: MeshPrepare): MeshInfo {
+  return checked<MeshInfo>(target.prepare(prepare.panels, prepare.subdivide, prepare.edgeLength ?? 0), 'preparing the mesh');
 }
 
 function loadAsIs(target: Session, mesh: MeshPayload): MeshInfo {
@@ -111,6 +116,23 @@ function handleLoad(job: number, mesh: MeshPayload, quiet: boolean): void {
   const positions = quiet ? new Float32Array(0) : target.inputPositions();
   const indices = quiet ? new Uint32Array(0) : target.inputIndices();
   post({ type: 'loaded', job, info, positions, indices });
+}
+
+// The mesh prepared again (for a panel count it could not serve, or another subdivision or
+// edge length), and the paint and edited triangles carried to it.
+function handlePrepare(job: number, prepare: MeshPrepare, carry: Carry): void {
+  if (currentRun) currentRun.cancelled = true;
+  const target = requireSession();
+  const info = prepareInto(target, prepare);
+  let paint: Int8Array | null = null;
+  if (carry.paint) {
+    const values = target.transferField(Float64Array.from(carry.paint));
+    if (values.length !== info.vertices) throw new StatusError('the painted density could not be carried to the prepared mesh');
+    paint = levelsOf(values);
+  }
+  const faces = carry.faces.length > 0 ? target.remapFaces(carry.faces) : new Int32Array(0);
+  if (faces.length !== carry.faces.length) throw new StatusError('the panel edits could not be carried to the prepared mesh');
+  post({ type: 'loaded', job, info, positions: target.inputPositions(), indices: target.inputIndices(), carried: { paint, faces } });
 }
 
 function collectResult(target: Session, solveSeconds: number, steps: number): SolveResult {
@@ -210,6 +232,9 @@ function handle(request: WorkerRequest): void {
   switch (request.type) {
     case 'load':
       handleLoad(request.job, request.mesh, request.quiet);
+      return;
+    case 'prepare':
+      handlePrepare(request.job, request.prepare, request.carry);
       return;
     case 'solve': {
       if (currentRun) currentRun.cancelled = true;

@@ -124,8 +124,9 @@ export class Viewer {
     this.requestRender();
   }
 
-  // A new input surface: shifts everything to its bounding-box centre and frames it.
-  setSurface(positions: Float32Array, indices: Uint32Array, upAxis: 'y' | 'z'): void {
+  // A new input surface: shifts everything to its bounding-box centre and frames it (unless
+  // `keepView`: the same surface prepared again, seen as it was).
+  setSurface(positions: Float32Array, indices: Uint32Array, upAxis: 'y' | 'z', keepView = false): void {
     const box = new THREE.Box3();
     for (let i = 0; i + 2 < positions.length; i += 3) box.expandByPoint(new THREE.Vector3(positions[i], positions[i + 1], positions[i + 2]));
     box.getCenter(this.origin);
@@ -135,7 +136,8 @@ export class Viewer {
     this.input.setClusters(null);
     this.surfaceValue = { positions: local, indices, diagonal: box.getSize(new THREE.Vector3()).length() };
     this.setResult(null);
-    this.frame(box, upAxis);
+    if (keepView) this.requestRender();
+    else this.frame(box, upAxis);
   }
 
   private frame(box: THREE.Box3, upAxis: 'y' | 'z'): void {

@@ -1,0 +1,315 @@
+// Opening a design and preparing its mesh again (split from app.ts, the page's controller):
+// an example, a file, a link or the stored session is read on the page, sent to the worker,
+// shown when loaded and solved; a panel count the mesh cannot serve, or a new subdivision or
+// target edge length, prepares the mesh again from the mesh as loaded (preparation.ts), with
+// the paint and panel edits carried to it as one history step.
+import type { MeshInfo } from '@flatfacet/wasm';
+import { fieldKey, isUniform } from './brush/densityField.ts';
+import type { DesignEditor } from './designEditor.ts';
+import type { DesignMachine } from './designMachine.ts';
+import { showMeshInfo, type ExamplePicker } from './examplePicker.ts';
+import { describeDesign, findExample } from './examples.ts';
+import { checkEditsFit } from './edits/panelEdits.ts';
+import type { FabricationPanel } from './fabricationPanel.ts';
+import type { MeshRepair } from './meshRepair.ts';
+import { payloadFromExample, payloadFromFile } from './meshFiles.ts';
+import type { Outputs } from './outputs.ts';
+import type { DesignParams } from './params.ts';
+import type { ParamsForm } from './paramsForm.ts';
+import type { PrepareControl } from './prepareControl.ts';
+import type { RepairControl } from './repairControl.ts';
+import { carriedParams, editFaces, preparationNeeded, refusedPreparation } from './preparation.ts';
+import type { Carry, SolveResult } from './protocol.ts';
+import { rhinoLoaded } from './rhino/rhinoOpen.ts';
+import type { DesignMesh, DesignState, MeshPrepare } from './share.ts';
+import type { SolverClient } from './solverClient.ts';
+import { renderStats } from './stats.ts';
+import type { StatusView } from './statusView.ts';
+import { guessUpAxis } from './view/upAxis.ts';
+import type { Viewer } from './view/viewer.ts';
+
+export interface LoadedMesh {
+  design: DesignMesh;
+  label: string;
+  fileName: string;
+  info: MeshInfo;
+}
+
+export interface OpenInfo {
+  design: DesignMesh;
+  label: string;
+  fileName: string;
+  up: 'y' | 'z' | 'guess';
+  params: DesignParams;
+  history: DesignParams[];
+  solve: boolean;
+  // The design's mesh prepared again (not a new mesh: the history goes on): 'carry' brings
+  // the paint and edits of `params` along; 'replay' solves `history` + `params`, made for it.
+  reprepare?: 'carry' | 'replay';
+}
+
+export interface OpenOptions {
+  solve: boolean;
+  note: string; // said in the status while loading, e.g. "Opening the shared design"
+  fromLink?: boolean; // keeps the link in the address bar (it describes this design)
+}
+
+// What the opener uses of the controller.
+export interface OpenerHost {
+  machine: DesignMachine<LoadedMesh, OpenInfo, SolveResult>;
+  solver: SolverClient;
+  viewer: Viewer;
+  form: ParamsForm;
+  preparation: PrepareControl;
+  repair: RepairControl;
+  editor: DesignEditor;
+  status: StatusView;
+  outputs: Outputs;
+  examples: ExamplePicker;
+  fabrication: FabricationPanel;
+  statsBox: HTMLDivElement;
+  dropSolve(): boolean;
+  startSolve(run: DesignParams[], fresh: boolean, chain: DesignParams[] | null): void;
+  save(state: DesignState): void;
+  updateButtons(): void;
+}
+
+export class DesignOpener {
+  // A message to show once the mesh being opened has loaded (set only while opening).
+  pendingNotice: string | null = null;
+  // Said with the next solve's summary (edits a re-preparation could not carry).
+  solveNotice: string | null = null;
+  // The last open sent to the worker: what "Use largest manifold part" opens again.
+  private lastOpen: { design: DesignMesh; params: DesignParams; history: DesignParams[]; options: OpenOptions } | null = null;
+
+  constructor(private readonly host: OpenerHost) {}
+
+  async openExample(id: string, options: OpenOptions = { solve: true, note: '' }): Promise<void> {
+    const example = findExample(id) ?? findExample(this.host.examples.defaultId)!;
+    this.host.form.setPanels(example.panels); // each example comes with a count that suits it
+    this.host.editor.forgetPaint(); // painted on the previous mesh
+    this.host.preparation.forgetEdgeLength();
+    const checked = this.host.form.read();
+    if (!checked.ok) {
+      this.host.status.error(checked.message);
+      return;
+    }
+    const prepare = this.host.preparation.read(checked.value);
+    if (!prepare.ok) {
+      this.host.status.error(prepare.message);
+      return;
+    }
+    const repair = this.host.repair.read();
+    if (!repair.ok) {
+      this.host.status.error(repair.message);
+      return;
+    }
+    await this.open(withRepair({ kind: 'example', id: example.id, prepare: prepare.value }, repair.value), checked.value, [], options);
+  }
+
+  async openFile(file: File): Promise<void> {
+    this.host.editor.forgetPaint();
+    this.host.preparation.forgetEdgeLength();
+    const params = this.host.form.read();
+    if (!params.ok) {
+      this.host.status.error(params.message);
+      return;
+    }
+    const prepare = this.host.preparation.read(params.value);
+    if (!prepare.ok) {
+      this.host.status.error(prepare.message);
+      return;
+    }
+    const repair = this.host.repair.read();
+    if (!repair.ok) {
+      this.host.status.error(repair.message);
+      return;
+    }
+    const bytes = new Uint8Array(await file.arrayBuffer());
+    await this.open(withRepair({ kind: 'file', name: file.name, bytes, prepare: prepare.value }, repair.value), params.value, [], { solve: true, note: '' });
+  }
+
+  // New holes to fill: the design's mesh opened again with them (its largest-part choice kept).
+  async repairChanged(): Promise<void> {
+    const design = this.host.machine.mesh?.design;
+    const params = this.host.form.read();
+    if (!design || !params.ok) return;
+    const repair = this.host.repair.read(design.repair?.largestPart ?? false);
+    if (!repair.ok) {
+      this.host.status.error(repair.message);
+      return;
+    }
+    this.host.editor.forgetPaint(); // painted on the previous mesh
+    await this.open(withRepair(design, repair.value), params.value, [], { solve: true, note: '' });
+  }
+
+  // "Use largest manifold part": the refused open again, keeping that part.
+  async openLargestPart(): Promise<void> {
+    const last = this.lastOpen;
+    if (!last) return;
+    const repair = { fillHoles: last.design.repair?.fillHoles ?? 0, largestPart: true };
+    await this.open(withRepair(last.design, repair), last.params, last.history, { ...last.options, note: 'Keeping the largest manifold part' });
+  }
+
+  // New subdivision levels or edge length: the design's mesh prepared again with them.
+  preparationChanged(): void {
+    const params = this.host.form.read();
+    if (!params.ok) {
+      this.host.status.error(params.message);
+      return;
+    }
+    if (this.host.machine.canRemesh) this.prepareIfNeeded(params.value);
+  }
+
+  // A panel count the mesh on show cannot serve, or a new subdivision or edge length: the
+  // mesh is prepared again (preparation.ts) and solved, and true is returned.
+  prepareIfNeeded(params: DesignParams): boolean {
+    const mesh = this.host.machine.mesh;
+    if (!mesh) return false;
+    const choice = this.host.preparation.choice();
+    if (!choice.ok) {
+      this.host.status.error(choice.message);
+      return true;
+    }
+    const needed = preparationNeeded(mesh.design.prepare, mesh.info.triangles, params.panels, choice.value);
+    if (!needed) return false;
+    const refused = refusedPreparation(needed, mesh.info.triangles);
+    if (refused) this.host.status.error(refused);
+    else this.prepareAgain(needed, params, [], 'carry');
+    return true;
+  }
+
+  // The worker prepares the design's mesh again from the mesh as loaded; answered like a load
+  // (onLoaded), with the paint and edited triangles of `params` carried when `how` is 'carry'.
+  prepareAgain(prepare: MeshPrepare, params: DesignParams, history: DesignParams[], how: 'carry' | 'replay'): void {
+    const mesh = this.host.machine.mesh;
+    if (!mesh || !this.host.machine.canRemesh) return;
+    const design: DesignMesh = { ...mesh.design, prepare };
+    const token = this.host.machine.beginOpen({ design, label: mesh.label, fileName: mesh.fileName, up: 'guess', params, history, solve: true, reprepare: how });
+    this.host.outputs.forgetLink();
+    this.host.dropSolve();
+    const carry: Carry = how === 'carry' ? { paint: this.host.editor.field(params.paint), faces: editFaces(params.edits) } : { paint: null, faces: new Int32Array(0) };
+    const job = this.host.solver.prepare(prepare, carry);
+    if (job === null) {
+      this.host.machine.abandonOpen(token);
+      this.failOpen('the solver has lost the mesh: open it again');
+      return;
+    }
+    this.host.machine.openSent(token, job);
+    this.host.status.show(`Preparing the mesh for ${prepare.panels.toLocaleString('en')} panels…`);
+    this.host.updateButtons();
+  }
+
+  async openState(state: DesignState, note: string, fromLink: boolean): Promise<void> {
+    this.host.editor.adopt(state);
+    this.host.form.write(state.params);
+    this.host.preparation.show(state.mesh);
+    this.host.repair.show(state.mesh);
+    if (state.fabrication) this.host.fabrication.write(state.fabrication);
+    await this.open(state.mesh, state.params, state.history, { solve: true, note, fromLink });
+  }
+
+  private async open(design: DesignMesh, params: DesignParams, history: DesignParams[], options: OpenOptions): Promise<void> {
+    const { example, label, fileName, up } = describeDesign(design);
+    const token = this.host.machine.beginOpen({ design, label, fileName, up, params, history, solve: options.solve });
+    this.lastOpen = { design, params, history, options };
+    this.host.repair.hideOffer();
+    if (!options.fromLink) this.host.outputs.forgetLink();
+    this.host.updateButtons();
+    this.host.status.show(`${options.note ? `${options.note}: ` : ''}loading ${label}…`);
+    const payload = example ? await payloadFromExample(example) : design.kind === 'file' ? await payloadFromFile(design.name, design.bytes) : null;
+    if (!this.host.machine.isCurrentOpen(token)) return; // a later open won
+    if (payload?.ok && design.prepare) payload.value.prepare = { ...design.prepare };
+    if (payload?.ok && design.repair) payload.value.repair = { ...design.repair };
+    if (!payload || !payload.ok) {
+      this.host.machine.abandonOpen(token);
+      this.failOpen(payload ? payload.message : 'nothing to open');
+      return;
+    }
+    // The session's mesh is about to change: a solve under way is of no use any more.
+    this.host.dropSolve();
+    this.host.machine.openSent(token, this.host.solver.load(payload.value));
+    this.host.updateButtons();
+  }
+
+  failOpen(reason: string): void {
+    const notice = this.pendingNotice;
+    this.pendingNotice = null;
+    this.syncExampleSelect();
+    this.host.status.resetProgress();
+    this.host.status.error(notice ? `${notice} ${reason}` : reason);
+    this.host.updateButtons();
+  }
+
+  onLoaded(job: number, info: MeshInfo, positions: Float32Array, indices: Uint32Array, carried?: Carry): void {
+    // Prepared again: what the load said beyond the counts (a Rhino file's surfaces) stays.
+    const before = this.host.machine.mesh?.info;
+    const loaded = this.host.machine.loaded(job, (opening) => ({ design: opening.design, label: opening.label, fileName: opening.fileName, info: opening.reprepare && before ? { ...before, ...info } : info }));
+    if (!loaded) return;
+    const opening = loaded.info;
+    this.host.viewer.setSurface(positions, indices, opening.up === 'guess' ? guessUpAxis(positions) : opening.up, opening.reprepare !== undefined);
+    if (opening.reprepare) {
+      this.preparedAgain(opening, loaded.newest, carried);
+      return;
+    }
+    this.host.editor.meshLoaded(opening.params, opening.design.prepare);
+    this.host.preparation.show(opening.design); // what this mesh was prepared with
+    showMeshInfo(loaded.mesh.label, loaded.mesh.info);
+    rhinoLoaded(loaded.mesh.fileName, loaded.mesh.info);
+    renderStats(this.host.statsBox, null);
+    this.host.fabrication.panelsChanged(false);
+    this.host.updateButtons();
+    // Overtaken by a later open: shown, since the worker holds it now, but that open goes on.
+    if (!loaded.newest) return;
+    this.syncExampleSelect();
+    this.host.save({ mesh: opening.design, params: opening.params, history: [], fabrication: this.host.fabrication.current });
+    // Panel edits name triangles: a link's must exist in the mesh it opened.
+    const misfit = [...opening.history, opening.params].map((p) => checkEditsFit(p.edits, info.triangles)).find((c) => !c.ok);
+    if (opening.solve && misfit && !misfit.ok) {
+      this.host.status.error(`${misfit.message}; not solved.`);
+    } else if (opening.solve) {
+      const chain = [...opening.history, opening.params];
+      this.host.startSolve(chain, false, chain);
+    } else {
+      this.host.status.show(`${opening.label} is loaded. Remesh to make panels.`);
+    }
+    if (this.pendingNotice) {
+      this.host.status.error(this.pendingNotice);
+      this.pendingNotice = null;
+    }
+    this.host.updateButtons();
+  }
+
+  // The design's mesh, prepared again, is on show: its note, the carried paint and edits as one
+  // history step, and the solve (from the prepared mesh: no warm start across meshes).
+  private preparedAgain(opening: OpenInfo, newest: boolean, carried: Carry | undefined): void {
+    const mesh = this.host.machine.mesh!;
+    showMeshInfo(mesh.label, mesh.info);
+    this.host.preparation.show(opening.design);
+    renderStats(this.host.statsBox, null);
+    this.host.fabrication.panelsChanged(false);
+    let chain = [...opening.history, opening.params];
+    if (opening.reprepare === 'carry' && carried) {
+      const paint = carried.paint && !isUniform(carried.paint) ? carried.paint : null;
+      const { params, dropped } = carriedParams(opening.params, paint ? fieldKey(paint) : '', carried.faces);
+      this.host.editor.reprepared(opening.params, params, opening.design.prepare!, paint);
+      if (dropped > 0) this.solveNotice = `${dropped === 1 ? '1 merge edit was' : `${dropped} merge edits were`} dropped: on the prepared mesh both of its panels' triangles are one.`;
+      chain = [params];
+    } else {
+      this.host.editor.surfaceChanged();
+    }
+    if (newest) this.host.startSolve(chain, false, chain);
+    this.host.updateButtons();
+  }
+
+  syncExampleSelect(): void {
+    this.host.examples.sync(this.host.machine.mesh?.design);
+  }
+
+}
+
+// The design's mesh with this repair (none: the field left out, as links before it had).
+function withRepair(design: DesignMesh, repair: MeshRepair | undefined): DesignMesh {
+  const { repair: _old, ...rest } = design;
+  return repair ? { ...rest, repair } : rest;
+}
