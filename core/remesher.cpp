@@ -89,7 +89,7 @@ void panel_lloyd_iteration(const Metric& metric, const MeshTopology& topology, C
                            const ExtraCost* extra, ClusterMomentsCache& moments) {
   choose_seeds(metric, clustering);
   flood(metric, topology, clustering, extra, /*with_energy=*/false);
-  refit(metric, clustering, moments.update(metric.faces(), clustering.labels, clustering.num_clusters()));
+  moments.refit(metric, clustering);
   for (int& s : clustering.sticky) {
     if (s > 0) --s;
   }
