@@ -106,8 +106,7 @@ void Remesher::panel_round() {
   options.fixed_planes = settled_planes_;
   hold(options.fixed, options.fixed_planes);  // locked panels and their neighbours
   options.layout.held_nodes = held_nodes();
-  const std::vector<ClusterMoments>& moments =
-      moments_.update(faces_, clustering_.labels, clustering_.num_clusters());
+  const std::vector<ClusterMoments>& moments = moments_.update(faces_, clustering_.labels, clustering_.num_clusters());
   auto attempt =
       std::make_unique<PanelAttempt>(mesh_, topology_, local_positions_, faces_, clustering_, options, &moments);
   const int invalid = attempt->num_invalid();

@@ -126,8 +126,7 @@ double flood(const Metric& metric, const MeshTopology& topology, Clustering& clu
   for (int f = 0; f < faces; ++f) {
     const int label = state[static_cast<size_t>(f)].label;
     if (label < 0) continue;
-    if (with_energy)
-      energy += metric.cost(f, terms[static_cast<size_t>(label)]) + (extra ? (*extra)(f, label) : 0.0);
+    if (with_energy) energy += metric.cost(f, terms[static_cast<size_t>(label)]) + (extra ? (*extra)(f, label) : 0.0);
     push_neighbours(f, label);
   }
   while (!queue.empty()) {

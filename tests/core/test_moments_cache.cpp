@@ -38,7 +38,8 @@ TEST(MomentsCache, MatchesFullSumsAndRefitBitForBit) {
   const MeshTopology topology = build_topology(mesh);
   const FaceData faces = make_face_data(mesh, {});
   const Metric metric(faces, MetricWeights{}, 30);
-  Clustering plain = initial_clustering(metric, topology, place_seeds(faces, topology, 30, SeedingMethod::FarthestPoint, 1));
+  Clustering plain =
+      initial_clustering(metric, topology, place_seeds(faces, topology, 30, SeedingMethod::FarthestPoint, 1));
   Clustering cached = plain;
   ClusterMomentsCache cache;
   SplitMix64 rng(3);
