@@ -73,6 +73,7 @@ void Remesher::start_lloyd() {
 }
 
 void Remesher::after_lloyd() {
+  moments_.clear();
   if (!params_.make_panels) {
     progress_.stage = Stage::Done;
     return;
@@ -83,11 +84,12 @@ void Remesher::after_lloyd() {
 namespace {
 
 // A Lloyd iteration of the panel phase: the clustering metric plus the boundary term.
+// Most clusters keep their faces here (the settled ones): `moments` sums only the others.
 void panel_lloyd_iteration(const Metric& metric, const MeshTopology& topology, Clustering& clustering,
-                           const ExtraCost* extra) {
+                           const ExtraCost* extra, ClusterMomentsCache& moments) {
   choose_seeds(metric, clustering);
-  flood(metric, topology, clustering, extra);
-  refit(metric, clustering);
+  flood(metric, topology, clustering, extra, /*with_energy=*/false);
+  moments.refit(metric, clustering);
   for (int& s : clustering.sticky) {
     if (s > 0) --s;
   }
@@ -104,7 +106,9 @@ void Remesher::panel_round() {
   options.fixed_planes = settled_planes_;
   hold(options.fixed, options.fixed_planes);  // locked panels and their neighbours
   options.layout.held_nodes = held_nodes();
-  auto attempt = std::make_unique<PanelAttempt>(mesh_, topology_, local_positions_, faces_, clustering_, options);
+  const std::vector<ClusterMoments>& moments = moments_.update(faces_, clustering_.labels, clustering_.num_clusters());
+  auto attempt =
+      std::make_unique<PanelAttempt>(mesh_, topology_, local_positions_, faces_, clustering_, options, &moments);
   const int invalid = attempt->num_invalid();
   ++panel_rounds_done_;
   progress_.iteration = panel_rounds_done_;
@@ -173,7 +177,7 @@ void Remesher::fix_panels(const PanelAttempt& attempt) {
     term.ignore(static_cast<int>(c));
   }
   term.freeze(settled_, clustering_.labels);
-  panel_lloyd_iteration(metric_, topology_, clustering_, &term);
+  panel_lloyd_iteration(metric_, topology_, clustering_, &term, moments_);
   progress_.energy = clustering_.energy * faces_.area_to_world();
 }
 
@@ -301,6 +305,7 @@ void Remesher::set_params(RemeshParams params) {
   const int target = keep_count ? old_panels : params.panels;
   params_ = std::move(params);
   if (faces) faces_ = std::move(*faces);
+  moments_.clear();
   metric_ = Metric(faces_, params_.weights, params_.panels);
   if (restart) {
     clustering_ = Clustering{};

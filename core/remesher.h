@@ -15,6 +15,7 @@
 #include "core/cluster/clustering.h"
 #include "core/cluster/face_data.h"
 #include "core/cluster/metric.h"
+#include "core/cluster/moments_cache.h"
 #include "core/cluster/seeding.h"
 #include "core/density/anisotropy.h"
 #include "core/mesh/topology.h"
@@ -196,6 +197,7 @@ class Remesher {
   Progress progress_;
   std::vector<Vec3> local_positions_;   // mesh vertices in the frame of faces_
   std::unique_ptr<PanelAttempt> best_;  // the attempt with the fewest invalid panels so far
+  ClusterMomentsCache moments_;         // the panel phase's cluster moments (faces_ and clustering_)
   PanelMesh panels_;
   int panel_rounds_done_ = 0;
   int stalled_rounds_ = 0;  // panel rounds since the fewest invalid panels went down

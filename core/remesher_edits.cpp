@@ -176,7 +176,7 @@ void Remesher::lloyd_step_held() {
   choose_seeds(metric_, clustering_);
   const std::vector<int> before = clustering_.labels;
   const FixedLabels fixed(held_labels());
-  flood(metric_, topology_, clustering_, &fixed);
+  flood(metric_, topology_, clustering_, &fixed, /*with_energy=*/false);
   refit(metric_, clustering_);
   for (int& s : clustering_.sticky) {
     if (s > 0) --s;

@@ -67,7 +67,7 @@ int split_cluster(const Metric& metric, const MeshTopology& topology, Clustering
   // No stickiness during this flood: a sticky neighbour would claim faces next to its seed.
   work.sticky.assign(static_cast<size_t>(added) + 1, 0);
   const InsideCluster inside(c.labels, cluster, added);
-  flood(metric, topology, work, &inside);
+  flood(metric, topology, work, &inside, /*with_energy=*/false);
   c.labels = std::move(work.labels);
   c.proxies = std::move(work.proxies);
   c.seeds = std::move(work.seeds);

@@ -24,8 +24,10 @@ Proxy single_face_proxy(const FaceData& faces, int face, const Vec3& fallback_no
 }
 
 EnergyTerms refit(const Metric& metric, Clustering& clustering) {
-  const std::vector<ClusterMoments> moments =
-      cluster_moments(metric.faces(), clustering.labels, clustering.num_clusters());
+  return refit(metric, clustering, cluster_moments(metric.faces(), clustering.labels, clustering.num_clusters()));
+}
+
+EnergyTerms refit(const Metric& metric, Clustering& clustering, const std::vector<ClusterMoments>& moments) {
   for (size_t i = 0; i < moments.size(); ++i) clustering.proxies[i] = metric.fit(moments[i], clustering.proxies[i]);
   const EnergyTerms energy = clustering_energy(metric, moments, clustering.proxies);
   clustering.energy = energy.total();

@@ -28,6 +28,8 @@ std::vector<ClusterMoments> cluster_moments(const FaceData& faces, const std::ve
 // Refits every proxy to its cluster (Metric::fit), sets clustering.energy and returns the
 // energy by term. Call it whenever labels or the metric changed.
 EnergyTerms refit(const Metric& metric, Clustering& clustering);
+// The same with the moments of clustering.labels already at hand (ClusterMomentsCache).
+EnergyTerms refit(const Metric& metric, Clustering& clustering, const std::vector<ClusterMoments>& moments);
 
 EnergyTerms clustering_energy(const Metric& metric, const std::vector<ClusterMoments>& moments,
                               const std::vector<Proxy>& proxies);

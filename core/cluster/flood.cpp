@@ -69,7 +69,8 @@ double flood(const Metric& metric, const MeshTopology& topology, Clustering& clu
   return flood(metric, topology, clustering, nullptr);
 }
 
-double flood(const Metric& metric, const MeshTopology& topology, Clustering& clustering, const ExtraCost* extra) {
+double flood(const Metric& metric, const MeshTopology& topology, Clustering& clustering, const ExtraCost* extra,
+             bool with_energy) {
   const int faces = metric.faces().num_faces();
   const int n = clustering.num_clusters();
 
@@ -125,7 +126,7 @@ double flood(const Metric& metric, const MeshTopology& topology, Clustering& clu
   for (int f = 0; f < faces; ++f) {
     const int label = state[static_cast<size_t>(f)].label;
     if (label < 0) continue;
-    energy += metric.cost(f, terms[static_cast<size_t>(label)]) + (extra ? (*extra)(f, label) : 0.0);
+    if (with_energy) energy += metric.cost(f, terms[static_cast<size_t>(label)]) + (extra ? (*extra)(f, label) : 0.0);
     push_neighbours(f, label);
   }
   while (!queue.empty()) {
@@ -155,7 +156,7 @@ double flood(const Metric& metric, const MeshTopology& topology, Clustering& clu
   std::vector<int>& labels = clustering.labels;
   labels.resize(static_cast<size_t>(faces));
   for (size_t f = 0; f < state.size(); ++f) labels[f] = state[f].label;
-  return energy;
+  return with_energy ? energy : 0.0;
 }
 
 }  // namespace ff

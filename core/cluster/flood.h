@@ -31,7 +31,10 @@ class ExtraCost {
   virtual int fixed_label(int /*face*/) const { return -1; }
 };
 
-// flood() with `extra` added to every cost (nullptr: none).
-double flood(const Metric& metric, const MeshTopology& topology, Clustering& clustering, const ExtraCost* extra);
+// flood() with `extra` added to every cost (nullptr: none). with_energy false: the labels
+// only, returns 0 (the energy of the faces assigned up front costs a metric and an extra
+// cost each: most of the surface in the panel phase's later rounds).
+double flood(const Metric& metric, const MeshTopology& topology, Clustering& clustering, const ExtraCost* extra,
+             bool with_energy = true);
 
 }  // namespace ff

@@ -62,7 +62,8 @@ void relax(PanelLayout& layout, const std::vector<ClusterMoments>& moments, cons
 }  // namespace
 
 PanelAttempt::PanelAttempt(const TriMesh& mesh, const MeshTopology& topology, const std::vector<Vec3>& positions,
-                           const FaceData& faces, const Clustering& clustering, const PanelAttemptOptions& options)
+                           const FaceData& faces, const Clustering& clustering, const PanelAttemptOptions& options,
+                           const std::vector<ClusterMoments>* known_moments)
     : clustering_(clustering),
       graph_(build_panel_graph(mesh, topology, clustering_.labels, clustering_.num_clusters())) {
   const size_t n = static_cast<size_t>(clustering_.num_clusters());
@@ -85,7 +86,10 @@ PanelAttempt::PanelAttempt(const TriMesh& mesh, const MeshTopology& topology, co
     }
   }
   for (size_t c = 0; c < n; ++c) orientation[c] = clustering_.proxies[c].normal;
-  const std::vector<ClusterMoments> moments = cluster_moments(faces, clustering_.labels, static_cast<int>(n));
+  std::vector<ClusterMoments> summed;
+  if (!known_moments || known_moments->size() != n)
+    summed = cluster_moments(faces, clustering_.labels, static_cast<int>(n));
+  const std::vector<ClusterMoments>& moments = known_moments && known_moments->size() == n ? *known_moments : summed;
   std::vector<Plane> planes = options.corner_weight > 0.0
                                   ? corner_fit_planes(moments, corners, orientation, options.corner_weight)
                                   : proxy_planes(clustering_);

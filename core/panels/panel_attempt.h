@@ -35,8 +35,11 @@ struct PanelAttemptOptions {
 class PanelAttempt {
  public:
   // positions: mesh vertices in the local frame; must outlive the attempt, like mesh and topology.
+  // moments: cluster_moments(faces, clustering.labels, n) when the caller has them (nullptr:
+  // summed here).
   PanelAttempt(const TriMesh& mesh, const MeshTopology& topology, const std::vector<Vec3>& positions,
-               const FaceData& faces, const Clustering& clustering, const PanelAttemptOptions& options);
+               const FaceData& faces, const Clustering& clustering, const PanelAttemptOptions& options,
+               const std::vector<ClusterMoments>* moments = nullptr);
   PanelAttempt(const PanelAttempt&) = delete;
   PanelAttempt& operator=(const PanelAttempt&) = delete;
 

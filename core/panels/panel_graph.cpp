@@ -24,11 +24,17 @@ bool is_boundary_vertex(const TriMesh& mesh, const MeshTopology& topology, int v
 }  // namespace
 
 std::vector<int> vertex_fan(const TriMesh& mesh, const MeshTopology& topology, int v, bool& on_boundary) {
+  std::vector<int> fan;
+  vertex_fan(mesh, topology, v, on_boundary, fan);
+  return fan;
+}
+
+void vertex_fan(const TriMesh& mesh, const MeshTopology& topology, int v, bool& on_boundary, std::vector<int>& fan) {
   const int begin = topology.vertex_face_offsets[static_cast<size_t>(v)];
   const int end = topology.vertex_face_offsets[static_cast<size_t>(v) + 1];
-  std::vector<int> fan;
+  fan.clear();
   on_boundary = false;
-  if (begin == end) return fan;
+  if (begin == end) return;
   // Start where the clockwise neighbour (across the edge v -> next) is missing, if anywhere.
   int start = topology.vertex_faces[static_cast<size_t>(begin)];
   for (int k = begin; k < end; ++k) {
@@ -48,7 +54,6 @@ std::vector<int> vertex_fan(const TriMesh& mesh, const MeshTopology& topology, i
     // Counter-clockwise next: across the edge from the previous vertex back to v.
     f = topology.face_neighbors[static_cast<size_t>(f)][static_cast<size_t>((i + 2) % 3)];
   } while (f >= 0 && f != start && static_cast<int>(fan.size()) < limit);
-  return fan;
 }
 
 PanelGraph build_panel_graph(const TriMesh& mesh, const MeshTopology& topology, const std::vector<int>& labels,
@@ -61,7 +66,7 @@ PanelGraph build_panel_graph(const TriMesh& mesh, const MeshTopology& topology, 
 
   // Corners, pinches, and the vertex count of every cluster (for its Euler characteristic).
   std::vector<long long> euler(n, 0);
-  std::vector<int> cycle;
+  std::vector<int> cycle, fan, sorted;  // per vertex, reused
   for (int v = 0; v < mesh.num_vertices(); ++v) {
     // Most vertices lie inside one cluster: count them without walking their fan.
     const int begin = topology.vertex_face_offsets[static_cast<size_t>(v)];
@@ -76,7 +81,7 @@ PanelGraph build_panel_graph(const TriMesh& mesh, const MeshTopology& topology, 
       continue;
     }
     bool on_boundary = false;
-    const std::vector<int> fan = vertex_fan(mesh, topology, v, on_boundary);
+    vertex_fan(mesh, topology, v, on_boundary, fan);
     if (fan.empty()) continue;
     cycle.clear();
     for (int f : fan) {
@@ -85,7 +90,7 @@ PanelGraph build_panel_graph(const TriMesh& mesh, const MeshTopology& topology, 
     }
     if (!on_boundary && cycle.size() > 1 && cycle.front() == cycle.back()) cycle.pop_back();
     if (on_boundary) cycle.push_back(kBoundary);
-    std::vector<int> sorted = cycle;
+    sorted.assign(cycle.begin(), cycle.end());
     std::sort(sorted.begin(), sorted.end());
     for (size_t k = 0; k < sorted.size(); ++k) {
       if (sorted[k] == kBoundary) continue;

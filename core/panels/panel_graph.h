@@ -52,5 +52,8 @@ PanelGraph build_panel_graph(const TriMesh& mesh, const MeshTopology& topology, 
 // The faces around vertex v in counter-clockwise order; on the boundary, from the face on
 // one boundary edge to the face on the other. Sets `on_boundary`.
 std::vector<int> vertex_fan(const TriMesh& mesh, const MeshTopology& topology, int v, bool& on_boundary);
+// The same into `fan` (cleared first), reusing its memory: build_panel_graph() walks the fan
+// of every vertex where clusters meet, every panel round.
+void vertex_fan(const TriMesh& mesh, const MeshTopology& topology, int v, bool& on_boundary, std::vector<int>& fan);
 
 }  // namespace ff

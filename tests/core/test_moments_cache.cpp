@@ -1,0 +1,83 @@
+// ClusterMomentsCache: after any sequence of label changes its moments are cluster_moments()
+// bit for bit, and its refit() gives refit()'s proxies and energy bit for bit.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <vector>
+
+#include "core/cluster/clustering.h"
+#include "core/cluster/face_data.h"
+#include "core/cluster/flood.h"
+#include "core/cluster/lloyd.h"
+#include "core/cluster/moments_cache.h"
+#include "core/cluster/seeding.h"
+#include "core/mesh/topology.h"
+#include "core/shapes/hard_cases.h"
+#include "core/util/random.h"
+
+namespace ff {
+namespace {
+
+template <typename T>
+bool same_bits(const T& a, const T& b) {
+  return std::memcmp(&a, &b, sizeof(T)) == 0;
+}
+
+bool same_moments(const ClusterMoments& a, const ClusterMoments& b) {
+  return same_bits(a.area, b.area) && same_bits(a.first, b.first) && same_bits(a.centroid_sq, b.centroid_sq) &&
+         same_bits(a.second, b.second) && same_bits(a.normal_sum, b.normal_sum) &&
+         same_bits(a.density_area, b.density_area);
+}
+
+bool same_proxy(const Proxy& a, const Proxy& b) {
+  return same_bits(a.center, b.center) && same_bits(a.normal, b.normal) && same_bits(a.density, b.density);
+}
+
+TEST(MomentsCache, MatchesFullSumsAndRefitBitForBit) {
+  const TriMesh mesh = make_saddle(3000);
+  const MeshTopology topology = build_topology(mesh);
+  const FaceData faces = make_face_data(mesh, {});
+  const Metric metric(faces, MetricWeights{}, 30);
+  Clustering plain =
+      initial_clustering(metric, topology, place_seeds(faces, topology, 30, SeedingMethod::FarthestPoint, 1));
+  Clustering cached = plain;
+  ClusterMomentsCache cache;
+  SplitMix64 rng(3);
+  int reused_rounds = 0;
+  for (int round = 0; round < 12; ++round) {
+    // Move a few faces between clusters (or none), as a panel round would.
+    const int moves = round % 3 == 0 ? 0 : 1 + static_cast<int>(rng.uniform() * 20.0);
+    for (int k = 0; k < moves; ++k) {
+      const size_t f = static_cast<size_t>(rng.uniform() * static_cast<double>(plain.labels.size()));
+      const int to = static_cast<int>(rng.uniform() * plain.num_clusters());
+      plain.labels[f] = cached.labels[f] = to;
+    }
+    if (round == 6) {  // a proxy changed without its faces changing (a split's new proxy)
+      plain.proxies[2].center += Vec3(0.1, 0.0, 0.0);
+      cached.proxies[2] = plain.proxies[2];
+    }
+    const std::vector<ClusterMoments> full = cluster_moments(faces, plain.labels, plain.num_clusters());
+    const std::vector<ClusterMoments>& kept = cache.update(faces, cached.labels, cached.num_clusters());
+    ASSERT_EQ(full.size(), kept.size());
+    for (size_t c = 0; c < full.size(); ++c) ASSERT_TRUE(same_moments(full[c], kept[c])) << "round " << round;
+    const EnergyTerms a = refit(metric, plain);
+    const EnergyTerms b = cache.refit(metric, cached);
+    EXPECT_TRUE(same_bits(a.total(), b.total())) << "round " << round;
+    EXPECT_TRUE(same_bits(plain.energy, cached.energy));
+    for (int c = 0; c < plain.num_clusters(); ++c)
+      ASSERT_TRUE(same_proxy(plain.proxies[static_cast<size_t>(c)], cached.proxies[static_cast<size_t>(c)]))
+          << "round " << round << " cluster " << c;
+    reused_rounds += moves == 0 ? 1 : 0;
+  }
+  EXPECT_GT(reused_rounds, 0);
+  // Fewer clusters (a merge renumbers): still the full sums.
+  for (int& l : plain.labels) l = l == 29 ? 0 : l;
+  plain.proxies.pop_back(), plain.seeds.pop_back(), plain.sticky.pop_back();
+  const std::vector<ClusterMoments> full = cluster_moments(faces, plain.labels, 29);
+  const std::vector<ClusterMoments>& kept = cache.update(faces, plain.labels, 29);
+  ASSERT_EQ(kept.size(), 29u);
+  for (size_t c = 0; c < full.size(); ++c) EXPECT_TRUE(same_moments(full[c], kept[c]));
+}
+
+}  // namespace
+}  // namespace ff
