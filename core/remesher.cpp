@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <optional>
 
+#include "core/cluster/cluster_edits.h"
 #include "core/cluster/flood.h"
 #include "core/cluster/lloyd.h"
 #include "core/cluster/teleport.h"
@@ -106,6 +107,8 @@ void Remesher::panel_round() {
   options.fixed_planes = settled_planes_;
   hold(options.fixed, options.fixed_planes);  // locked panels and their neighbours
   options.layout.held_nodes = held_nodes();
+  options.hinge_of = hinges();
+  locked_limits(options.layout.locked_spike_distance, options.layout.locked_diameter);
   const std::vector<ClusterMoments>& moments = moments_.update(faces_, clustering_.labels, clustering_.num_clusters());
   auto attempt =
       std::make_unique<PanelAttempt>(mesh_, topology_, local_positions_, faces_, clustering_, options, &moments);
@@ -143,7 +146,7 @@ void Remesher::fix_panels(const PanelAttempt& attempt) {
   // Acute corners do not move with the boundary term (it shifts faces, not where clusters
   // meet), so with a minimum angle a stall splits at up to three of them at once.
   const int splits = stalled ? (params_.min_corner_angle_deg > 0.0 ? 3 : 1) : 0;
-  std::vector<std::pair<int, int>> requests = split_requests(mesh_, topology_, attempt, splits);
+  std::vector<std::pair<int, int>> requests = split_requests(mesh_, topology_, attempt, splits, held);
   requests.erase(std::remove_if(requests.begin(), requests.end(), [&](const auto& r) { return is_held(r.first); }),
                  requests.end());
   // Merges happen away from the splits; a settled pair may merge (then it is unsettled below).
@@ -176,8 +179,21 @@ void Remesher::fix_panels(const PanelAttempt& attempt) {
     settled_[c] = 0;
     term.ignore(static_cast<int>(c));
   }
-  term.freeze(settled_, clustering_.labels);
-  panel_lloyd_iteration(metric_, topology_, clustering_, &term, moments_);
+  if (held.empty()) {
+    term.freeze(settled_, clustering_.labels);
+    panel_lloyd_iteration(metric_, topology_, clustering_, &term, moments_);
+  } else {
+    // Held clusters keep their faces; a locked panel's neighbours are not frozen beyond
+    // that: free faces may join them where the boundary term says so (as in the Lloyd
+    // steps), which gives the clusters beyond them room to settle.
+    std::vector<char> frozen = settled_;
+    for (size_t c = 0; c < held.size() && c < frozen.size(); ++c) frozen[c] = frozen[c] && !held[c];
+    for (int c : locked_clusters()) frozen[static_cast<size_t>(c)] = 1;
+    term.freeze(frozen, clustering_.labels);
+    const std::vector<int> held_faces = held_labels();
+    const WithHeldFaces with_held(term, held_faces);
+    panel_lloyd_iteration(metric_, topology_, clustering_, &with_held, moments_);
+  }
   progress_.energy = clustering_.energy * faces_.area_to_world();
 }
 

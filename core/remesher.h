@@ -157,9 +157,10 @@ class Remesher {
   void finish_panels();
   void cut_glass();  // glass mode, last: the pieces of concave panels (glass_split.h)
 
-  // Edits (remesher_edits.cpp). A held cluster keeps exactly these faces and this plane.
+  // Edits (remesher_edits.cpp). A held cluster keeps exactly these faces, and this plane (a
+  // neighbour of the locked panel may turn it about their edge line: hinges()).
   struct Held {
-    int face = -1;  // one of its faces: its id is that face's label
+    int face = -1;  // one of its held faces: its id is that face's label
     std::vector<int> faces;
     Plane plane;
   };
@@ -169,6 +170,10 @@ class Remesher {
     std::vector<Held> held;
     // Its outline's nodes, each named by a face of each of its three clusters (-1: the border).
     std::vector<std::array<int, 3>> nodes;
+    // The spike distance (world units) the design had when it was locked: its vertices keep
+    // being judged by it (LayoutOptions::locked_spike_distance).
+    double spike_distance = 0.0;
+    double diameter = 0.0;  // and its D (world units): LayoutOptions::locked_diameter
   };
   // Everything an edit changes, to restore on failure or undo.
   struct EditState;
@@ -184,6 +189,9 @@ class Remesher {
   std::vector<char> held_clusters() const;
   void hold(std::vector<char>& settled, std::vector<Plane>& planes) const;
   std::vector<int> held_labels() const;  // per face: its held cluster, or -1
+  std::vector<int> hinges() const;       // PanelAttemptOptions::hinge_of
+  // LayoutOptions::locked_spike_distance and locked_diameter.
+  void locked_limits(std::vector<double>& spike_distance, std::vector<double>& diameter) const;
   std::vector<std::array<int, 3>> held_nodes() const;  // LayoutOptions::held_nodes
   void lloyd_step_held();
   void change_count_held(int target);

@@ -2,10 +2,14 @@
 // RemeshParams::edits, applied in order to the solved design, so a list replays to the same
 // panels: undo and redo are a shorter or longer list. Split and merge change the clustering
 // and re-run only the panel phase (the Lloyd phase would undo them), with every cluster away
-// from the edit settled, so the rest of the design stays as it was. A lock holds the
-// cluster's faces and plane, and those of every cluster around it: a panel's outline is made
-// of its neighbours' planes, so holding them is what keeps it exactly. Held clusters take no
-// part in later Lloyd steps, count changes, splits near problems or plane fits.
+// from the edit settled, so the rest of the design stays as it was. A lock holds what the
+// panel's outline is made of: its faces and plane; its neighbours' faces (so its corners and
+// chains stay) and their planes, each free to turn about its edge line with the locked plane
+// (hinges(): every node of the outline stays on its lines, so the neighbours' other nodes can
+// still move); its node pairings; and the spike distance and D it was laid out with
+// (locked_limits()), so its own vertices are judged as when it was locked and its border
+// keeps its vertices. Held clusters take no part in later Lloyd steps, count changes or
+// splits; a fix that would split one splits a free cluster at its problem corner instead.
 #include <algorithm>
 #include <string>
 
@@ -18,7 +22,8 @@ namespace ff {
 
 namespace {
 constexpr size_t kMaxEdits = 100000;
-}
+
+}  // namespace
 
 const char* edit_name(PanelEdit::Op op) {
   switch (op) {
@@ -150,6 +155,32 @@ void Remesher::hold(std::vector<char>& settled, std::vector<Plane>& planes) cons
   }
 }
 
+// A neighbour whose plane makes a node of a locked panel may turn about the line where it
+// meets the locked plane: every node of the locked panel on it lies on that line, and its
+// other plane there is the locked one or another neighbour turning about a line through the
+// node, so the outline stays exactly. Not when it is locked itself or next to two locks.
+std::vector<int> Remesher::hinges() const {
+  if (locks_.empty()) return {};
+  const size_t n = static_cast<size_t>(clustering_.num_clusters());
+  std::vector<int> out(n, -1);
+  const auto label = [&](int face) { return clustering_.labels[static_cast<size_t>(face)]; };
+  for (const Lock& lock : locks_) {
+    const int locked = label(lock.held[0].face);
+    for (size_t k = 1; k < lock.held.size(); ++k) {
+      const int face = lock.held[k].face;
+      const bool on_node = std::any_of(lock.nodes.begin(), lock.nodes.end(), [&](const std::array<int, 3>& t) {
+        return std::find(t.begin(), t.end(), face) != t.end();
+      });
+      if (!on_node) continue;
+      int& h = out[static_cast<size_t>(label(face))];
+      h = h == -1 || h == locked ? locked : -2;
+    }
+  }
+  for (const Lock& lock : locks_) out[static_cast<size_t>(label(lock.held[0].face))] = -2;
+  for (int& h : out) h = std::max(h, -1);
+  return out;
+}
+
 std::vector<int> Remesher::held_labels() const {
   std::vector<int> out(clustering_.labels.size(), -1);
   for (const Lock& lock : locks_) {
@@ -159,6 +190,18 @@ std::vector<int> Remesher::held_labels() const {
     }
   }
   return out;
+}
+
+void Remesher::locked_limits(std::vector<double>& spike_distance, std::vector<double>& diameter) const {
+  spike_distance.clear(), diameter.clear();
+  if (locks_.empty()) return;
+  spike_distance.assign(static_cast<size_t>(clustering_.num_clusters()), 0.0);
+  diameter.assign(spike_distance.size(), 0.0);
+  for (const Lock& lock : locks_) {
+    const size_t c = static_cast<size_t>(clustering_.labels[static_cast<size_t>(lock.held[0].face)]);
+    spike_distance[c] = lock.spike_distance / faces_.scale;
+    diameter[c] = lock.diameter / faces_.scale;
+  }
 }
 
 std::vector<int> Remesher::locked_clusters() const {
@@ -292,6 +335,8 @@ void Remesher::apply_edit(const PanelEdit& e, size_t index) {
         }
         if (known) lock.nodes.push_back(named);
       }
+      lock.spike_distance = panels_.spike_distance;
+      lock.diameter = metric_.diameter() * faces_.scale;
       locks_.push_back(std::move(lock));
       break;
     }

@@ -44,6 +44,27 @@ int worst_free_cluster(const Metric& metric, const Clustering& clustering, const
 std::pair<int, int> cheapest_free_merge(const Metric& metric, const MeshTopology& topology,
                                         const Clustering& clustering, const std::vector<char>& keep);
 
+// Another flood cost (the panel phase's boundary term) with given faces kept in given
+// clusters (held: per face, its cluster or -1; outlives this): any other assignment of them
+// costs kForbidden. Free faces may still join a cluster that holds faces.
+class WithHeldFaces : public ExtraCost {
+ public:
+  WithHeldFaces(const ExtraCost& inner, const std::vector<int>& held) : inner_(inner), held_(held) {}
+  double operator()(int face, int k) const override {
+    const int h = held_[static_cast<size_t>(face)];
+    return h >= 0 && h != k ? kForbidden : inner_(face, k);
+  }
+  int fixed_label(int face) const override {
+    const int h = held_[static_cast<size_t>(face)];
+    return h >= 0 ? h : inner_.fixed_label(face);
+  }
+  static constexpr double kForbidden = 1e30;
+
+ private:
+  const ExtraCost& inner_;
+  const std::vector<int>& held_;
+};
+
 // Keeps given faces in given clusters during a flood (cost 0 otherwise): per face, the
 // cluster it must stay in, or -1 when it is free.
 class FixedLabels : public ExtraCost {

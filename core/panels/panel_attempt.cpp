@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <deque>
 
+#include <Eigen/Dense>
+
 #include "core/panels/plane_fit.h"
 
 namespace ff {
@@ -26,17 +28,56 @@ std::vector<char> fixed_masters_of(const PanelLayout& layout, const std::vector<
   return out;
 }
 
+// Per master: the line it may turn about (PanelAttemptOptions::hinge_of), freeing it in
+// `fixed_masters`. A master turns only when every fixed cluster on it is hinged on the same
+// line (its plane is theirs) and the line is well defined (the planes cross at a clear angle).
+std::vector<PlaneHinge> master_hinges(const PanelLayout& layout, const std::vector<char>& fixed,
+                                      const std::vector<int>& hinge_of, std::vector<char>& fixed_masters) {
+  std::vector<PlaneHinge> out;
+  if (hinge_of.empty() || fixed_masters.empty()) return out;
+  const MasterPlanes& planes = layout.planes();
+  out.assign(planes.planes.size(), PlaneHinge{});
+  std::vector<int> axis(planes.planes.size(), -1);  // per master: the hinge cluster, -2: none possible
+  for (size_t c = 0; c < fixed.size() && c < planes.master_of.size(); ++c) {
+    if (!fixed[c]) continue;
+    const size_t m = static_cast<size_t>(planes.master_of[c]);
+    const int h = c < hinge_of.size() ? hinge_of[c] : -1;
+    const bool same = h >= 0 && (axis[m] == -1 || axis[m] == h);
+    axis[m] = same ? h : -2;
+  }
+  constexpr double kMinSine = 0.02;  // about 1.1 degrees, beyond the master planes' angle
+  for (size_t m = 0; m < axis.size(); ++m) {
+    if (axis[m] < 0) continue;
+    const size_t other = static_cast<size_t>(planes.master_of[static_cast<size_t>(axis[m])]);
+    if (other == m) continue;
+    const Plane& a = planes.planes[m];
+    const Plane& b = planes.planes[other];
+    const Vec3 line = a.normal.cross(b.normal);
+    if (!(line.norm() > kMinSine)) continue;
+    // The point of the line nearest the master's centre.
+    Eigen::Matrix3d A;
+    A.row(0) = a.normal.transpose(), A.row(1) = b.normal.transpose(), A.row(2) = line.normalized().transpose();
+    const Vec3 point = A.colPivHouseholderQr().solve(Vec3(a.offset, b.offset, line.normalized().dot(planes.centers[m])));
+    if (!point.allFinite()) continue;
+    out[m] = PlaneHinge{true, point, line.normalized()};
+    fixed_masters[m] = 0;
+  }
+  return out;
+}
+
 // Relaxes the layout's planes (plane_relax.h), then the paper's tilt (2.3) in the same least
 // squares: pull the spikes harder and relax again, for as long as that lowers the number of
-// invalid panels. Masters with a fixed cluster stay.
+// invalid panels. Masters with a fixed cluster stay, or only turn about their hinge.
 void relax(PanelLayout& layout, const std::vector<ClusterMoments>& moments, const std::vector<char>& fixed,
            const PanelAttemptOptions& options) {
   const size_t n = moments.size();
   std::vector<ClusterMoments> master_moments(layout.planes().planes.size());
   for (size_t c = 0; c < n; ++c) master_moments[static_cast<size_t>(layout.planes().master_of[c])].add(moments[c]);
-  const std::vector<char> fixed_masters = fixed_masters_of(layout, fixed);
+  std::vector<char> fixed_masters = fixed_masters_of(layout, fixed);
+  const std::vector<PlaneHinge> hinges = master_hinges(layout, fixed, options.hinge_of, fixed_masters);
   std::vector<NodeConstraint> nodes = layout.node_constraints();
-  layout.set_planes(relax_planes(nodes, master_moments, layout.planes().planes, options.relax_options, fixed_masters));
+  layout.set_planes(
+      relax_planes(nodes, master_moments, layout.planes().planes, options.relax_options, fixed_masters, hinges));
   for (int t = 0; t < options.tilt_rounds && layout.num_invalid() > 0; ++t) {
     // Spikes, and every node of a panel that is invalid otherwise (a flipped edge is two
     // nodes in the wrong order: pulled to their corners they come back in order).
@@ -51,7 +92,7 @@ void relax(PanelLayout& layout, const std::vector<ClusterMoments>& moments, cons
     for (size_t k = 0; k < nodes.size(); ++k) nodes[k].weight *= pull[k] ? 10.0 : 1.0;
     const std::vector<Plane> before = layout.planes().planes;
     const int invalid = layout.num_invalid();
-    layout.set_planes(relax_planes(nodes, master_moments, before, options.relax_options, fixed_masters));
+    layout.set_planes(relax_planes(nodes, master_moments, before, options.relax_options, fixed_masters, hinges));
     if (layout.num_invalid() >= invalid) {
       layout.set_planes(before);
       break;
@@ -154,7 +195,9 @@ PanelAttempt::PanelAttempt(const TriMesh& mesh, const MeshTopology& topology, co
     layout_ = std::move(regrouped);
   }
   for (int t = 0; t < options.tilt_rounds && layout_->num_invalid() > 0; ++t) {
-    if (!layout_->tilt_spike_planes(fixed_masters_of(*layout_, fixed))) break;
+    std::vector<char> fixed_masters = fixed_masters_of(*layout_, fixed);
+    const std::vector<PlaneHinge> hinges = master_hinges(*layout_, fixed, options.hinge_of, fixed_masters);
+    if (!layout_->tilt_spike_planes(fixed_masters, hinges)) break;
     layout_->switch_pairings();
   }
 }
@@ -229,7 +272,8 @@ std::vector<int> enclosed_clusters(const PanelAttempt& attempt) {
 }
 
 std::vector<std::pair<int, int>> split_requests(const TriMesh& mesh, const MeshTopology& topology,
-                                                const PanelAttempt& attempt, int max_geometric) {
+                                                const PanelAttempt& attempt, int max_geometric,
+                                                const std::vector<char>& keep) {
   const Clustering& c = attempt.clustering();
   const PanelGraph& graph = attempt.graph();
   std::vector<std::pair<int, int>> out;
@@ -240,33 +284,40 @@ std::vector<std::pair<int, int>> split_requests(const TriMesh& mesh, const MeshT
   }
   const PanelLayout* layout = &attempt.layout();
   // Largest invalid panels first: splitting them costs the least detail elsewhere.
-  std::vector<int> invalid;
+  const auto kept = [&](int cluster) {
+    return static_cast<size_t>(cluster) < keep.size() && keep[static_cast<size_t>(cluster)];
+  };
+  std::vector<int> invalid, kept_invalid;
   for (int cluster = 0; cluster < layout->num_clusters(); ++cluster) {
-    if (!layout->issues()[static_cast<size_t>(cluster)].valid()) invalid.push_back(cluster);
+    if (!layout->issues()[static_cast<size_t>(cluster)].valid())
+      (kept(cluster) ? kept_invalid : invalid).push_back(cluster);
   }
   std::vector<int> size(static_cast<size_t>(c.num_clusters()), 0);
   for (int l : c.labels) size[static_cast<size_t>(l)] += 1;
   std::stable_sort(invalid.begin(), invalid.end(),
                    [&](int a, int b) { return size[static_cast<size_t>(a)] > size[static_cast<size_t>(b)]; });
+  // A kept panel's problem, last: a free cluster at its problem corner splits instead.
+  invalid.insert(invalid.end(), kept_invalid.begin(), kept_invalid.end());
   std::vector<char> corner_used(mesh.positions.size(), 0);
   int geometric = 0;
   for (int cluster : invalid) {
     if (geometric >= max_geometric) break;
     for (int v : layout->problem_corners(cluster)) {
       if (corner_used[static_cast<size_t>(v)]) continue;
-      // A face of this cluster at the corner, not its seed.
+      // A face of this cluster (of a free one, for a kept cluster) at the corner, not its seed.
       int face = -1;
       for (int k = topology.vertex_face_offsets[static_cast<size_t>(v)];
            k < topology.vertex_face_offsets[static_cast<size_t>(v) + 1]; ++k) {
         const int f = topology.vertex_faces[static_cast<size_t>(k)];
-        if (c.labels[static_cast<size_t>(f)] == cluster && f != c.seeds[static_cast<size_t>(cluster)]) {
+        const int l = c.labels[static_cast<size_t>(f)];
+        if ((kept(cluster) ? !kept(l) : l == cluster) && f != c.seeds[static_cast<size_t>(l)]) {
           face = f;
           break;
         }
       }
       if (face < 0) continue;
       corner_used[static_cast<size_t>(v)] = 1;
-      out.emplace_back(cluster, face);
+      out.emplace_back(c.labels[static_cast<size_t>(face)], face);
       ++geometric;
       break;
     }

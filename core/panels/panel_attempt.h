@@ -30,6 +30,10 @@ struct PanelAttemptOptions {
   // neighbours' were valid): per cluster, empty for none, and the planes themselves.
   std::vector<char> fixed;
   std::vector<Plane> fixed_planes;
+  // Per cluster (empty for none): a fixed cluster whose plane may still turn about the line
+  // where it meets the fixed plane of cluster hinge_of[c] (-1: it may not), the neighbour of
+  // a locked panel (remesher_edits.cpp). Its master turns when no other fixed cluster is on it.
+  std::vector<int> hinge_of;
 };
 
 class PanelAttempt {
@@ -73,7 +77,11 @@ std::vector<int> enclosed_clusters(const PanelAttempt& attempt);
 // Where to split after a failed attempt: (cluster, face) requests for split_near(). A cluster
 // that is not a disk (and not merely enclosed) splits at its face farthest from its seed; an invalid panel at a face
 // next to its problem corner, one split per corner, at most `max_geometric` of those.
+// `keep` (per cluster, empty for none): clusters never to split (held by a lock): the
+// geometric splits go to the other invalid panels first, then to a free cluster at a kept
+// panel's problem corner.
 std::vector<std::pair<int, int>> split_requests(const TriMesh& mesh, const MeshTopology& topology,
-                                                const PanelAttempt& attempt, int max_geometric);
+                                                const PanelAttempt& attempt, int max_geometric,
+                                                const std::vector<char>& keep = {});
 
 }  // namespace ff

@@ -105,7 +105,7 @@ int PanelLayout::switch_pairings() {
   return changes;
 }
 
-bool PanelLayout::tilt_spike_planes(const std::vector<char>& fixed_masters) {
+bool PanelLayout::tilt_spike_planes(const std::vector<char>& fixed_masters, const std::vector<PlaneHinge>& hinges) {
   MasterPlanes tilted = planes_;
   bool any = false;
   const std::vector<char> spikes = spike_nodes();
@@ -115,6 +115,20 @@ bool PanelLayout::tilt_spike_planes(const std::vector<char>& fixed_masters) {
     for (int m : masters_of_node(node)) {
       if (static_cast<size_t>(m) < fixed_masters.size() && fixed_masters[static_cast<size_t>(m)]) continue;
       Plane& plane = tilted.planes[static_cast<size_t>(m)];
+      if (static_cast<size_t>(m) < hinges.size() && hinges[static_cast<size_t>(m)].on) {
+        // Average with the plane through the hinge's line and the corner: still on the line.
+        const PlaneHinge& h = hinges[static_cast<size_t>(m)];
+        Vec3 through = h.direction.cross(at - h.point);
+        if (through.norm() < 1e-12) continue;
+        through.normalize();
+        if (through.dot(plane.normal) < 0.0) through = -through;
+        Vec3 normal = plane.normal + through;
+        normal -= normal.dot(h.direction) * h.direction;  // across the line, exactly
+        if (normal.norm() < 1e-12) continue;
+        plane = Plane::through(h.point, normal.normalized());
+        any = true;
+        continue;
+      }
       // Average the plane with the nearest plane through its centre and the corner.
       const Vec3& center = planes_.centers[static_cast<size_t>(m)];
       const Vec3 reach = at - center;

@@ -53,6 +53,7 @@ PanelLayout::PanelLayout(const TriMesh& mesh, const MeshTopology& topology, cons
   node_point_.assign(nodes, Vec3::Zero());
   node_planes_.assign(nodes, 0);
   node_exact_.assign(nodes, 1);
+  if (!options_.locked_spike_distance.empty()) node_limit_.assign(nodes, options_.spike_distance);
   node_group_.assign(nodes, -1);
   node_alias_.assign(nodes, -1);
   groups_of_cluster_.assign(clusters, {});
@@ -164,6 +165,17 @@ void PanelLayout::place_group_nodes(int g) {
         const VertexRuleResult w = closest_point_on_planes(walled, group.reference);
         if (w.exact) r = w;
       }
+    }
+    if (!node_limit_.empty()) {
+      const NodeTriangle& tri =
+          pairing_[static_cast<size_t>(g)][static_cast<size_t>(node - node_offset_[static_cast<size_t>(g)])];
+      double limit = options_.spike_distance;
+      for (int p : tri) {
+        const int c = group.clusters[static_cast<size_t>(p)];
+        if (c != kBoundary && static_cast<size_t>(c) < options_.locked_spike_distance.size())
+          limit = std::max(limit, options_.locked_spike_distance[static_cast<size_t>(c)]);
+      }
+      node_limit_[static_cast<size_t>(node)] = limit;
     }
     node_point_[static_cast<size_t>(node)] = r.point;
     node_planes_[static_cast<size_t>(node)] = static_cast<int>(planes.size());
@@ -285,7 +297,10 @@ void PanelLayout::build_panel(int c) {
   if (run_end > run_begin) runs.push_back({poly.points.size(), run_begin, run_end});  // a loop with no corner
   // Border vertices, last run first so earlier insert positions stay valid.
   const size_t fixed = poly.points.size();
-  const double tolerance = options_.border_tolerance * options_.diameter;
+  const bool locked = static_cast<size_t>(c) < options_.locked_diameter.size() &&
+                      options_.locked_diameter[static_cast<size_t>(c)] > 0.0;
+  const double tolerance =
+      options_.border_tolerance * (locked ? options_.locked_diameter[static_cast<size_t>(c)] : options_.diameter);
   for (auto it = runs.rbegin(); it != runs.rend(); ++it) {
     const size_t at = it->at;
     std::vector<Vec3> projected;
@@ -312,7 +327,21 @@ void PanelLayout::build_panel(int c) {
   for (int node : poly.node) inexact += node >= 0 && !node_exact_[static_cast<size_t>(node)] ? 1 : 0;
   issues = check_panel(poly.points, poly.reference, plane, options_.spike_distance, options_.tolerance,
                        options_.min_corner_angle_deg, options_.glass);
+  if (!node_limit_.empty()) {  // vertices of locked panels have their own limit
+    issues.spike_vertices = 0;
+    for (size_t i = 0; i < poly.points.size(); ++i)
+      issues.spike_vertices += (poly.points[i] - poly.reference[i]).norm() <= spike_limit(poly, i, c) ? 0 : 1;
+  }
   issues.spike_vertices = std::max(issues.spike_vertices, inexact);
+}
+
+double PanelLayout::spike_limit(const PanelPolygon& poly, size_t i, int cluster) const {
+  if (node_limit_.empty()) return options_.spike_distance;
+  const int node = poly.node[i];
+  if (node >= 0) return node_limit_[static_cast<size_t>(node)];
+  const std::vector<double>& locked = options_.locked_spike_distance;
+  return static_cast<size_t>(cluster) < locked.size() ? std::max(options_.spike_distance, locked[static_cast<size_t>(cluster)])
+                                                      : options_.spike_distance;
 }
 
 void PanelLayout::rebuild(const std::vector<int>& clusters) {
@@ -329,7 +358,7 @@ std::vector<int> PanelLayout::problem_corners(int c) const {
   const PanelIssues& issues = issues_[static_cast<size_t>(c)];
   std::vector<int> out;
   for (size_t i = 0; i < poly.points.size(); ++i) {
-    const bool spike = !((poly.points[i] - poly.reference[i]).norm() <= options_.spike_distance);
+    const bool spike = !((poly.points[i] - poly.reference[i]).norm() <= spike_limit(poly, i, c));
     if (spike || issues.flipped || issues.not_star || issues.not_simple) out.push_back(poly.corner[i]);
   }
   // An acute corner only (the panel otherwise fine): split next to that corner.
@@ -360,7 +389,8 @@ std::vector<char> PanelLayout::spike_nodes() const {
   std::vector<char> out(node_point_.size(), 0);
   for (size_t node = 0; node < node_point_.size(); ++node) {
     const Vec3& at = groups_.groups[static_cast<size_t>(node_group_[node])].reference;
-    out[node] = !node_exact_[node] || !((node_point_[node] - at).norm() <= options_.spike_distance);
+    const double limit = node_limit_.empty() ? options_.spike_distance : node_limit_[node];
+    out[node] = !node_exact_[node] || !((node_point_[node] - at).norm() <= limit);
   }
   return out;
 }
@@ -377,7 +407,8 @@ PanelMesh PanelLayout::to_panel_mesh(const FaceData& frame) const {
   std::vector<int> node_vertex(node_point_.size(), -1);
   const size_t n = polygons_.size();
   std::vector<int> panel_of_cluster(n, -1);
-  const auto add_vertex = [&](const PanelPolygon& poly, size_t i, int planes) {
+  const auto add_vertex = [&](const PanelPolygon& poly, size_t i, int planes, int cluster) {
+    if (!node_limit_.empty()) out.vertex_spike_distance.push_back(frame.scale * spike_limit(poly, i, cluster));
     out.vertices.push_back(frame.to_world(poly.points[i]));
     out.vertex_corner.push_back(poly.corner[i]);
     out.vertex_reference.push_back(frame.to_world(poly.reference[i]));
@@ -394,11 +425,11 @@ PanelMesh PanelLayout::to_panel_mesh(const FaceData& frame) const {
     for (size_t i = 0; i < poly.points.size(); ++i) {
       const int node = poly.node[i];
       if (node < 0) {
-        face.push_back(add_vertex(poly, i, 1));
+        face.push_back(add_vertex(poly, i, 1, static_cast<int>(c)));
         continue;
       }
       int& id = node_vertex[static_cast<size_t>(node)];
-      if (id < 0) id = add_vertex(poly, i, node_planes_[static_cast<size_t>(node)]);
+      if (id < 0) id = add_vertex(poly, i, node_planes_[static_cast<size_t>(node)], static_cast<int>(c));
       face.push_back(id);
     }
     panel_of_cluster[c] = out.num_panels();

@@ -32,6 +32,14 @@ struct LayoutOptions {
   // the corners of locked panels (remesher_edits.cpp), so their outlines stay. A group with
   // any keeps the pairing that has them all (none: as usual) and is never switched.
   std::vector<std::array<int, 3>> held_nodes;
+  // Per cluster (empty for none): the spike distance a locked panel was locked with (0 for a
+  // cluster not locked). Its vertices keep being judged by it (the larger of it and
+  // spike_distance), in every panel they are on: the outline is kept exactly, while the
+  // distance follows the panel count (remesher_edits.cpp).
+  std::vector<double> locked_spike_distance;
+  // Per cluster (empty for none): the diameter D a locked panel was laid out with (0: not
+  // locked): its border runs are thinned with it, so it keeps the same border vertices.
+  std::vector<double> locked_diameter;
 };
 
 // A panel's polygon: its vertices (local frame) in counter-clockwise order.
@@ -66,8 +74,9 @@ class PanelLayout {
   int switch_pairings();
   // Tilts the planes around spike nodes towards their corner (paper 2.3); keeps the tilts
   // when they lower the number of invalid panels; fixed_masters (per master, empty for none)
-  // stay. Returns true when it kept any.
-  bool tilt_spike_planes(const std::vector<char>& fixed_masters = {});
+  // stay, hinged ones (per master, empty for none) tilt only about their hinge's line.
+  // Returns true when it kept any.
+  bool tilt_spike_planes(const std::vector<char>& fixed_masters = {}, const std::vector<PlaneHinge>& hinges = {});
   // Replaces the plane of each master with `candidates[m]`, one at a time, keeping each
   // change that does not add invalid panels around it (beyond the paper: planes fitted to
   // the surface). Returns how many it kept.
@@ -132,6 +141,10 @@ class PanelLayout {
   std::vector<Vec3> node_point_;  // per node
   std::vector<int> node_planes_;  // distinct planes defining it
   std::vector<char> node_exact_;  // false: its planes have no common point (a spike)
+  // Per node, only with LayoutOptions::locked_spike_distance: how far it may be from its
+  // reference; and the same for a vertex of a cluster's polygon (node or border vertex).
+  std::vector<double> node_limit_;
+  double spike_limit(const PanelPolygon& poly, size_t i, int cluster) const;
   std::vector<int> node_group_;
   // Per node: the first node of its group on the same planes (itself if none). Such nodes are
   // one point (e.g. where coplanar clusters meet), so they are one vertex.

@@ -46,6 +46,9 @@ struct PanelMesh {
   // the two corners of its node group); a vertex farther than spike_distance from it is a spike.
   std::vector<Vec3> vertex_reference;
   double spike_distance = 0.0;
+  // Per vertex, when not empty: its own spike distance (the vertices of a locked panel keep
+  // the one they were locked with, LayoutOptions::locked_spike_distance).
+  std::vector<double> vertex_spike_distance;
   // Per input triangle (of the cleaned mesh): the panel it belongs to, -1 for the faces of an
   // unbuilt cluster.
   std::vector<int> face_panel;

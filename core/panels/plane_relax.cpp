@@ -70,11 +70,32 @@ Vec3 ldlt_solve3(const Eigen::Matrix3d& A, const Vec3& b) {
   return Vec3(y[0], y[1], y[2]);
 }
 
+bool hinged(const std::vector<PlaneHinge>& hinges, size_t i) { return i < hinges.size() && hinges[i].on; }
+
 }  // namespace
+
+Plane hinged_fit(const PlaneHinge& hinge, const Eigen::Matrix3d& scatter, const Plane& side) {
+  const Vec3& u = hinge.direction;
+  // Two unit vectors across the line: the normal is a combination of them, so it stays
+  // perpendicular to the line and the plane keeps containing it.
+  const Vec3 e1 = u.unitOrthogonal();
+  const Vec3 e2 = u.cross(e1).normalized();
+  Eigen::Matrix2d m;
+  m(0, 0) = e1.dot(scatter * e1);
+  m(1, 1) = e2.dot(scatter * e2);
+  m(0, 1) = m(1, 0) = 0.5 * (e1.dot(scatter * e2) + e2.dot(scatter * e1));
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> solver(m);
+  const Eigen::Vector2d c = solver.eigenvectors().col(0);
+  Vec3 normal = c(0) * e1 + c(1) * e2;
+  if (!normal.allFinite() || normal.norm() < 0.5) return side;
+  normal.normalize();
+  if (normal.dot(side.normal) < 0.0) normal = -normal;
+  return Plane::through(hinge.point, normal);
+}
 
 std::vector<Plane> relax_planes(const std::vector<NodeConstraint>& nodes, const std::vector<ClusterMoments>& moments,
                                 const std::vector<Plane>& start, const RelaxOptions& options,
-                                const std::vector<char>& fixed) {
+                                const std::vector<char>& fixed, const std::vector<PlaneHinge>& hinges) {
   std::vector<Plane> planes = start;
   const size_t m = planes.size();
   // Per-plane node weight: node_weight * area / (its number of nodes).
@@ -123,7 +144,8 @@ std::vector<Plane> relax_planes(const std::vector<NodeConstraint>& nodes, const 
     }
     for (size_t i = 0; i < m; ++i) {
       if (!fixed.empty() && fixed[i]) continue;  // stays as it is: its scatter is not needed
-      center[i] = area[i] > 0.0 ? Vec3(first[i] / area[i]) : Vec3::Zero();
+      // A hinged plane's scatter is about its hinge point: the plane must pass through it.
+      center[i] = hinged(hinges, i) ? hinges[i].point : area[i] > 0.0 ? Vec3(first[i] / area[i]) : Vec3::Zero();
       const ClusterMoments& mo = moments[i];
       const Vec3& c = center[i];
       scatter[i] = mo.second - mo.first * c.transpose() - c * mo.first.transpose() + mo.area * c * c.transpose();
@@ -138,6 +160,10 @@ std::vector<Plane> relax_planes(const std::vector<NodeConstraint>& nodes, const 
     }
     for (size_t i = 0; i < m; ++i) {
       if (!(area[i] > 0.0) || (!fixed.empty() && fixed[i])) continue;
+      if (hinged(hinges, i)) {
+        planes[i] = hinged_fit(hinges[i], 0.5 * (scatter[i] + scatter[i].transpose()), planes[i]);
+        continue;
+      }
       Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(0.5 * (scatter[i] + scatter[i].transpose()));
       Vec3 normal = solver.eigenvectors().col(0);
       if (!normal.allFinite() || normal.norm() < 0.5) continue;

@@ -40,10 +40,25 @@ struct RelaxOptions {
   double node_weight = 1.0;
 };
 
+// A plane that may only turn about a line it contains (a point on it and its unit direction):
+// the neighbour of a locked panel turns about their common edge line, which keeps every node
+// of the locked panel where it is (remesher_edits.cpp).
+struct PlaneHinge {
+  bool on = false;
+  Vec3 point = Vec3::Zero();
+  Vec3 direction = Vec3::UnitX();
+};
+
 // planes: current planes (their normals' sides are kept); moments: the faces of each plane;
-// fixed: planes that stay as they are (empty: none), e.g. around panels already valid.
+// fixed: planes that stay as they are (empty: none), e.g. around panels already valid;
+// hinges: per plane (empty: none), planes not fixed that fit only within their pencil.
 std::vector<Plane> relax_planes(const std::vector<NodeConstraint>& nodes, const std::vector<ClusterMoments>& moments,
                                 const std::vector<Plane>& planes, const RelaxOptions& options = {},
-                                const std::vector<char>& fixed = {});
+                                const std::vector<char>& fixed = {}, const std::vector<PlaneHinge>& hinges = {});
+
+// The plane through the hinge's line that best fits a scatter taken about the hinge's point
+// (smallest eigenvector of the scatter restricted to normals across the line), on the side of
+// `side`; `side` itself when the fit fails.
+Plane hinged_fit(const PlaneHinge& hinge, const Eigen::Matrix3d& scatter, const Plane& side);
 
 }  // namespace ff

@@ -221,7 +221,10 @@ QualityReport measure_quality(const TriMesh& input, const MeshTopology& input_to
       // measures the average cluster diameter, paper 2.3), else the corner and factor * D.
       const bool own = panels.vertex_reference.size() == nv && panels.spike_distance > 0.0;
       const Vec3& where = own ? panels.vertex_reference[v] : input.positions[static_cast<size_t>(corner)];
-      spike[v] = (panels.vertices[v] - where).norm() > (own ? panels.spike_distance : options.spike_factor * d);
+      const double limit = !own                                       ? options.spike_factor * d
+                           : panels.vertex_spike_distance.size() == nv ? panels.vertex_spike_distance[v]
+                                                                       : panels.spike_distance;
+      spike[v] = (panels.vertices[v] - where).norm() > limit;
       r.spike_vertices += spike[v];
       if (spike[v]) r.spike_vertex_ids.push_back(static_cast<int>(v));
     }

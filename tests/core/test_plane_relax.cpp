@@ -145,5 +145,34 @@ TEST(PlaneRelax, FixedPlanesDoNotMove) {
   EXPECT_LT(d1, 0.1 * d0);
 }
 
+// A hinged plane (the neighbour of a locked panel) fits its faces only among the planes
+// through its hinge's line: it keeps containing the line exactly, however far its faces lie
+// from any such plane, and is the best fit of that pencil; a plane without a hinge fits its
+// faces exactly.
+TEST(PlaneRelax, HingedPlaneTurnsOnlyAboutItsLine) {
+  const Plane locked = Plane::through(Vec3::Zero(), Vec3::UnitZ());
+  const Plane start = Plane::through(Vec3::Zero(), Vec3(0.0, -0.3, 1.0).normalized());  // through the x axis
+  const Plane surface = Plane::through(Vec3(0.0, 0.0, 0.3), Vec3(0.0, -0.7, 1.0).normalized());
+  const std::vector<ClusterMoments> moments = {faces_on(locked, Vec3(0.0, -1.0, 0.0)),
+                                               faces_on(surface, Vec3(0.0, 1.0, 1.0))};
+  PlaneHinge hinge;
+  hinge.on = true;
+  hinge.point = Vec3(0.5, 0.0, 0.0);
+  hinge.direction = Vec3::UnitX();
+  const std::vector<char> fixed{1, 0};
+  const std::vector<Plane> hinged = relax_planes({}, moments, {locked, start}, {}, fixed, {PlaneHinge{}, hinge});
+  const std::vector<Plane> free = relax_planes({}, moments, {locked, start}, {}, fixed);
+  EXPECT_EQ(hinged[0].normal, locked.normal);
+  for (double x : {-50.0, 0.0, 3.0, 50.0}) EXPECT_LT(std::abs(hinged[1].distance(Vec3(x, 0.0, 0.0))), 1e-12) << x;
+  EXPECT_GT(hinged[1].normal.dot(start.normal), 0.0);  // the same side
+  EXPECT_LT(rms_distance(free[1], moments[1]), 1e-9);
+  const double best = rms_distance(hinged[1], moments[1]);
+  EXPECT_GT(best, 1e-3);  // the surface is not in the pencil: the hinge held
+  for (double turn : {-0.01, 0.01}) {
+    const Vec3 n = Eigen::AngleAxisd(turn, Vec3::UnitX()) * hinged[1].normal;
+    EXPECT_GE(rms_distance(Plane::through(Vec3::Zero(), n), moments[1]), best) << turn;
+  }
+}
+
 }  // namespace
 }  // namespace ff
