@@ -2,11 +2,11 @@
 // site: choosing "Expression" shows the "Direction expression" input (starting from the vortex
 // preset); a hostile expression is refused on the page, a broken one by the core naming the
 // component and the column, and neither solves; a typed one solves, the stats count the
-// triangles left without a direction, and its share link, opened in a fresh context, restores
-// the input and gives the identical OBJ.
+// triangles left without a direction; a reload (the stored session) and its share link, opened
+// in a fresh context, restore the input and give the identical OBJ.
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
-import { browserSuite, download, errorAfter, exampleLink, remesh, screenshot, solveAfter, waitForDone } from './harness.mjs';
+import { browserSuite, download, errorAfter, exampleLink, outcomes, remesh, screenshot, solveAfter, waitForDone, waitForSaved } from './harness.mjs';
 
 const suite = browserSuite();
 
@@ -44,6 +44,7 @@ test('Expression direction: refused when hostile or broken, solved when typed, a
     assert.match(message, /component 3 \(z\) has unexpected '\)' at column 9/);
 
     await input.fill('-y, x, 0');
+    const sinceSolve = await outcomes(page);
     assert.equal(await solveAfter(page, () => remesh(page)), PANELS);
     assert.equal(await input.getAttribute('aria-invalid'), null);
     const stats = page.locator('dt', { hasText: 'No direction' });
@@ -54,6 +55,14 @@ test('Expression direction: refused when hostile or broken, solved when typed, a
     await page.getByRole('button', { name: 'Copy share link' }).click();
     await page.waitForFunction(() => location.hash.startsWith('#v1='));
     link = await page.getByLabel('Share link').inputValue();
+
+    // The stored session brings the expression back after a reload.
+    await waitForSaved(page, sinceSolve, 1);
+    await page.reload();
+    assert.equal(await waitForDone(page), PANELS);
+    assert.equal(await page.getByLabel('Direction expression').inputValue(), '-y, x, 0');
+    assert.equal(await page.getByLabel('Direction expression').isVisible(), true);
+    assert.equal(await objOf(page), obj, 'the reload reproduces the OBJ');
   });
   assert.ok(obj.length > 1000);
   await suite.withPage(link, async (page) => {
