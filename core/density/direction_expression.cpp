@@ -38,18 +38,24 @@ DirectionExpression parse_direction_expression(std::string_view text) {
                      std::to_string(Expression::kMaxLength) + ")");
   }
   // Top-level commas only: those inside brackets separate a function's arguments.
+  // Unbalanced brackets would hide the commas, so they are named first.
   std::array<size_t, 4> bounds{};  // component i is [bounds[i] + (i > 0), bounds[i + 1])
   int commas = 0;
-  long depth = 0;
+  std::vector<size_t> open;  // columns of the brackets not yet closed
   for (size_t i = 0; i < text.size(); ++i) {
-    if (text[i] == '(') ++depth;
-    if (text[i] == ')') --depth;
-    if (text[i] != ',' || depth != 0) continue;
+    if (text[i] == '(') open.push_back(i);
+    if (text[i] == ')') {
+      if (open.empty()) throw InputError("direction expression has an unmatched ')' at column " + std::to_string(i + 1));
+      open.pop_back();
+    }
+    if (text[i] != ',' || !open.empty()) continue;
     if (commas == 2)
       throw InputError("direction expression has more than three components (a third comma at column " +
                        std::to_string(i + 1) + "); write x, y, z");
     bounds[static_cast<size_t>(++commas)] = i;
   }
+  if (!open.empty())
+    throw InputError("direction expression has a '(' at column " + std::to_string(open.back() + 1) + " that is not closed");
   if (commas != 2) {
     throw InputError("direction expression needs three components separated by commas (x, y, z), e.g. \"-y, x, 0\"; it has " +
                      std::to_string(commas + 1));

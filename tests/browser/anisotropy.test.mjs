@@ -39,9 +39,9 @@ test('Expression direction: refused when hostile or broken, solved when typed, a
     message = await errorAfter(page, () => remesh(page));
     assert.match(message, /Direction expression needs three components/);
     // Tokens the page accepts, a grammar the core refuses: its message names the component and column.
-    await input.fill('-y, x, 0)');
+    await input.fill('-y, x, 0 +');
     message = await errorAfter(page, () => remesh(page));
-    assert.match(message, /component 3 \(z\) has unexpected '\)' at column 9/);
+    assert.match(message, /component 3 \(z\) ends early: expected a value at column 11/);
 
     await input.fill('-y, x, 0');
     const sinceSolve = await outcomes(page);

@@ -157,8 +157,10 @@ TEST(DirectionExpression, HostileOrBrokenExpressionsAreRefused) {
   has("x, , z", "component 2 (y) is empty (column 3)");
   has("x, y, alert(1)", "component 3 (z) has unknown name 'alert' at column 7");
   has("x, y +* 2, z", "component 2 (y) has unexpected '*' at column 7");
-  has("x, (y, z", "needs three components");  // the comma inside the bracket does not split
-  has("x, y, z)", "component 3 (z) has unexpected ')' at column 8");
+  has("x, (y, z", "has a '(' at column 4 that is not closed");
+  has("x, y, z)", "has an unmatched ')' at column 8");
+  has("x), y, z", "has an unmatched ')' at column 2");
+  has("x, y, z +", "component 3 (z) ends early: expected a value at column 10");
   has("x, y\x01, z", "component 2 (y) has a control character at column 5");
   has("x, \xc3\xa9, z", "component 2 (y) has a non-ASCII character at column 4");
   has("x, y, z = 1", "component 3 (z) has '=' at column 9");
