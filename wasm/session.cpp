@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <new>
 
-#include "core/density/anisotropy.h"
 #include "core/fabricate/parts_list.h"
 #include "core/mesh/clean.h"
 #include "core/mesh/mesh_io.h"
