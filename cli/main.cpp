@@ -96,7 +96,11 @@ const char* kUsage =
     "atan2 sqrt exp log log10 abs sign floor ceil round pow min max clamp smoothstep step\n"
     "mix mod if; constants pi e. It must be > 0 everywhere.\n"
     "--anisotropy DIR,STRETCH: panels about STRETCH (1..10) times longer along DIR: x, y, z,\n"
-    "maxCurvature or minCurvature (the principal directions), or none.\n";
+    "maxCurvature or minCurvature (the principal directions), none, or expr:EX,EY,EZ, a\n"
+    "direction per face from three expressions of the density language evaluated at its\n"
+    "centroid (nx ny nz: the face normal), e.g. --anisotropy 'expr:-y, x, 0,3' (a vortex\n"
+    "around the z axis, stretch 3; the stretch follows the last comma). Faces where it is zero\n"
+    "or along the normal stay isotropic (counted in the report).\n";
 
 }  // namespace
 

@@ -16,6 +16,7 @@
 #include "cli/input.h"
 #include "cli/output.h"
 #include "cli/remesh_report.h"
+#include "core/density/direction_expression.h"
 #include "core/density/expression.h"
 #include "core/mesh/mesh_io.h"
 #include "core/panels/panel_export.h"
@@ -47,13 +48,28 @@ std::pair<int, int> parse_iterations(const std::string& text) {
   return {static_cast<int>(k1), static_cast<int>(k2)};
 }
 
-// "DIR,STRETCH": DIR one of none, x, y, z, maxCurvature, minCurvature; STRETCH 1..10.
+// "DIR,STRETCH": DIR one of none, x, y, z, maxCurvature, minCurvature, or "expr:EX,EY,EZ" (a
+// procedural direction, core/density/direction_expression.h); STRETCH 1..10, after the last
+// comma (the expression has commas of its own).
 Anisotropy parse_anisotropy(const std::string& text) {
-  const size_t comma = text.find(',');
+  const size_t comma = text.rfind(',');
   Anisotropy a;
-  if (comma == std::string::npos || !set_anisotropy_direction(a, text.substr(0, comma)))
-    throw UsageError("--anisotropy: expected DIR,STRETCH with DIR none, x, y, z, maxCurvature or minCurvature, got '" +
-                     text + "'");
+  const std::string dir = comma == std::string::npos ? text : text.substr(0, comma);
+  const std::string prefix = "expr:";
+  const bool procedural = dir.compare(0, prefix.size(), prefix) == 0;
+  if (comma == std::string::npos || (!procedural && !set_anisotropy_direction(a, dir)))
+    throw UsageError(
+        "--anisotropy: expected DIR,STRETCH with DIR none, x, y, z, maxCurvature, minCurvature or expr:EX,EY,EZ, got '" +
+        text + "'");
+  if (procedural) {
+    set_anisotropy_direction(a, "expression");
+    a.expression = dir.substr(prefix.size());
+    try {
+      parse_direction_expression(a.expression);  // its columns count from after "expr:"
+    } catch (const InputError& e) {
+      throw UsageError("--anisotropy: " + std::string(e.what()));
+    }
+  }
   a.stretch = parse_double(text.substr(comma + 1), "--anisotropy STRETCH");
   if (!(a.stretch >= 1.0 && a.stretch <= Anisotropy::kMaxStretch))
     throw UsageError("--anisotropy: STRETCH must be between 1 and 10, got '" + text.substr(comma + 1) + "'");

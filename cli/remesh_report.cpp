@@ -96,6 +96,11 @@ std::string remesh_report_json(const RemeshRun& run) {
   if (p.anisotropy.active()) {
     j.begin_object("anisotropy");
     j.value("direction", anisotropy_direction_name(p.anisotropy)).value("stretch", p.anisotropy.stretch);
+    if (p.anisotropy.direction == AnisotropyDirection::Expression) {
+      // Faces the expression leaves isotropic (zero, or along the normal).
+      j.value("expression", p.anisotropy.expression);
+      j.value("isotropic_faces", count_isotropic_faces(run.remesher.metric().faces().stretch, p.anisotropy));
+    }
     j.end_object();
   }
   j.value("single_point_nodes", p.single_point_nodes);

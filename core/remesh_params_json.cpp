@@ -3,6 +3,7 @@
 #include <cmath>
 #include <string>
 
+#include "core/density/direction_expression.h"
 #include "core/density/expression.h"
 #include "core/util/error.h"
 #include "core/util/json_reader.h"
@@ -98,23 +99,44 @@ std::vector<PanelEdit> read_edits(const JsonValue& v) {
   return out;
 }
 
-// {"direction": "none"|"x"|"y"|"z"|"maxCurvature"|"minCurvature", "stretch": 1..10}; fields
-// left out keep their values in `a`.
+// {"direction": "none"|"x"|"y"|"z"|"maxCurvature"|"minCurvature"|"expression", "stretch":
+// 1..10, "expression": "ex, ey, ez" (direction "expression" only)}; fields left out keep
+// their values in `a`.
 void read_anisotropy(const JsonValue& v, Anisotropy& a) {
   if (v.type != JsonValue::Type::Object) throw InputError("parameter 'anisotropy' must be an object");
+  bool has_expression = false;
+  std::string expression;
   for (const auto& [name, value] : v.object) {
     if (name == "direction") {
       if (value.type != JsonValue::Type::String || !set_anisotropy_direction(a, value.string)) {
         throw InputError(
-            "parameter 'anisotropy.direction' must be \"none\", \"x\", \"y\", \"z\", \"maxCurvature\" or "
-            "\"minCurvature\"");
+            "parameter 'anisotropy.direction' must be \"none\", \"x\", \"y\", \"z\", \"maxCurvature\", "
+            "\"minCurvature\" or \"expression\"");
       }
+    } else if (name == "expression") {
+      if (value.type != JsonValue::Type::String) throw InputError("parameter 'anisotropy.expression' must be a string");
+      has_expression = true;
+      expression = value.string;
     } else if (name == "stretch") {
       a.stretch = number(value, "anisotropy.stretch", 1, Anisotropy::kMaxStretch, false);
     } else {
       throw InputError("unknown parameter 'anisotropy." + name + "'");
     }
   }
+  const bool procedural = a.direction == AnisotropyDirection::Expression;
+  if (has_expression && !procedural)
+    throw InputError("parameter 'anisotropy.expression' is only for direction \"expression\"");
+  if (has_expression) {
+    // Checked here (length, syntax, names) so a bad link fails with its own message.
+    try {
+      parse_direction_expression(expression);
+    } catch (const InputError& e) {
+      throw InputError("parameter 'anisotropy.expression': " + std::string(e.what()));
+    }
+    a.expression = expression;
+  }
+  if (procedural && a.expression.empty())
+    throw InputError("parameter 'anisotropy.expression' is missing (direction \"expression\" needs \"ex, ey, ez\")");
 }
 
 }  // namespace

@@ -56,8 +56,14 @@ export interface RemeshParams {
   // Procedural density (core/density/expression.h): variables x y z, u v w, nx ny nz, k1 k2 H K
   // curv; higher = smaller panels. Multiplies a painted field (setDensity).
   densityExpression?: string;
-  // Panels stretched along a direction (stretch 1..10).
-  anisotropy?: { direction: 'none' | 'x' | 'y' | 'z' | 'maxCurvature' | 'minCurvature'; stretch: number };
+  // Panels stretched along a direction (stretch 1..10). 'expression': a procedural direction
+  // per face, `expression` = three expressions of the density language "ex, ey, ez"
+  // (core/density/direction_expression.h), e.g. "-y, x, 0"; given with that direction only.
+  anisotropy?: {
+    direction: 'none' | 'x' | 'y' | 'z' | 'maxCurvature' | 'minCurvature' | 'expression';
+    stretch: number;
+    expression?: string;
+  };
   // Per-panel edits, applied in order to the solved design (at most 10000); panels are named
   // by a cleaned triangle inside them. A setParams that changes only `edits` edits the design
   // in place: more edits apply to it, a shorter or different list (undo / redo) replays from

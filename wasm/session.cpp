@@ -366,6 +366,9 @@ std::string Session::report_json() {
     j.value("density", p.weights.density).value("boundary", p.weights.boundary);
     j.end_object();
     j.value("single_point_nodes", p.single_point_nodes).value("optimize_planes", p.optimize_planes);
+    // Triangles a direction expression leaves without a direction (zero, along the normal).
+    if (p.anisotropy.active() && p.anisotropy.direction == AnisotropyDirection::Expression)
+      j.value("anisotropy_isotropic_faces", count_isotropic_faces(r.metric().faces().stretch, p.anisotropy));
     j.begin_object("iterations");
     j.value("lloyd", r.lloyd_iterations_done()).value("panel_rounds", r.panel_rounds_done());
     j.value("lloyd_limit", p.lloyd_iterations).value("panel_rounds_limit", p.panel_rounds);

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/density/direction_expression.h"
 #include "core/util/error.h"
 
 namespace ff {
@@ -18,9 +19,12 @@ bool set_anisotropy_direction(Anisotropy& a, const std::string& name) {
     a.direction = AnisotropyDirection::MaxCurvature;
   } else if (name == "minCurvature") {
     a.direction = AnisotropyDirection::MinCurvature;
+  } else if (name == "expression") {
+    a.direction = AnisotropyDirection::Expression;
   } else {
     return false;
   }
+  if (a.direction != AnisotropyDirection::Expression) a.expression.clear();
   return true;
 }
 
@@ -37,8 +41,15 @@ const char* anisotropy_direction_name(const Anisotropy& a) {
       return "maxCurvature";
     case AnisotropyDirection::MinCurvature:
       return "minCurvature";
+    case AnisotropyDirection::Expression:
+      return "expression";
   }
   return "none";
+}
+
+bool Anisotropy::uses_curvature() const {
+  if (direction == AnisotropyDirection::Expression) return parse_direction_expression(expression).uses_curvature();
+  return direction == AnisotropyDirection::MaxCurvature || direction == AnisotropyDirection::MinCurvature;
 }
 
 void validate_anisotropy(const Anisotropy& a) {
@@ -46,15 +57,21 @@ void validate_anisotropy(const Anisotropy& a) {
     throw InputError("the anisotropy stretch must be between 1 and 10");
   if (a.direction == AnisotropyDirection::Constant && (!a.vector.allFinite() || !(a.vector.norm() > 0.0)))
     throw InputError("the anisotropy direction must be a finite, non-zero vector");
+  if (a.direction == AnisotropyDirection::Expression) parse_direction_expression(a.expression);
 }
 
 std::vector<Vec3> face_stretch_vectors(const TriMesh& mesh, const Anisotropy& a, const VertexCurvature* curvature) {
   validate_anisotropy(a);
   if (!a.active()) return {};
-  if (a.uses_curvature() && curvature == nullptr) throw InputError("anisotropy by curvature needs curvature");
+  const bool want_max = a.direction == AnisotropyDirection::MaxCurvature;
+  const bool by_curvature = want_max || a.direction == AnisotropyDirection::MinCurvature;
+  if (by_curvature && curvature == nullptr) throw InputError("anisotropy by curvature needs curvature");
   const double amount = std::sqrt(1.0 - 1.0 / (a.stretch * a.stretch));
   const Vec3 constant = a.vector.normalized();
-  const bool want_max = a.direction == AnisotropyDirection::MaxCurvature;
+  // Expression: unit vectors per face (zero where it gives none), then projected as `constant`.
+  std::vector<Vec3> procedural;
+  if (a.direction == AnisotropyDirection::Expression)
+    procedural = expression_face_directions(mesh, parse_direction_expression(a.expression), curvature);
   // Curvatures below this (relative to the model size) count as flat.
   const double tiny = 1e-9 / std::max(bbox_diagonal(mesh), 1e-300);
   std::vector<Vec3> out(mesh.triangles.size(), Vec3::Zero());
@@ -66,9 +83,9 @@ std::vector<Vec3> face_stretch_vectors(const TriMesh& mesh, const Anisotropy& a,
     const double len = cross.norm();
     if (!(len > 0.0) || !std::isfinite(len)) continue;
     const Vec3 n = cross / len;
-    Vec3 d = constant;
+    Vec3 d = procedural.empty() ? constant : procedural[f];
     double coherence = 1.0;
-    if (a.uses_curvature()) {
+    if (by_curvature) {
       // Corners' direction lines (sign-free) summed as tensors, weighted by how much the two
       // curvatures differ there; the top eigenvector is the face's direction.
       Eigen::Matrix3d tensor = Eigen::Matrix3d::Zero();
@@ -89,6 +106,14 @@ std::vector<Vec3> face_stretch_vectors(const TriMesh& mesh, const Anisotropy& a,
     out[f] = amount * coherence * (d - d.dot(n) * n);
   }
   return out;
+}
+
+int count_isotropic_faces(const std::vector<Vec3>& stretch, const Anisotropy& a) {
+  if (stretch.empty() || !a.active()) return 0;
+  const double full = std::sqrt(1.0 - 1.0 / (a.stretch * a.stretch));
+  int n = 0;
+  for (const Vec3& e : stretch) n += e.norm() < 0.01 * full ? 1 : 0;
+  return n;
 }
 
 }  // namespace ff

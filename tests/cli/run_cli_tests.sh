@@ -445,6 +445,22 @@ expect_error 2 "density expression gives -.* at vertex [0-9]+ \(" remesh "$e" --
 expect_error 2 "anisotropy.*DIR,STRETCH" remesh "$e" --panels 10 --anisotropy diagonal,2 "${o[@]}"
 expect_error 2 "anisotropy.*between 1 and 10" remesh "$e" --panels 10 --anisotropy x,20 "${o[@]}"
 expect_error 2 "anisotropy.*DIR,STRETCH" remesh "$e" --panels 10 --anisotropy x "${o[@]}"
+# A procedural direction: runs, is recorded with its isotropic faces; errors name the component.
+"$bin" remesh "$meshes/epcot.off" --panels 30 --anisotropy "expr:-y, x, 0,3" --report "$tmp/dv.json" 2>"$tmp/err.txt"
+code=$?
+[ "$code" = 0 ] || [ "$code" = 3 ] && python3 -c "
+import json, sys
+r = json.load(open(sys.argv[1]))['anisotropy']
+assert r['direction'] == 'expression' and r['expression'] == '-y, x, 0' and r['stretch'] == 3, r
+assert 0 <= r['isotropic_faces'] < 1000, r
+" "$tmp/dv.json" && ok || bad "remesh --anisotropy expr: (exit $code): $(cat "$tmp/err.txt")"
+expect_error 2 "anisotropy: direction expression, component 2 \(y\) has unknown name 'q' at column 4" remesh "$e" \
+  --panels 10 --anisotropy "expr:x, q, 0,2" "${o[@]}"
+expect_error 2 "anisotropy: direction expression needs three components" remesh "$e" --panels 10 \
+  --anisotropy "expr:x, y,2" "${o[@]}"
+expect_error 2 "anisotropy: direction expression needs three components" remesh "$e" --panels 10 \
+  --anisotropy "expr:-y, x, 0" "${o[@]}"  # no stretch: the last comma took the z component
+expect_error 2 "anisotropy.*between 1 and 10" remesh "$e" --panels 10 --anisotropy "expr:-y, x, 0,11" "${o[@]}"
 # An output that cannot be written: exit 2 and the other output not left behind.
 expect_error 2 "cannot write" remesh "$e" --panels 10 --report "$tmp/never.json" --out "$tmp/no/such/dir/p.obj"
 # ----- remesh --subdivide ------------------------------------------------------------------

@@ -13,12 +13,15 @@ export interface MetricWeights {
   boundary: number;
 }
 
-export type AnisotropyDirection = 'none' | 'x' | 'y' | 'z' | 'maxCurvature' | 'minCurvature';
-export const ANISOTROPY_DIRECTIONS: readonly AnisotropyDirection[] = ['none', 'x', 'y', 'z', 'maxCurvature', 'minCurvature'];
+export type AnisotropyDirection = 'none' | 'x' | 'y' | 'z' | 'maxCurvature' | 'minCurvature' | 'expression';
+export const ANISOTROPY_DIRECTIONS: readonly AnisotropyDirection[] = ['none', 'x', 'y', 'z', 'maxCurvature', 'minCurvature', 'expression'];
 
 export interface Anisotropy {
   direction: AnisotropyDirection;
   stretch: number; // how much longer than wide panels are along `direction`, 1..10
+  // Direction 'expression' only (and then always): "ex, ey, ez", three expressions of the
+  // density language per face (core/density/direction_expression.h), e.g. "-y, x, 0".
+  expression?: string;
 }
 
 // Every field explicit (unlike RemeshParams), so equal designs compare equal.
@@ -103,14 +106,24 @@ export const DENSITY_PRESETS: readonly { id: string; label: string; expression: 
   { id: 'curvature', label: 'By curvature', expression: '1 + 2 * min(curv, 4)' },
 ];
 
+// Starting points for the direction expression, scale-free like the density presets: around
+// the middle of the plan, away from it, and down the slope (the normal's horizontal part,
+// which the core projects into each face).
+export const DIRECTION_PRESETS: readonly { id: string; label: string; expression: string }[] = [
+  { id: 'vortex', label: 'Vortex', expression: '0.5 - v, u - 0.5, 0' },
+  { id: 'radial', label: 'Radial', expression: 'u - 0.5, v - 0.5, 0' },
+  { id: 'slope', label: 'Down the slope', expression: 'nx, ny, 0' },
+];
+
 const PAINT_KEY = /^[0-9a-f]{16}$/;
 
 // A density expression from the form or a link: plain ASCII of numbers, operators and the
 // known names only. The grammar itself is the core's to check (its message names the column).
-export function checkExpression(value: unknown): Checked<string> {
-  if (typeof value !== 'string') return failure('Density expression must be text');
+// `what` names the input in messages (the direction expression shares the checks).
+export function checkExpression(value: unknown, what = 'Density expression'): Checked<string> {
+  if (typeof value !== 'string') return failure(`${what} must be text`);
   const text = value.trim();
-  if (text.length > LIMITS.expressionLength.max) return failure(`Density expression is longer than ${LIMITS.expressionLength.max} characters`);
+  if (text.length > LIMITS.expressionLength.max) return failure(`${what} is longer than ${LIMITS.expressionLength.max} characters`);
   // Numbers (1, 2.5, .5, 1e-3), names, operators and brackets, separated by spaces.
   const token = /[ \t]*(?:((?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?)|([A-Za-z_][A-Za-z0-9_]*)|(<=|>=|==|!=|&&|\|\||[-+*/^%()<>!?:,]))/y;
   let at = 0;
@@ -121,22 +134,54 @@ export function checkExpression(value: unknown): Checked<string> {
       const column = at + /^[ \t]*/.exec(text.slice(at))![0].length + 1;
       const code = text.codePointAt(column - 1) ?? 0;
       const shown = code > 0x20 && code < 0x7f && code !== 0x22 ? `"${String.fromCodePoint(code)}"` : `U+${code.toString(16).toUpperCase().padStart(4, '0')}`;
-      return failure(`Density expression has a character it cannot use (${shown} at column ${column})`);
+      return failure(`${what} has a character it cannot use (${shown} at column ${column})`);
     }
     const name = match[2];
-    if (name !== undefined && !EXPRESSION_NAMES.has(name)) return failure(`Density expression uses an unknown name "${name.slice(0, 20)}" (use x y z, u v w, nx ny nz, k1 k2 H K curv, pi e and the listed functions)`);
+    if (name !== undefined && !EXPRESSION_NAMES.has(name)) return failure(`${what} uses an unknown name "${name.slice(0, 20)}" (use x y z, u v w, nx ny nz, k1 k2 H K curv, pi e and the listed functions)`);
     at = token.lastIndex;
   }
   return { ok: true, value: text };
 }
 
+// "ex, ey, ez": the density expression's token checks, then exactly three components split at
+// the commas outside brackets (those inside separate a function's arguments), none empty.
+export function checkDirectionExpression(value: unknown): Checked<string> {
+  const checked = checkExpression(value, 'Direction expression');
+  if (!checked.ok) return checked;
+  const text = checked.value;
+  if (text === '') return failure('Direction expression is empty: write three components, e.g. -y, x, 0');
+  const parts: string[] = [];
+  let depth = 0;
+  let start = 0;
+  for (let i = 0; i <= text.length; i++) {
+    const c = text[i];
+    if (c === '(') depth++;
+    else if (c === ')') depth--;
+    else if (i === text.length || (c === ',' && depth === 0)) {
+      parts.push(text.slice(start, i));
+      start = i + 1;
+    }
+  }
+  if (parts.length !== 3) return failure(`Direction expression needs three components separated by commas (x, y, z), e.g. -y, x, 0; it has ${parts.length}`);
+  const empty = parts.findIndex((part) => part.trim() === '');
+  if (empty >= 0) return failure(`Direction expression component ${empty + 1} (${'xyz'[empty]}) is empty`);
+  return checked;
+}
+
 export function checkAnisotropy(value: unknown): Checked<Anisotropy> {
   if (!isRecord(value)) return failure('Anisotropy must be an object');
-  for (const key of Object.keys(value)) if (key !== 'direction' && key !== 'stretch') return failure(`anisotropy: unknown field "${key.slice(0, 40)}"`);
+  for (const key of Object.keys(value)) if (key !== 'direction' && key !== 'stretch' && key !== 'expression') return failure(`anisotropy: unknown field "${key.slice(0, 40)}"`);
   if (!(ANISOTROPY_DIRECTIONS as readonly unknown[]).includes(value.direction)) return failure(`Anisotropy direction must be one of ${ANISOTROPY_DIRECTIONS.join(', ')}`);
   const stretch = checkNumber(value.stretch, 'Stretch', LIMITS.stretch);
   if (!stretch.ok) return stretch;
-  return { ok: true, value: { direction: value.direction as AnisotropyDirection, stretch: stretch.value } };
+  const direction = value.direction as AnisotropyDirection;
+  if (direction !== 'expression') {
+    if ('expression' in value) return failure('anisotropy: an expression goes with the Expression direction only');
+    return { ok: true, value: { direction, stretch: stretch.value } };
+  }
+  const expression = checkDirectionExpression(value.expression ?? '');
+  if (!expression.ok) return expression;
+  return { ok: true, value: { direction, stretch: stretch.value, expression: expression.value } };
 }
 
 export const WEIGHT_NAMES: readonly (keyof MetricWeights)[] = ['euclidean', 'l2', 'l21', 'boundary'];

@@ -3,7 +3,7 @@
 import { element } from './dom.ts';
 import { readNumber, setRange } from './formInputs.ts';
 import { countAfterEdits, targetOfTyped, type PanelEdit } from './edits/panelEdits.ts';
-import { checkExpression, DENSITY_PRESETS, LIMITS, validateParams, type Checked, type DesignParams } from './params.ts';
+import { checkExpression, DENSITY_PRESETS, DIRECTION_PRESETS, LIMITS, validateParams, type Checked, type DesignParams } from './params.ts';
 
 export class ParamsForm {
   private readonly panels = element('panels', HTMLInputElement);
@@ -22,6 +22,9 @@ export class ParamsForm {
   private readonly preset = element('density-preset', HTMLSelectElement);
   private readonly direction = element('anisotropy-direction', HTMLSelectElement);
   private readonly stretch = element('anisotropy-stretch', HTMLInputElement);
+  // "ex, ey, ez" for the Expression direction; its row shows with that direction only.
+  private readonly directionExpression = element('anisotropy-expression', HTMLInputElement);
+  private readonly directionExpressionRow = element('anisotropy-expression-row', HTMLDivElement);
   // The painted field's key (brush/densityField.ts): set by the brush, not typed.
   private paintKey = '';
   private readonly glass = element('glass', HTMLInputElement);
@@ -63,6 +66,18 @@ export class ParamsForm {
       else if (chosen) this.expression.value = chosen.expression;
     });
     this.expression.addEventListener('input', () => this.syncPreset());
+    this.directionExpression.maxLength = LIMITS.expressionLength.max;
+    const presets = element('direction-presets', HTMLDataListElement);
+    for (const preset of DIRECTION_PRESETS) presets.append(new Option(preset.label, preset.expression));
+    // Registered first too: choosing Expression with nothing typed starts from the vortex.
+    this.direction.addEventListener('change', () => {
+      if (this.direction.value === 'expression' && this.directionExpression.value.trim() === '') this.directionExpression.value = DIRECTION_PRESETS[0]!.expression;
+      this.syncDirectionRow();
+    });
+  }
+
+  private syncDirectionRow(): void {
+    this.directionExpressionRow.hidden = this.direction.value !== 'expression';
   }
 
   // The preset whose expression is typed, else "custom" (or "none" when empty).
@@ -77,14 +92,15 @@ export class ParamsForm {
 
   // Calls back on committed changes (enter, blur, spinner, checkbox), not on every keystroke.
   onChange(callback: () => void): void {
-    for (const input of [...this.numberInputs, this.teleport, this.singlePointNodes, this.optimizePlanes, this.glass, this.seeding, this.expression, this.preset, this.direction, this.stretch]) {
+    for (const input of [...this.numberInputs, this.teleport, this.singlePointNodes, this.optimizePlanes, this.glass, this.seeding, this.expression, this.preset, this.direction, this.stretch, this.directionExpression]) {
       input.addEventListener('change', callback);
     }
   }
 
   read(): Checked<DesignParams> {
-    for (const input of [...this.numberInputs, this.expression, this.stretch]) input.removeAttribute('aria-invalid');
+    for (const input of [...this.numberInputs, this.expression, this.stretch, this.directionExpression]) input.removeAttribute('aria-invalid');
     const number = readNumber;
+    const direction = this.direction.value;
     const checked = validateParams({
       panels: targetOfTyped(number(this.panels), this.shown, this.target, this.editList.length > 0),
       seed: number(this.seed),
@@ -96,7 +112,7 @@ export class ParamsForm {
       singlePointNodes: this.singlePointNodes.checked,
       optimizePlanes: this.optimizePlanes.checked,
       densityExpression: this.expression.value,
-      anisotropy: { direction: this.direction.value, stretch: number(this.stretch) },
+      anisotropy: direction === 'expression' ? { direction, stretch: number(this.stretch), expression: this.directionExpression.value } : { direction, stretch: number(this.stretch) },
       paint: this.paintKey,
       glass: this.glass.checked,
       minCornerAngleDeg: number(this.minCornerAngle),
@@ -108,6 +124,7 @@ export class ParamsForm {
 
   private markInvalid(message: string): void {
     const byName: [string, HTMLInputElement][] = [
+      ['Direction expression', this.directionExpression],
       ['Panels', this.panels],
       ['Seed', this.seed],
       ['euclidean', this.euclidean],
@@ -146,8 +163,11 @@ export class ParamsForm {
     this.syncPreset();
     this.direction.value = params.anisotropy.direction;
     this.stretch.value = String(params.anisotropy.stretch);
+    // Another direction keeps what was typed, for a switch back.
+    if (params.anisotropy.expression !== undefined) this.directionExpression.value = params.anisotropy.expression;
+    this.syncDirectionRow();
     this.paintKey = params.paint;
-    for (const input of [...this.numberInputs, this.expression, this.stretch]) input.removeAttribute('aria-invalid');
+    for (const input of [...this.numberInputs, this.expression, this.stretch, this.directionExpression]) input.removeAttribute('aria-invalid');
   }
 
   get paint(): string {

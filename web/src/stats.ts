@@ -65,6 +65,7 @@ export function statsRows(result: SolveResult): Row[] {
   const hausdorff = numberAt(report, 'hausdorff');
   const minAngleTarget = numberAt(report, 'min_corner_angle_target_deg') ?? 0;
   const acute = numberAt(report, 'acute_corners');
+  const undirected = numberAt(report, 'anisotropy_isotropic_faces');
   const before = result.cornerPlanarity.length > 0 ? result.cornerPlanarity.reduce((worst, value) => Math.max(worst, value), 0) : null;
   return [
     { label: 'Panels', value: String(numberAt(report, 'panels') ?? '–'), hint: 'planar panels in the result' },
@@ -75,6 +76,9 @@ export function statsRows(result: SolveResult): Row[] {
     { label: 'Min angle', value: minAngle === null ? '–' : `${minAngle.toFixed(1)}°`, hint: 'smallest corner angle of any panel' },
     ...(minAngleTarget > 0
       ? [{ label: 'Acute corners', value: acute === null ? '–' : String(acute), hint: `panel corners below the minimum corner angle of ${minAngleTarget}° (marked amber)`, warn: (acute ?? 0) > 0 }]
+      : []),
+    ...(undirected !== null
+      ? [{ label: 'No direction', value: String(undirected), hint: 'triangles where the direction expression is zero or along the surface normal: no stretch there' }]
       : []),
     { label: 'Invalid', value: invalid === null ? '–' : String(invalid), hint: 'panels that are not simple, star-shaped and spike-free (shown red)', warn: (invalid ?? 0) > 0 },
     { label: 'Topology', value: topology === true ? 'preserved' : topology === false ? 'changed' : '–', hint: 'same Euler characteristic and boundary loops as the input', warn: topology === false },
