@@ -180,12 +180,26 @@ void Remesher::fix_panels(const PanelAttempt& attempt) {
 void Remesher::finish_panels() {
   clustering_ = best_->clustering();
   progress_.energy = clustering_.energy * faces_.area_to_world();
+  if (best_->num_invalid() > 0) mend_best();
   panels_ = best_->layout().to_panel_mesh(faces_);
   progress_.invalid_panels = panels_.num_invalid();
   const bool optimize = (params_.optimize_planes || params_.single_point_nodes) && panels_.num_invalid() == 0;
   progress_.stage = optimize ? Stage::Optimize : Stage::Done;
   if (optimize) progress_ = Progress{Stage::Optimize, 0, 1, progress_.energy, 0};
   if (!optimize) record_planes(), cut_glass();
+}
+
+// The panel rounds are over and some panels are still invalid: the last fixes, on the best
+// attempt only (runs that end valid never get here, so they are unchanged). Locked panels
+// and their neighbours keep their planes.
+void Remesher::mend_best() {
+  PanelLayout& layout = best_->layout();
+  std::vector<char> fixed_masters(layout.planes().planes.size(), 0);
+  const std::vector<char> held = held_clusters();
+  for (size_t c = 0; c < held.size(); ++c) {
+    if (held[c]) fixed_masters[static_cast<size_t>(layout.planes().master_of[c])] = 1;
+  }
+  layout.single_point_fix(fixed_masters);
 }
 
 void Remesher::cut_glass() {
