@@ -193,13 +193,7 @@ void Remesher::finish_panels() {
 // attempt only (runs that end valid never get here, so they are unchanged). Locked panels
 // and their neighbours keep their planes.
 void Remesher::mend_best() {
-  PanelLayout& layout = best_->layout();
-  std::vector<char> fixed_masters(layout.planes().planes.size(), 0);
-  const std::vector<char> held = held_clusters();
-  for (size_t c = 0; c < held.size(); ++c) {
-    if (held[c]) fixed_masters[static_cast<size_t>(layout.planes().master_of[c])] = 1;
-  }
-  layout.single_point_fix(fixed_masters);
+  best_->mend(faces_, held_clusters(), PanelAttemptOptions{});
 }
 
 void Remesher::cut_glass() {
