@@ -200,12 +200,20 @@ void Remesher::fix_panels(const PanelAttempt& attempt) {
 void Remesher::finish_panels() {
   clustering_ = best_->clustering();
   progress_.energy = clustering_.energy * faces_.area_to_world();
+  if (best_->num_invalid() > 0) mend_best();
   panels_ = best_->layout().to_panel_mesh(faces_);
   progress_.invalid_panels = panels_.num_invalid();
   const bool optimize = (params_.optimize_planes || params_.single_point_nodes) && panels_.num_invalid() == 0;
   progress_.stage = optimize ? Stage::Optimize : Stage::Done;
   if (optimize) progress_ = Progress{Stage::Optimize, 0, 1, progress_.energy, 0};
   if (!optimize) record_planes(), cut_glass();
+}
+
+// The panel rounds are over and some panels are still invalid: the last fixes, on the best
+// attempt only (runs that end valid never get here, so they are unchanged). Locked panels
+// and their neighbours keep their planes.
+void Remesher::mend_best() {
+  best_->mend(faces_, held_clusters(), PanelAttemptOptions{});
 }
 
 void Remesher::cut_glass() {

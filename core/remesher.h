@@ -155,6 +155,7 @@ class Remesher {
   void fix_panels(const PanelAttempt& attempt);
   void optimize_planes();
   void finish_panels();
+  void mend_best();  // last fixes on the best attempt when it is still invalid
   void cut_glass();  // glass mode, last: the pieces of concave panels (glass_split.h)
 
   // Edits (remesher_edits.cpp). A held cluster keeps exactly these faces, and this plane (a

@@ -202,6 +202,39 @@ PanelAttempt::PanelAttempt(const TriMesh& mesh, const MeshTopology& topology, co
   }
 }
 
+void PanelAttempt::mend(const FaceData& faces, const std::vector<char>& held, const PanelAttemptOptions& options) {
+  PanelLayout& layout = *layout_;
+  if (layout.num_invalid() == 0) return;
+  const size_t n = static_cast<size_t>(clustering_.num_clusters());
+  const std::vector<char> fixed_masters = fixed_masters_of(layout, held);
+  if (options.relax) {
+    // The rounds held the planes of settled clusters; now every plane but the held ones may
+    // move, and the nodes of the invalid panels pull harder each time (as in relax()).
+    const std::vector<ClusterMoments> moments = cluster_moments(faces, clustering_.labels, static_cast<int>(n));
+    std::vector<ClusterMoments> master_moments(layout.planes().planes.size());
+    for (size_t c = 0; c < n; ++c) master_moments[static_cast<size_t>(layout.planes().master_of[c])].add(moments[c]);
+    std::vector<NodeConstraint> nodes = layout.node_constraints();
+    const std::vector<Plane> start = layout.planes().planes;
+    std::vector<Plane> best = start;
+    int best_invalid = layout.num_invalid();
+    for (int t = 0; t < options.tilt_rounds + 1 && best_invalid > 0; ++t) {
+      std::vector<char> pull = layout.spike_nodes();
+      for (int c = 0; c < layout.num_clusters(); ++c) {
+        if (layout.issues()[static_cast<size_t>(c)].valid()) continue;
+        for (int node : layout.polygon(c).node) {
+          if (node >= 0) pull[static_cast<size_t>(node)] = 1;
+        }
+      }
+      for (size_t k = 0; k < nodes.size(); ++k) nodes[k].weight *= pull[k] ? 10.0 : 1.0;
+      layout.set_planes(relax_planes(nodes, master_moments, start, options.relax_options, fixed_masters));
+      if (layout.num_invalid() < best_invalid) best_invalid = layout.num_invalid(), best = layout.planes().planes;
+    }
+    layout.set_planes(best);
+    if (layout.num_invalid() > 0) layout.switch_pairings();
+  }
+  layout.single_point_fix(fixed_masters);
+}
+
 std::vector<Plane> PanelAttempt::cluster_planes() const {
   std::vector<Plane> out;
   for (int c = 0; c < clustering_.num_clusters(); ++c) out.push_back(layout_->planes().plane_of(c));

@@ -47,6 +47,13 @@ class PanelAttempt {
   PanelAttempt(const PanelAttempt&) = delete;
   PanelAttempt& operator=(const PanelAttempt&) = delete;
 
+  // The last fixes, when the panel rounds are over and this attempt is the best but still
+  // has invalid panels (each kept only when fewer panels are invalid): the planes relax
+  // again with only the `held` clusters' planes fixed (per cluster, empty for none; the
+  // rounds also held the settled ones), the nodes of invalid panels pulled harder each time;
+  // then PanelLayout::single_point_fix.
+  void mend(const FaceData& faces, const std::vector<char>& held, const PanelAttemptOptions& options);
+
   const Clustering& clustering() const { return clustering_; }
   const PanelGraph& graph() const { return graph_; }
   // Per cluster: its plane in this attempt (its master's).

@@ -11,10 +11,12 @@ namespace ff {
 
 int PanelLayout::make_single_point_nodes() {
   std::vector<std::vector<Vec3>> through(planes_.planes.size());  // points each plane must contain
+  // Planes already pinned through a single point (single_point_fix) count as full: they stay.
+  for (int m : single_point_masters()) through[static_cast<size_t>(m)].assign(2, Vec3::Zero());
   int made = 0;
   for (size_t g = 0; g < groups_.groups.size(); ++g) {
     const NodeGroup& group = groups_.groups[g];
-    if (group.on_boundary) continue;
+    if (group.on_boundary || single_[g]) continue;
     std::vector<int> masters;
     for (int c : clusters_of_group(static_cast<int>(g))) {
       const int m = planes_.master_of[static_cast<size_t>(c)];
@@ -153,12 +155,107 @@ bool PanelLayout::tilt_spike_planes(const std::vector<char>& fixed_masters, cons
   return false;
 }
 
+int PanelLayout::single_point_fix(const std::vector<char>& fixed_masters) {
+  // Interior groups of four or more distinct planes at the corners of invalid panels.
+  std::vector<int> candidates;
+  for (size_t c = 0; c < polygons_.size(); ++c) {
+    if (issues_[c].valid()) continue;
+    for (int node : polygons_[c].node) {
+      if (node >= 0) candidates.push_back(node_group_[static_cast<size_t>(node)]);
+    }
+  }
+  std::sort(candidates.begin(), candidates.end());
+  candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+  // Masters already pinned through the point of a single group cannot move freely.
+  std::vector<char> pinned(planes_.planes.size(), 0);
+  for (int m : single_point_masters()) pinned[static_cast<size_t>(m)] = 1;
+  // A panel may need several of its groups made single: each is kept while it adds no
+  // invalid panel, and all of them go back when together they mend none.
+  const int start = num_invalid();
+  const std::vector<Plane> start_planes = planes_.planes;
+  const std::vector<char> start_single = single_;
+  int made = 0;
+  for (int g : candidates) {
+    const NodeGroup& group = groups_.groups[static_cast<size_t>(g)];
+    if (group.on_boundary || single_[static_cast<size_t>(g)] || held_group_[static_cast<size_t>(g)]) continue;
+    std::vector<int> masters;
+    for (int c : clusters_of_group(g)) {
+      const int m = planes_.master_of[static_cast<size_t>(c)];
+      if (std::find(masters.begin(), masters.end(), m) == masters.end()) masters.push_back(m);
+    }
+    if (masters.size() < 4) continue;
+    // Still next to an invalid panel (an earlier fix may have mended it).
+    bool needed = false;
+    for (int c : clusters_of_group(g)) needed = needed || !issues_[static_cast<size_t>(c)].valid();
+    if (!needed) continue;
+    // The point: least squares on the planes that may move, held to the reference by a
+    // small weight; on the one fixed plane if there is one (two or more: no point).
+    std::vector<int> fixed, free;
+    bool blocked = false;
+    for (int m : masters) {
+      blocked = blocked || pinned[static_cast<size_t>(m)];
+      const bool keep = static_cast<size_t>(m) < fixed_masters.size() && fixed_masters[static_cast<size_t>(m)];
+      (keep ? fixed : free).push_back(m);
+    }
+    if (blocked || fixed.size() > 1) continue;
+    Eigen::Matrix3d A = 1e-6 * Eigen::Matrix3d::Identity();
+    Vec3 b = 1e-6 * group.reference;
+    for (int m : masters) {
+      const Plane& p = planes_.planes[static_cast<size_t>(m)];
+      A += p.normal * p.normal.transpose();
+      b += p.offset * p.normal;
+    }
+    Vec3 x = A.ldlt().solve(b);
+    if (!fixed.empty()) x = planes_.planes[static_cast<size_t>(fixed[0])].project(x);
+    if (!x.allFinite() || !((x - group.reference).norm() <= options_.spike_distance)) continue;
+    const std::vector<Plane> old = planes_.planes;
+    for (int m : free) planes_.planes[static_cast<size_t>(m)] = Plane::through(x, planes_.planes[static_cast<size_t>(m)].normal);
+    const int before = num_invalid();
+    single_[static_cast<size_t>(g)] = 1;
+    single_point_[static_cast<size_t>(g)] = x;
+    rebuild_changed(old);
+    place_group_nodes(g);
+    rebuild(clusters_of_group(g));
+    if (num_invalid() <= before) {
+      for (int m : masters) pinned[static_cast<size_t>(m)] = 1;
+      ++made;
+      continue;
+    }
+    const std::vector<Plane> moved = planes_.planes;
+    planes_.planes = old;
+    single_[static_cast<size_t>(g)] = 0;
+    rebuild_changed(moved);
+    place_group_nodes(g);
+    rebuild(clusters_of_group(g));
+  }
+  if (made > 0 && num_invalid() >= start) {
+    planes_.planes = start_planes;
+    single_ = start_single;
+    rebuild_all();
+    return 0;
+  }
+  return made;
+}
+
+std::vector<int> PanelLayout::single_point_masters() const {
+  std::vector<int> out;
+  for (size_t g = 0; g < single_.size(); ++g) {
+    if (!single_[g]) continue;
+    for (int c : clusters_of_group(static_cast<int>(g))) out.push_back(planes_.master_of[static_cast<size_t>(c)]);
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
 int PanelLayout::try_planes(const std::vector<Plane>& candidates) {
   int kept = 0;
+  const std::vector<int> pinned = single_point_masters();  // they must keep their point
   for (size_t m = 0; m < planes_.planes.size(); ++m) {
     const Plane old = planes_.planes[m];
     const Plane& cand = candidates[m];
     if (cand.normal == old.normal && cand.offset == old.offset) continue;
+    if (std::binary_search(pinned.begin(), pinned.end(), static_cast<int>(m))) continue;
     // The groups and panels this plane reaches.
     std::vector<int> groups, clusters;
     for (size_t c = 0; c < planes_.master_of.size(); ++c) {

@@ -77,9 +77,19 @@ class PanelLayout {
   // stay, hinged ones (per master, empty for none) tilt only about their hinge's line.
   // Returns true when it kept any.
   bool tilt_spike_planes(const std::vector<char>& fixed_masters = {}, const std::vector<PlaneHinge>& hinges = {});
+  // Where an invalid panel has a corner at an interior group of four or more distinct
+  // planes (whose nodes came out in an order no pairing mends, e.g. a flipped short edge),
+  // moves those planes (by translation; fixed_masters, per master, empty for none: at most
+  // one of them stays, and the point is on it) through their least-squares point near the
+  // group and makes the group one vertex, as make_single_point_nodes() does. Kept only when
+  // fewer panels are invalid. Returns the number of groups made single.
+  int single_point_fix(const std::vector<char>& fixed_masters = {});
+  // The masters whose planes pass through the point of a single-point group, sorted.
+  std::vector<int> single_point_masters() const;
   // Replaces the plane of each master with `candidates[m]`, one at a time, keeping each
   // change that does not add invalid panels around it (beyond the paper: planes fitted to
   // the surface). Returns how many it kept.
+  // Masters pinned through a single point (single_point_fix) keep their planes.
   int try_planes(const std::vector<Plane>& candidates);
 
   // Every node's reference point and master planes (for plane_relax.h), new planes for all
