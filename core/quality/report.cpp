@@ -293,7 +293,9 @@ QualityReport measure_quality(const TriMesh& input, const MeshTopology& input_to
       r.invalid_panel_ids.push_back(p);
     }
   }
-  r.invalid_panels = static_cast<int>(r.invalid_panel_ids.size());
+  // A cluster that could not become a panel leaves its faces uncovered: it counts as an
+  // invalid panel too, so the count never hides it (write_invalid_panels lists it).
+  r.invalid_panels = static_cast<int>(r.invalid_panel_ids.size() + panels.unbuilt_clusters.size());
   r.min_corner_angle_deg = min_angle;
   r.min_corner_angle_target_deg = options.min_corner_angle_deg;
   return r;

@@ -62,7 +62,8 @@ struct QualityReport {
   std::vector<std::array<int, 2>> flipped_edge_vertices;
   std::vector<int> spike_vertex_ids;
   // Panels invalid by their own PanelIssues or by any check here (non-simple, non-star,
-  // flipped edges, a spike vertex, misoriented), and their indices in increasing order.
+  // flipped edges, a spike vertex, misoriented), and their indices in increasing order;
+  // the count also has the clusters that could not become a panel (PanelMesh::unbuilt_clusters).
   int invalid_panels = 0;
   std::vector<int> invalid_panel_ids;
   // Panels around each interior panel vertex (not on a boundary edge) -> number of them.

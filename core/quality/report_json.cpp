@@ -76,6 +76,14 @@ void write_invalid_panels(JsonWriter& j, const PanelMesh& pm, const QualityRepor
     if (i < pm.issues.size() && pm.issues[i].spike_vertices > 0) j.value("spike_vertices", pm.issues[i].spike_vertices);
     j.end_object();
   }
+  // Clusters that could not become a panel (no outline: not a disk, too few corners).
+  for (const int c : pm.unbuilt_clusters) {
+    j.begin_object();
+    j.value("panel", -1).value("cluster", c);
+    j.begin_array("problems").value(nullptr, "unbuilt").end_array();
+    j.value("vertices", 0);
+    j.end_object();
+  }
   j.end_array();
 }
 
