@@ -9,6 +9,23 @@
 
 namespace ff {
 
+namespace {
+
+// The least-squares point of the masters' planes, held to `reference` by a small weight (so
+// it is defined when the planes do not pin a point).
+Vec3 least_squares_point(const std::vector<Plane>& planes, const std::vector<int>& masters, const Vec3& reference) {
+  Eigen::Matrix3d A = 1e-6 * Eigen::Matrix3d::Identity();
+  Vec3 b = 1e-6 * reference;
+  for (int m : masters) {
+    const Plane& p = planes[static_cast<size_t>(m)];
+    A += p.normal * p.normal.transpose();
+    b += p.offset * p.normal;
+  }
+  return A.ldlt().solve(b);
+}
+
+}  // namespace
+
 int PanelLayout::make_single_point_nodes() {
   std::vector<std::vector<Vec3>> through(planes_.planes.size());  // points each plane must contain
   // Planes already pinned through a single point (single_point_fix) count as full: they stay.
@@ -26,15 +43,7 @@ int PanelLayout::make_single_point_nodes() {
     bool room = true;
     for (int m : masters) room = room && through[static_cast<size_t>(m)].size() < 2;
     if (!room) continue;
-    // The least-squares point of the planes, held to the group's reference by a small weight.
-    Eigen::Matrix3d A = 1e-6 * Eigen::Matrix3d::Identity();
-    Vec3 b = 1e-6 * group.reference;
-    for (int m : masters) {
-      const Plane& p = planes_.planes[static_cast<size_t>(m)];
-      A += p.normal * p.normal.transpose();
-      b += p.offset * p.normal;
-    }
-    const Vec3 x = A.ldlt().solve(b);
+    const Vec3 x = least_squares_point(planes_.planes, masters, group.reference);
     if (!x.allFinite() || !((x - group.reference).norm() <= options_.spike_distance)) continue;
     // A plane already pinned through a point can turn to contain x only about a real line.
     bool turnable = true;
@@ -198,14 +207,7 @@ int PanelLayout::single_point_fix(const std::vector<char>& fixed_masters) {
       (keep ? fixed : free).push_back(m);
     }
     if (blocked || fixed.size() > 1) continue;
-    Eigen::Matrix3d A = 1e-6 * Eigen::Matrix3d::Identity();
-    Vec3 b = 1e-6 * group.reference;
-    for (int m : masters) {
-      const Plane& p = planes_.planes[static_cast<size_t>(m)];
-      A += p.normal * p.normal.transpose();
-      b += p.offset * p.normal;
-    }
-    Vec3 x = A.ldlt().solve(b);
+    Vec3 x = least_squares_point(planes_.planes, masters, group.reference);
     if (!fixed.empty()) x = planes_.planes[static_cast<size_t>(fixed[0])].project(x);
     if (!x.allFinite() || !((x - group.reference).norm() <= options_.spike_distance)) continue;
     const std::vector<Plane> old = planes_.planes;

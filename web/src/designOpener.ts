@@ -89,44 +89,39 @@ export class DesignOpener {
     this.host.form.setPanels(example.panels); // each example comes with a count that suits it
     this.host.editor.forgetPaint(); // painted on the previous mesh
     this.host.preparation.forgetEdgeLength();
-    const checked = this.host.form.read();
-    if (!checked.ok) {
-      this.host.status.error(checked.message);
-      return;
-    }
-    const prepare = this.host.preparation.read(checked.value);
-    if (!prepare.ok) {
-      this.host.status.error(prepare.message);
-      return;
-    }
-    const repair = this.host.repair.read();
-    if (!repair.ok) {
-      this.host.status.error(repair.message);
-      return;
-    }
-    await this.open(withRepair({ kind: 'example', id: example.id, prepare: prepare.value }, repair.value), checked.value, [], options);
+    const read = this.readChoices();
+    if (!read) return;
+    await this.open(withRepair({ kind: 'example', id: example.id, prepare: read.prepare }, read.repair), read.params, [], options);
   }
 
   async openFile(file: File): Promise<void> {
     this.host.editor.forgetPaint();
     this.host.preparation.forgetEdgeLength();
+    const read = this.readChoices();
+    if (!read) return;
+    const bytes = new Uint8Array(await file.arrayBuffer());
+    await this.open(withRepair({ kind: 'file', name: file.name, bytes, prepare: read.prepare }, read.repair), read.params, [], { solve: true, note: '' });
+  }
+
+  // The form's parameters and the Surface section's preparation and repair for a new mesh;
+  // null (the problem said in the status) when one of them is refused.
+  private readChoices(): { params: DesignParams; prepare: MeshPrepare | undefined; repair: MeshRepair | undefined } | null {
     const params = this.host.form.read();
     if (!params.ok) {
       this.host.status.error(params.message);
-      return;
+      return null;
     }
     const prepare = this.host.preparation.read(params.value);
     if (!prepare.ok) {
       this.host.status.error(prepare.message);
-      return;
+      return null;
     }
     const repair = this.host.repair.read();
     if (!repair.ok) {
       this.host.status.error(repair.message);
-      return;
+      return null;
     }
-    const bytes = new Uint8Array(await file.arrayBuffer());
-    await this.open(withRepair({ kind: 'file', name: file.name, bytes, prepare: prepare.value }, repair.value), params.value, [], { solve: true, note: '' });
+    return { params: params.value, prepare: prepare.value, repair: repair.value };
   }
 
   // New holes to fill: the design's mesh opened again with them (its largest-part choice kept).
