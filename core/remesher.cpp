@@ -226,15 +226,21 @@ void Remesher::optimize_planes() {
   PanelLayout& layout = best_->layout();
   if (params_.optimize_planes) {
     const PanelLayout& settled = layout;
-    std::vector<Plane> fitted =
-        surface_fit_planes(faces_, best_->clustering().labels, settled.planes(), settled.node_constraints());
+    const std::vector<int>& labels = best_->clustering().labels;
+    std::vector<Plane> fitted = surface_fit_planes(
+        faces_, labels, settled.planes(), settled.node_constraints(),
+        border_moments(topology_, local_positions_, labels, best_->clustering().num_clusters()), kBorderFitWeight);
     // Locked panels and their neighbours keep their planes.
     const std::vector<char> held = held_clusters();
     for (size_t c = 0; c < held.size(); ++c) {
       const int master = settled.planes().master_of[c];
       if (held[c]) fitted[static_cast<size_t>(master)] = settled.planes().planes[static_cast<size_t>(master)];
     }
-    layout.try_planes(fitted);
+    // The fitted planes move together, but try_planes takes them one at a time, each only
+    // where the panels stay valid: a plane refused while its neighbours were still where they
+    // were may pass once they moved (a second pass), or part of the way (half, then a quarter).
+    if (layout.try_planes(fitted) > 0) layout.try_planes(fitted);
+    for (double step : {0.5, 0.25}) layout.try_planes(planes_toward(layout.planes().planes, fitted, step));
   }
   // Last: it pins planes to points, which the fit above would undo.
   if (params_.single_point_nodes) layout.make_single_point_nodes();
