@@ -52,7 +52,9 @@ int random_face(const std::vector<int>& candidates, const std::vector<double>& c
 std::vector<double> seed_weights(const FaceData& faces, double density_weight) {
   std::vector<double> w(static_cast<size_t>(faces.num_faces()));
   for (size_t f = 0; f < w.size(); ++f) {
-    w[f] = faces[f].area * (density_weight == 0.0 ? 1.0 : std::pow(faces[f].density, density_weight));
+    // pow(1, y) is exactly 1: uniform density skips the call with the same bits.
+    const double d = faces[f].density;
+    w[f] = faces[f].area * (density_weight == 0.0 || d == 1.0 ? 1.0 : std::pow(d, density_weight));
   }
   return w;
 }
@@ -126,9 +128,15 @@ class DistanceBuckets {
 std::vector<std::array<double, 3>> dual_edge_lengths(const FaceData& faces, const MeshTopology& topology,
                                                      double density_weight) {
   std::vector<std::array<double, 3>> hop(static_cast<size_t>(faces.num_faces()));
-  const auto stretch = [&](size_t f) {
-    return density_weight == 0.0 ? 1.0 : std::pow(faces[f].density, 0.5 * density_weight);
-  };
+  // Once per face, not once per edge side (pow is most of this function's time). pow(1, y)
+  // is exactly 1, so uniform density skips it with the same bits.
+  std::vector<double> stretches(hop.size(), 1.0);
+  if (density_weight != 0.0) {
+    for (size_t f = 0; f < hop.size(); ++f) {
+      if (faces[f].density != 1.0) stretches[f] = std::pow(faces[f].density, 0.5 * density_weight);
+    }
+  }
+  const auto stretch = [&](size_t f) { return stretches[f]; };
   for (size_t f = 0; f < hop.size(); ++f) {
     for (size_t i = 0; i < 3; ++i) {
       const int g = topology.face_neighbors[f][i];

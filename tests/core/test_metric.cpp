@@ -83,6 +83,9 @@ TEST(Metric, SecondMomentMatchesNumericIntegration) {
       EXPECT_NEAR(m.second(i, j), numeric, 1e-4 * std::max(1.0, std::abs(numeric)));
     }
   }
+  // Exactly symmetric, also after more faces (add_face fills both halves from one term).
+  m.add_face(fd, 0);
+  EXPECT_TRUE(m.second == m.second.transpose());
 }
 
 TEST(Metric, EnergyFromMomentsEqualsSumOfFaceCosts) {

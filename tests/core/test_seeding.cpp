@@ -56,6 +56,26 @@ TEST(Seeding, FarthestPointSpreadsBetterThanRandom) {
   EXPECT_GT(spread_far, 0.5 * std::sqrt(fd.total_area / 50));
 }
 
+TEST(Seeding, FarthestSeedsCrowdWhereDensityIsHigh) {
+  // Density 1 on the left half (the uniform value, which skips pow) and 4 on the right:
+  // with the density weight, seed distances on the right are stretched 2x, so the right
+  // half gets about 4x the seeds. Uniform density 1 must give exactly the seeds of none.
+  const TriMesh mesh = make_plane(40, 40, 2.0, 2.0);
+  const MeshTopology topo = build_topology(mesh);
+  const FaceData plain = make_face_data(mesh);
+  std::vector<double> density(static_cast<size_t>(mesh.num_faces()));
+  for (size_t f = 0; f < density.size(); ++f) density[f] = plain[f].centroid.x() < 0.0 ? 1.0 : 4.0;
+  const FaceData fd = make_face_data(mesh, density);
+  const std::vector<int> seeds = place_seeds(fd, topo, 60, SeedingMethod::FarthestPoint, 3, 1.0);
+  int right = 0;
+  for (int f : seeds) right += fd[static_cast<size_t>(f)].centroid.x() >= 0.0;
+  EXPECT_GE(right, 40);  // 48 of 60 for a 4:1 split; equal halves would be 30
+  EXPECT_LE(right, 56);
+  const FaceData ones = make_face_data(mesh, std::vector<double>(density.size(), 1.0));
+  EXPECT_EQ(place_seeds(ones, topo, 60, SeedingMethod::FarthestPoint, 3, 1.0),
+            place_seeds(plain, topo, 60, SeedingMethod::FarthestPoint, 3, 0.0));
+}
+
 TEST(Seeding, ManySeparatePartsAreApportionedInLinearTime) {
   // 20000 separate two-triangle plates (a facade of loose panels): one seed each, plus the
   // rest by area. This used to take seconds (a sort per seed).
