@@ -326,9 +326,7 @@ int two_chain_face(const TriMesh& mesh, const MeshTopology& topology, const Clus
   int best = -1;
   double distance = -1.0;
   for (size_t i = 0; i < chains.size(); ++i) {
-    if (neighbour[i] == kBoundary ||
-        std::count(neighbour.begin(), neighbour.end(), neighbour[i]) < 2)
-      continue;
+    if (neighbour[i] == kBoundary || std::count(neighbour.begin(), neighbour.end(), neighbour[i]) < 2) continue;
     const int f = loop[(chains[i].first + chains[i].second) / 2] / 3;
     const double d = (centroid(f) - from).squaredNorm();
     if (f != seed && d > distance) distance = d, best = f;

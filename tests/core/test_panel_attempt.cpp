@@ -87,7 +87,8 @@ TEST(SplitRequests, TwoChainClusterSplitsBetweenItsChainsNotAcross) {
   // On a seam (an edge shared with B) and halfway between the rims: the new cluster grows
   // from one chain, A keeps the other. A split at A's far end (a rim) would cut across.
   bool on_seam = false;
-  for (int g : topology.face_neighbors[static_cast<size_t>(face)]) on_seam = on_seam || (g >= 0 && c.labels[static_cast<size_t>(g)] == 1);
+  for (int g : topology.face_neighbors[static_cast<size_t>(face)])
+    on_seam = on_seam || (g >= 0 && c.labels[static_cast<size_t>(g)] == 1);
   EXPECT_TRUE(on_seam);
   EXPECT_LT(std::abs(centroid(mesh, face).z() - 2.5), 0.75);
 }
