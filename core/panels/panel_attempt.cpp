@@ -293,6 +293,47 @@ int farthest_face(const MeshTopology& topology, const Clustering& c, int cluster
   return last;
 }
 
+// A cluster that meets one neighbour in two separate chains (paper fig. 10) is cut across
+// neither of them by a split at its far end: on a thin part (a leg) that leaves both halves
+// touching the neighbour twice. Seeding the new cluster at the middle of one such chain,
+// the one farthest from the seed, cuts it off that chain, so the halves meet the neighbour
+// once each. -1 when the loop shows no repeated neighbour (then the far-end split is used).
+int two_chain_face(const TriMesh& mesh, const MeshTopology& topology, const Clustering& c, const PanelGraph& graph,
+                   int cluster) {
+  const std::vector<int>& loop = graph.loops[static_cast<size_t>(cluster)];
+  if (loop.empty()) return -1;
+  const auto head = [&](int h) {
+    return mesh.triangles[static_cast<size_t>(h / 3)][static_cast<size_t>((h % 3 + 1) % 3)];
+  };
+  // Chains as [begin, end) ranges of the loop (it starts just after a corner).
+  std::vector<std::pair<size_t, size_t>> chains;
+  std::vector<int> neighbour;
+  size_t begin = 0;
+  for (size_t k = 0; k < loop.size(); ++k) {
+    if (graph.corner_of_vertex[static_cast<size_t>(head(loop[k]))] < 0) continue;
+    chains.emplace_back(begin, k + 1);
+    neighbour.push_back(PanelGraph::other_side(topology, c.labels, loop[k]));
+    begin = k + 1;
+  }
+  const auto centroid = [&](int f) {
+    const Triangle& t = mesh.triangles[static_cast<size_t>(f)];
+    return (mesh.positions[static_cast<size_t>(t[0])] + mesh.positions[static_cast<size_t>(t[1])] +
+            mesh.positions[static_cast<size_t>(t[2])]) /
+           3.0;
+  };
+  const int seed = c.seeds[static_cast<size_t>(cluster)];
+  const Vec3 from = centroid(seed);
+  int best = -1;
+  double distance = -1.0;
+  for (size_t i = 0; i < chains.size(); ++i) {
+    if (neighbour[i] == kBoundary || std::count(neighbour.begin(), neighbour.end(), neighbour[i]) < 2) continue;
+    const int f = loop[(chains[i].first + chains[i].second) / 2] / 3;
+    const double d = (centroid(f) - from).squaredNorm();
+    if (f != seed && d > distance) distance = d, best = f;
+  }
+  return best;
+}
+
 }  // namespace
 
 std::vector<int> enclosed_clusters(const PanelAttempt& attempt) {
@@ -313,7 +354,9 @@ std::vector<std::pair<int, int>> split_requests(const TriMesh& mesh, const MeshT
   for (int cluster = 0; cluster < c.num_clusters(); ++cluster) {
     const unsigned p = graph.problems[static_cast<size_t>(cluster)];
     // An enclosed cluster is fixed by splitting the one around it (which has a hole).
-    if (p != 0 && p != kEnclosed) out.emplace_back(cluster, farthest_face(topology, c, cluster));
+    if (p == 0 || p == kEnclosed) continue;
+    const int across = p == kTwoChains ? two_chain_face(mesh, topology, c, graph, cluster) : -1;
+    out.emplace_back(cluster, across >= 0 ? across : farthest_face(topology, c, cluster));
   }
   const PanelLayout* layout = &attempt.layout();
   // Largest invalid panels first: splitting them costs the least detail elsewhere.
