@@ -75,7 +75,7 @@ std::string Session::load(const std::string& name, TriMesh raw, int input_triang
   name_ = name;
   mesh_ = std::move(clean.mesh);
   original_ = mesh_;
-  previous_ = TriMesh{};
+  forget_mesh_before();
   topology_ = std::move(topology);
   face_polygon_ = std::move(face_polygon);
   input_triangles_ = input_triangles;
@@ -151,7 +151,10 @@ std::string Session::set_params(const std::string& params_json) {
     params.panels = kept_target(params);
     // Only the edit list changed: edit the design in place (undo / redo replay, session_edits.cpp).
     const std::string key = solve_key(params_json, params.panels);
-    if (apply_edits_only(key, params)) return status_json(true, "");
+    if (apply_edits_only(key, params)) {
+      forget_mesh_before();
+      return status_json(true, "");
+    }
     if (remesher_) {
       const bool mid_solve = !remesher_->done();
       remesher_->set_params(params);  // throws and keeps everything on bad parameters
@@ -167,6 +170,7 @@ std::string Session::set_params(const std::string& params_json) {
     }
     params_ = params;
     solve_key_ = key;
+    forget_mesh_before();
     return status_json(true, "");
   });
 }
@@ -174,6 +178,7 @@ std::string Session::set_params(const std::string& params_json) {
 std::string Session::step() {
   return guarded([&] {
     if (mesh_.num_faces() == 0) throw InputError("no mesh loaded");
+    forget_mesh_before();
     if (!remesher_) remesher_ = std::make_unique<Remesher>(mesh_, params_);
     const Stage stage = remesher_->progress().stage;
     const auto t0 = Clock::now();
