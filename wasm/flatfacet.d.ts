@@ -179,9 +179,10 @@ export interface Session {
   // automatic). MeshInfo JSON, its `prepared` saying what was done and why; a Status on
   // failure (the mesh kept).
   prepare(panels: number, subdivide: number, edgeLength: number): string;
-  // Carried from the mesh before the last prepare() that changed it to the mesh now: values
-  // per vertex (closest point, barycentric), triangle ids (nearest centroid). Empty arrays
-  // when refused (wrong length, an id out of range, no mesh before).
+  // Carried from the mesh before the last prepare() to the mesh now: values per vertex
+  // (closest point, barycentric), triangle ids (nearest centroid). Empty arrays when refused
+  // (wrong length, an id out of range, no mesh before). Carry right after prepare(): the next
+  // accepted setDensity or setParams, or step(), drops the mesh before (so does a load).
   transferField(values: Float64Array): Float64Array;
   remapFaces(faces: Int32Array): Int32Array;
   // How the next loads repair the mesh (issue 7): fill holes of at most `fillHoles` edges

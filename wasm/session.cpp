@@ -9,13 +9,13 @@
 #include "core/mesh/mesh_io.h"
 #include "core/mesh/poly_mesh.h"
 #include "core/panels/panel_export.h"
-#include "core/quality/planarity.h"
 #include "core/quality/report_json.h"
 #include "core/remesh_params_json.h"
 #include "core/shapes/example_shapes.h"
 #include "core/util/error.h"
 #include "core/util/json_writer.h"
 #include "wasm/guarded.h"
+#include "wasm/mesh_arrays.h"
 
 namespace ff::wasm {
 
@@ -75,7 +75,7 @@ std::string Session::load(const std::string& name, TriMesh raw, int input_triang
   name_ = name;
   mesh_ = std::move(clean.mesh);
   original_ = mesh_;
-  previous_ = TriMesh{};
+  forget_mesh_before();
   topology_ = std::move(topology);
   face_polygon_ = std::move(face_polygon);
   input_triangles_ = input_triangles;
@@ -129,23 +129,7 @@ std::string Session::load_mesh(const std::string& name, std::string_view bytes) 
 std::string Session::load_arrays(const std::string& name, const std::vector<double>& positions,
                                  const std::vector<std::uint32_t>& indices) {
   return guarded([&] {
-    if (positions.size() % 3 != 0) throw InputError(name + ": positions are not xyz triples");
-    if (indices.size() % 3 != 0) throw InputError(name + ": indices are not triangles");
-    TriMesh mesh;
-    for (size_t i = 0; i < positions.size(); i += 3) {
-      const Vec3 p(positions[i], positions[i + 1], positions[i + 2]);
-      if (!p.allFinite()) throw InputError(name + ": vertex " + std::to_string(i / 3) + " is not finite");
-      mesh.positions.push_back(p);
-    }
-    for (size_t i = 0; i < indices.size(); i += 3) {
-      std::array<int, 3> t{};
-      for (int k = 0; k < 3; ++k) {
-        if (indices[i + k] >= mesh.positions.size())
-          throw InputError(name + ": triangle " + std::to_string(i / 3) + " uses a missing vertex");
-        t[k] = static_cast<int>(indices[i + k]);
-      }
-      mesh.triangles.push_back(t);
-    }
+    TriMesh mesh = mesh_from_arrays(name + ": ", positions, indices);
     const int triangles = mesh.num_faces();
     return load(name, std::move(mesh), triangles);
   });
@@ -167,7 +151,10 @@ std::string Session::set_params(const std::string& params_json) {
     params.panels = kept_target(params);
     // Only the edit list changed: edit the design in place (undo / redo replay, session_edits.cpp).
     const std::string key = solve_key(params_json, params.panels);
-    if (apply_edits_only(key, params)) return status_json(true, "");
+    if (apply_edits_only(key, params)) {
+      forget_mesh_before();
+      return status_json(true, "");
+    }
     if (remesher_) {
       const bool mid_solve = !remesher_->done();
       remesher_->set_params(params);  // throws and keeps everything on bad parameters
@@ -183,6 +170,7 @@ std::string Session::set_params(const std::string& params_json) {
     }
     params_ = params;
     solve_key_ = key;
+    forget_mesh_before();
     return status_json(true, "");
   });
 }
@@ -190,6 +178,7 @@ std::string Session::set_params(const std::string& params_json) {
 std::string Session::step() {
   return guarded([&] {
     if (mesh_.num_faces() == 0) throw InputError("no mesh loaded");
+    forget_mesh_before();
     if (!remesher_) remesher_ = std::make_unique<Remesher>(mesh_, params_);
     const Stage stage = remesher_->progress().stage;
     const auto t0 = Clock::now();
@@ -226,85 +215,6 @@ const QualityReport* Session::quality() {
     if (remesher_->done()) timings_.quality = seconds_since(t0);
   }
   return &*quality_;
-}
-
-std::vector<float> Session::input_positions() const {
-  std::vector<float> out;
-  out.reserve(mesh_.positions.size() * 3);
-  for (const Vec3& p : mesh_.positions)
-    for (int k = 0; k < 3; ++k) out.push_back(static_cast<float>(p[k]));
-  return out;
-}
-
-std::vector<std::uint32_t> Session::input_indices() const {
-  std::vector<std::uint32_t> out;
-  out.reserve(mesh_.triangles.size() * 3);
-  for (const auto& t : mesh_.triangles)
-    for (const int v : t) out.push_back(static_cast<std::uint32_t>(v));
-  return out;
-}
-
-std::vector<std::int32_t> Session::cluster_ids() const {
-  if (!remesher_ || remesher_->clustering().labels.empty())
-    return std::vector<std::int32_t>(mesh_.triangles.size(), -1);
-  const std::vector<int>& labels = remesher_->clustering().labels;
-  return std::vector<std::int32_t>(labels.begin(), labels.end());
-}
-
-std::vector<double> Session::panel_positions() const {
-  std::vector<double> out;
-  if (!remesher_) return out;
-  for (const Vec3& p : remesher_->panels().vertices)
-    for (int k = 0; k < 3; ++k) out.push_back(p[k]);
-  return out;
-}
-
-std::vector<std::uint32_t> Session::panel_offsets() const {
-  std::vector<std::uint32_t> out{0};
-  if (!remesher_) return out;
-  for (const std::vector<int>& panel : remesher_->panels().panels)
-    out.push_back(out.back() + static_cast<std::uint32_t>(panel.size()));
-  return out;
-}
-
-std::vector<std::uint32_t> Session::panel_indices() const {
-  std::vector<std::uint32_t> out;
-  if (!remesher_) return out;
-  for (const std::vector<int>& panel : remesher_->panels().panels)
-    for (const int v : panel) out.push_back(static_cast<std::uint32_t>(v));
-  return out;
-}
-
-std::vector<std::uint32_t> Session::panel_triangles() const {
-  std::vector<std::uint32_t> out;
-  if (!remesher_) return out;
-  for (const auto& t : triangulate_panels(remesher_->panels()).triangles)
-    for (const int v : t) out.push_back(static_cast<std::uint32_t>(v));
-  return out;
-}
-
-std::vector<std::uint32_t> Session::panel_triangle_ids() const {
-  if (!remesher_) return {};
-  const std::vector<int> panel = triangulate_panels(remesher_->panels()).panel;
-  return std::vector<std::uint32_t>(panel.begin(), panel.end());
-}
-
-std::vector<double> Session::corner_positions() const {
-  std::vector<double> out;
-  if (!remesher_) return out;
-  const PanelMesh& pm = remesher_->panels();
-  for (size_t v = 0; v < pm.vertices.size(); ++v) {
-    const int corner = v < pm.vertex_corner.size() ? pm.vertex_corner[v] : -1;
-    const Vec3& p =
-        corner >= 0 && corner < mesh_.num_vertices() ? mesh_.positions[static_cast<size_t>(corner)] : pm.vertices[v];
-    for (int k = 0; k < 3; ++k) out.push_back(p[k]);
-  }
-  return out;
-}
-
-std::vector<double> Session::corner_planarity() const {
-  if (!remesher_) return {};
-  return corner_polygon_planarity(mesh_, remesher_->panels());
 }
 
 std::string Session::problems() {

@@ -51,9 +51,11 @@ class Session {
   // untouched bit for bit), or to `edge_length` when > 0 (0: automatic). MeshInfo JSON whose
   // "prepared" lists what was done and why; on failure a Status and the mesh stays as it was.
   std::string prepare(int panels, int subdivide, double edge_length);
-  // What was attached to the mesh before the last prepare() that changed it, carried to the
-  // mesh now (core/prepare/mesh_transfer.h): per-vertex values by closest point, triangle ids
-  // by nearest centroid. Empty when refused (wrong length, an id out of range, no mesh before).
+  // What was attached to the mesh before the last prepare(), carried to the mesh now
+  // (core/prepare/mesh_transfer.h): per-vertex values by closest point, triangle ids by
+  // nearest centroid. Empty when refused (wrong length, an id out of range, no mesh before).
+  // The mesh before is kept only for this carrying: the next set_density or set_params that
+  // is accepted, or step(), drops it (as does a load), so then both refuse.
   std::vector<double> transfer_field(const std::vector<double>& values) const;
   std::vector<std::int32_t> remap_faces(const std::vector<std::int32_t>& faces) const;
   // How the next loads repair the mesh (wasm/session_repair.cpp, core/mesh/clean.h): fill
@@ -134,6 +136,9 @@ class Session {
                    const std::vector<int>& source_polygon = {});
   std::string mesh_info_json() const;
   void write_repair_json(JsonWriter& j) const;  // MeshInfo's "repair" (session_repair.cpp)
+  // Designing on the prepared mesh has begun: the mesh before is no longer carried from
+  // (session_prepare.cpp).
+  void forget_mesh_before();
   const QualityReport* quality();
   void forget_result();
   // Edits (session_edits.cpp): what set_params compares to tell an edit from a new solve
@@ -146,7 +151,7 @@ class Session {
   std::string name_;
   TriMesh mesh_;      // cleaned, then prepared
   TriMesh original_;  // cleaned as loaded: what every prepare() starts from
-  TriMesh previous_;  // the mesh before the last prepare() that changed it
+  TriMesh previous_;  // the mesh before the last prepare(), until carrying ends (forget_mesh_before)
   MeshTopology topology_;
   std::vector<std::string> cleanup_;   // what clean-up repaired, one sentence each
   CleanOptions repair_;                // set_repair(): how loads repair the mesh

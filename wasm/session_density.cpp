@@ -28,6 +28,7 @@ std::string Session::set_density(const std::vector<double>& density) {
         }
       }
     }
+    forget_mesh_before();  // accepted: designing on this mesh has begun
     // The same field again changes nothing (the worker sends it before every solve).
     if (density == params_.density) return status_json(true, "");
     RemeshParams params = params_;

@@ -74,6 +74,11 @@ std::string Session::prepare(int panels, int subdivide, double edge_length) {
   });
 }
 
+// Up to three meshes live in a session (as loaded, before, now); the one before is the
+// largest when a prepare refined it, and the page carries its paint and edits right after
+// prepare(), before anything else.
+void Session::forget_mesh_before() { previous_ = TriMesh{}; }
+
 std::vector<double> Session::transfer_field(const std::vector<double>& values) const {
   try {
     return transfer_vertex_values(previous_, values, mesh_);

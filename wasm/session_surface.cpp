@@ -10,6 +10,7 @@
 #include "core/util/error.h"
 #include "core/util/json_writer.h"
 #include "wasm/guarded.h"
+#include "wasm/mesh_arrays.h"
 #include "wasm/session.h"
 
 namespace ff::wasm {
@@ -23,29 +24,6 @@ struct SurfaceStats {
   int triangles = 0, samples_u = 0, samples_v = 0, seam_welded = 0;
 };
 
-// The triangle soup beside the surfaces, checked like Session::load_arrays.
-TriMesh soup_from_arrays(const std::string& name, const std::vector<double>& positions,
-                         const std::vector<std::uint32_t>& indices) {
-  if (positions.size() % 3 != 0) throw InputError(name + ": mesh positions are not xyz triples");
-  if (indices.size() % 3 != 0) throw InputError(name + ": mesh indices are not triangles");
-  TriMesh mesh;
-  for (size_t i = 0; i < positions.size(); i += 3) {
-    const Vec3 p(positions[i], positions[i + 1], positions[i + 2]);
-    if (!p.allFinite()) throw InputError(name + ": mesh vertex " + std::to_string(i / 3) + " is not finite");
-    mesh.positions.push_back(p);
-  }
-  for (size_t i = 0; i < indices.size(); i += 3) {
-    Triangle t{};
-    for (int k = 0; k < 3; ++k) {
-      if (indices[i + static_cast<size_t>(k)] >= mesh.positions.size())
-        throw InputError(name + ": mesh triangle " + std::to_string(i / 3) + " uses a missing vertex");
-      t[static_cast<size_t>(k)] = static_cast<int>(indices[i + static_cast<size_t>(k)]);
-    }
-    mesh.triangles.push_back(t);
-  }
-  return mesh;
-}
-
 }  // namespace
 
 std::string Session::load_surfaces(const std::string& name, const std::string& surfaces_json,
@@ -57,7 +35,8 @@ std::string Session::load_surfaces(const std::string& name, const std::string& s
     } catch (const InputError& e) {
       throw InputError(name + ": " + e.what());
     }
-    TriMesh soup = soup_from_arrays(name, positions, indices);
+    // The triangle soup beside the surfaces, checked like Session::load_arrays.
+    TriMesh soup = mesh_from_arrays(name + ": mesh ", positions, indices);
     if (set.surfaces.empty() && soup.triangles.empty())
       throw InputError(name + ": no surfaces and no triangles to load");
     double edge = set.edge_length;

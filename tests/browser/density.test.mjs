@@ -42,12 +42,6 @@ async function objOf(page) {
   return (await download(page, 'Export OBJ')).text;
 }
 
-async function after_(page, action) {
-  const since = await outcomes(page);
-  await action();
-  return waitForDone(page, since);
-}
-
 test('paint a stroke: smaller panels under it; undo/redo give the same OBJ bytes; a link and a reload reproduce it', async () => {
   let link = '';
   let painted = '';
@@ -88,17 +82,17 @@ test('paint a stroke: smaller panels under it; undo/redo give the same OBJ bytes
     assert.equal(await solveAfter(page, () => remesh(page)), PANELS - 15);
     edited = await objOf(page);
     await page.getByRole('button', { name: 'Paint density' }).click(); // off: the usual view
-    assert.equal(await after_(page, () => page.getByRole('button', { name: 'Undo' }).click()), PANELS);
+    assert.equal(await solveAfter(page, () => page.getByRole('button', { name: 'Undo' }).click()), PANELS);
     assert.equal(await page.getByLabel('Panels', { exact: true }).inputValue(), String(PANELS));
     assert.equal(await objOf(page), painted, 'undo the edit: the painted OBJ, byte for byte');
-    assert.equal(await after_(page, () => page.getByRole('button', { name: 'Undo' }).click()), PANELS);
+    assert.equal(await solveAfter(page, () => page.getByRole('button', { name: 'Undo' }).click()), PANELS);
     assert.equal(await objOf(page), before, 'undo the stroke: the OBJ before it, byte for byte');
     assert.equal(await page.getByRole('button', { name: 'Clear paint' }).isDisabled(), true, 'no paint any more');
     await page.locator('#viewport canvas').click({ position: { x: 5, y: 5 } }); // focus off the inputs
-    assert.equal(await after_(page, () => page.keyboard.press('Control+Shift+Z')), PANELS);
+    assert.equal(await solveAfter(page, () => page.keyboard.press('Control+Shift+Z')), PANELS);
     assert.equal(await objOf(page), painted, 'redo (Ctrl+Shift+Z) the stroke: the painted OBJ');
     const sinceRedo = await outcomes(page);
-    assert.equal(await after_(page, () => page.getByRole('button', { name: 'Redo' }).click()), PANELS - 15);
+    assert.equal(await solveAfter(page, () => page.getByRole('button', { name: 'Redo' }).click()), PANELS - 15);
     assert.equal(await objOf(page), edited, 'redo the edit');
     assert.equal(await page.getByRole('button', { name: 'Redo' }).isDisabled(), true);
     // Ctrl+Z while typing in a field is the field's own undo, not the design's.

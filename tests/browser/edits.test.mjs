@@ -8,7 +8,7 @@
 // click selects one panel for the edits and its own thickness alike.
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
-import { browserSuite, exampleLink, download, maxPlanarity, outcomes, parseObj, remesh, screenshot, setPanels, waitForDone, waitForSaved } from './harness.mjs';
+import { browserSuite, exampleLink, download, maxPlanarity, outcomes, parseObj, remesh, screenshot, setPanels, solveAfter, waitForDone, waitForSaved } from './harness.mjs';
 
 const suite = browserSuite();
 
@@ -21,12 +21,6 @@ const panelsInput = (page) => page.getByLabel('Panels', { exact: true }).inputVa
 
 async function objOf(page) {
   return (await download(page, 'Export OBJ')).text;
-}
-
-async function after_(page, action) {
-  const since = await outcomes(page);
-  await action();
-  return waitForDone(page, since);
 }
 
 // Clicks the view at (fx, fy) of its size; returns the selected panel ('' for none).
@@ -57,7 +51,7 @@ test('panel edits: split, lock through a re-solve, merge; undo/redo give the sam
     assert.match(selected, /^\d+$/, 'a click on a panel selects it');
     await screenshot(page, 'edits-selected');
     assert.equal(await split.isDisabled(), false);
-    assert.equal(await after_(page, () => split.click()), PANELS + 1, 'a split makes one panel more');
+    assert.equal(await solveAfter(page, () => split.click()), PANELS + 1, 'a split makes one panel more');
     assert.equal(await panelsInput(page), String(PANELS + 1), '"Panels" shows the count after the split');
     const afterSplit = await objOf(page);
     const planarity = maxPlanarity(parseObj(afterSplit));
@@ -67,7 +61,7 @@ test('panel edits: split, lock through a re-solve, merge; undo/redo give the sam
 
     // Lock another panel; its polygon (OBJ face = panel id) must survive a re-solve.
     assert.match(await clickView(page, 0.3, 0.45), /^\d+$/);
-    assert.equal(await after_(page, () => page.getByRole('button', { name: 'Lock panel' }).click()), PANELS + 1);
+    assert.equal(await solveAfter(page, () => page.getByRole('button', { name: 'Lock panel' }).click()), PANELS + 1);
     const locked = await page.evaluate(() => document.body.dataset.lockedPanels);
     assert.match(locked, /^\d+$/, `one locked panel (${locked})`);
     const afterLock = await objOf(page);
@@ -78,7 +72,7 @@ test('panel edits: split, lock through a re-solve, merge; undo/redo give the sam
     await screenshot(page, 'edits-locked');
 
     await setPanels(page, 70);
-    assert.equal(await after_(page, () => remesh(page)), 70);
+    assert.equal(await solveAfter(page, () => remesh(page)), 70);
     const resolved = await objOf(page);
     assert.ok(hasPolygon(resolved, polygon, 1e-9), 'the locked panel is in the re-solved OBJ, the same vertices within 1e-9');
     assert.ok(maxPlanarity(parseObj(resolved)) <= 1e-9);
@@ -102,24 +96,24 @@ test('panel edits: split, lock through a re-solve, merge; undo/redo give the sam
     await screenshot(page, 'edits-merged');
 
     // Undo the merge, the re-solve; redo both: the same bytes each way.
-    assert.equal(await after_(page, () => page.getByRole('button', { name: 'Undo' }).click()), 70);
+    assert.equal(await solveAfter(page, () => page.getByRole('button', { name: 'Undo' }).click()), 70);
     assert.equal(await objOf(page), resolved, 'undo the merge: the OBJ before it, byte for byte');
-    assert.equal(await after_(page, () => page.getByRole('button', { name: 'Undo' }).click()), PANELS + 1);
+    assert.equal(await solveAfter(page, () => page.getByRole('button', { name: 'Undo' }).click()), PANELS + 1);
     assert.equal(await objOf(page), afterLock, 'undo the re-solve: the locked design, byte for byte');
     assert.equal(await panelsInput(page), String(PANELS + 1), 'undo gives back the count of the design (the split of 60)');
-    assert.equal(await after_(page, () => page.getByRole('button', { name: 'Undo' }).click()), PANELS + 1);
+    assert.equal(await solveAfter(page, () => page.getByRole('button', { name: 'Undo' }).click()), PANELS + 1);
     assert.equal(await objOf(page), afterSplit, 'undo the lock');
-    assert.equal(await after_(page, () => page.getByRole('button', { name: 'Undo' }).click()), PANELS);
+    assert.equal(await solveAfter(page, () => page.getByRole('button', { name: 'Undo' }).click()), PANELS);
     assert.equal(await objOf(page), before, 'undo the split: the first OBJ');
     assert.equal(await panelsInput(page), String(PANELS));
     await page.locator('#viewport canvas').click({ position: { x: 5, y: 5 } }); // focus off the inputs
-    assert.equal(await after_(page, () => page.keyboard.press('Control+Shift+Z')), PANELS + 1);
+    assert.equal(await solveAfter(page, () => page.keyboard.press('Control+Shift+Z')), PANELS + 1);
     assert.equal(await objOf(page), afterSplit, 'redo (Ctrl+Shift+Z) the split');
     assert.equal(await panelsInput(page), String(PANELS + 1), 'redo gives back the count after the split');
     let lastRedo = null;
     for (const expected of [afterLock, resolved, final]) {
       lastRedo = await outcomes(page);
-      await after_(page, () => page.getByRole('button', { name: 'Redo' }).click());
+      await solveAfter(page, () => page.getByRole('button', { name: 'Redo' }).click());
       assert.equal(await objOf(page), expected, 'redo: the edited bytes');
     }
     assert.equal(await page.getByRole('button', { name: 'Redo' }).isDisabled(), true);
@@ -185,13 +179,13 @@ test('paint and edits in one link: a stroke, a split, a lock; the link gives the
     assert.equal(await page.getByLabel('Panel thickness').isDisabled(), true);
 
     assert.match(await clickView(page, 0.5, 0.5), /^\d+$/);
-    assert.equal(await after_(page, () => page.getByRole('button', { name: 'Split panel' }).click()), PANELS + 1);
+    assert.equal(await solveAfter(page, () => page.getByRole('button', { name: 'Split panel' }).click()), PANELS + 1);
     assert.equal(await panelsInput(page), String(PANELS + 1));
     const afterSplit = await selection(page);
     assert.match(afterSplit.edit, /^\d+$/, 'the selection stays on the clicked triangle through the split');
     assert.equal(afterSplit.thickness, `P${Number(afterSplit.edit) + 1}`);
     assert.match(await clickView(page, 0.3, 0.45), /^\d+$/);
-    assert.equal(await after_(page, () => page.getByRole('button', { name: 'Lock panel' }).click()), PANELS + 1);
+    assert.equal(await solveAfter(page, () => page.getByRole('button', { name: 'Lock panel' }).click()), PANELS + 1);
     edited = await objOf(page);
     assert.notEqual(edited, painted);
     assert.equal(await page.getByRole('button', { name: 'Clear paint' }).isDisabled(), false, 'the paint is part of the design');
@@ -202,7 +196,7 @@ test('paint and edits in one link: a stroke, a split, a lock; the link gives the
     // The count after the split is no change: another weight re-solves at 61, not 60.
     await page.getByText('Metric and solver').click(); // its section opens
     await page.getByLabel('Boundary', { exact: true }).fill('1.5');
-    assert.equal(await after_(page, () => remesh(page)), PANELS + 1, 'a weight change keeps the split count');
+    assert.equal(await solveAfter(page, () => remesh(page)), PANELS + 1, 'a weight change keeps the split count');
     assert.equal(await panelsInput(page), String(PANELS + 1));
   });
 

@@ -6,39 +6,15 @@
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
 import { browserSuite, download, errorAfter, exampleLink, maxPlanarity, outcomes, parseObj, screenshot, solveAfter, waitForDone, waitForSaved } from './harness.mjs';
+import { openBoxObj, twoCubesObj } from '../fixtures/meshes.mjs';
 
 const suite = browserSuite();
 
 const PANELS = 6;
 const params = { panels: PANELS, seed: 1, weights: { euclidean: 1, l2: 1, l21: 1, boundary: 1 }, lloydIterations: 20, panelRounds: 30, seeding: 'farthest', teleport: true, singlePointNodes: false, optimizePlanes: true };
 
-const corners = [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0, 0, 1], [1, 0, 1], [1, 1, 1], [0, 1, 1]];
-const quads = [[0, 3, 2, 1], [4, 5, 6, 7], [0, 1, 5, 4], [2, 3, 7, 6], [1, 2, 6, 5], [0, 4, 7, 3]];
-
-// Two unit cubes sharing the edge x = y = 1 (the second uses the first's vertices 3 and 7).
-function twoCubesObj() {
-  const lines = corners.map(([x, y, z]) => `v ${x} ${y} ${z}`);
-  const second = { 0: 3, 4: 7 };
-  for (let i = 0; i < 8; ++i) {
-    if (i in second) continue;
-    const [x, y, z] = corners[i];
-    lines.push(`v ${x + 1} ${y + 1} ${z}`);
-    second[i] = lines.length;
-  }
-  for (const q of quads) lines.push(`f ${q.map((i) => i + 1).join(' ')}`);
-  for (const q of quads) lines.push(`f ${q.map((i) => second[i]).join(' ')}`);
-  return Buffer.from(lines.join('\n') + '\n');
-}
-
-// One cube without its bottom square: a hole of 4 edges.
-function openBoxObj() {
-  const lines = corners.map(([x, y, z]) => `v ${x} ${y} ${z}`);
-  for (const q of quads.slice(1)) lines.push(`f ${q.map((i) => i + 1).join(' ')}`);
-  return Buffer.from(lines.join('\n') + '\n');
-}
-
 const cleanupNote = (page) => page.locator('#mesh-cleanup').textContent();
-const upload = (page, name, buffer) => page.getByLabel('Open mesh').setInputFiles({ name, mimeType: 'text/plain', buffer });
+const upload = (page, name, bytes) => page.getByLabel('Open mesh').setInputFiles({ name, mimeType: 'text/plain', buffer: Buffer.from(bytes) });
 
 test('a non-manifold upload offers its largest manifold part, which solves, and a link reproduces it', () =>
   suite.withPage(exampleLink(suite.url, 'saddle', params), async (page) => {

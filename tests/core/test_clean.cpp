@@ -10,6 +10,7 @@
 #include "core/mesh/mesh_io.h"
 #include "core/mesh/topology.h"
 #include "core/util/error.h"
+#include "input_error_message.h"
 #include "synthetic_meshes.h"
 #include "test_meshes.h"
 
@@ -21,12 +22,7 @@ using test::signed_volume;
 
 // The message of the InputError clean_mesh throws ("" when it does not throw).
 std::string clean_error(const TriMesh& m, const CleanOptions& options = {}) {
-  try {
-    clean_mesh(m, options);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
+  return test::input_error_message([&] { clean_mesh(m, options); });
 }
 
 bool contains(const std::vector<std::string>& list, const std::string& s) {

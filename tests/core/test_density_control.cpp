@@ -13,6 +13,7 @@
 #include "core/remesher.h"
 #include "core/shapes/shapes.h"
 #include "core/util/error.h"
+#include "input_error_message.h"
 #include "panel_checks.h"
 
 namespace ff {
@@ -259,12 +260,7 @@ TEST(DensityControl, ParamsJsonContract) {
   EXPECT_EQ(remesh_params_from_json(R"j({"anisotropy": {"direction": "none"}})j").anisotropy.active(), false);
   EXPECT_EQ(remesh_params_from_json(R"j({"densityExpression": ""})j").density_expression, "");
   const auto message = [](const std::string& json) {
-    try {
-      remesh_params_from_json(json);
-    } catch (const InputError& e) {
-      return std::string(e.what());
-    }
-    return std::string();
+    return test::input_error_message([&] { remesh_params_from_json(json); });
   };
   EXPECT_NE(message(R"j({"densityExpression": "alert(1)"})j").find("unknown name 'alert' at column 1"),
             std::string::npos);

@@ -15,6 +15,7 @@
 #include "core/remesher.h"
 #include "core/shapes/shapes.h"
 #include "core/util/error.h"
+#include "input_error_message.h"
 
 namespace ff {
 namespace {
@@ -189,12 +190,7 @@ TEST(DirectionExpression, ParamsJsonContract) {
   EXPECT_EQ(q.anisotropy.direction, AnisotropyDirection::Constant);
   EXPECT_EQ(q.anisotropy.expression, "");
   const auto message = [](const std::string& json) {
-    try {
-      remesh_params_from_json(json);
-    } catch (const InputError& e) {
-      return std::string(e.what());
-    }
-    return std::string();
+    return test::input_error_message([&] { remesh_params_from_json(json); });
   };
   EXPECT_NE(message(R"j({"anisotropy": {"direction": "expression", "stretch": 2}})j")
                 .find("'anisotropy.expression' is missing"),

@@ -7,6 +7,7 @@
 
 #include "core/density/expression.h"
 #include "core/util/error.h"
+#include "input_error_message.h"
 
 namespace ff {
 namespace {
@@ -15,12 +16,7 @@ double eval(const std::string& text, ExprInputs in = {}) { return Expression::pa
 
 // The InputError message for `text`, or "" when it parses.
 std::string error_of(const std::string& text) {
-  try {
-    Expression::parse(text);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
+  return test::input_error_message([&] { Expression::parse(text); });
 }
 
 TEST(Expression, ArithmeticAndPrecedence) {

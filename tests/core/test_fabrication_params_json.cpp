@@ -5,17 +5,13 @@
 
 #include "core/fabricate/fabrication_params_json.h"
 #include "core/util/error.h"
+#include "input_error_message.h"
 
 namespace ff {
 namespace {
 
 std::string error_of(const std::string& json) {
-  try {
-    fabrication_settings_from_json(json);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
+  return test::input_error_message([&] { fabrication_settings_from_json(json); });
 }
 
 TEST(FabricationParamsJson, DefaultsAsTheCli) {

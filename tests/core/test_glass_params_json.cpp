@@ -6,6 +6,7 @@
 
 #include "core/remesh_params_json.h"
 #include "core/util/error.h"
+#include "input_error_message.h"
 
 namespace ff {
 namespace {
@@ -21,12 +22,7 @@ TEST(GlassParamsJson, ReadsGlassAndMinimumAngle) {
 
 TEST(GlassParamsJson, RefusesBadValuesByName) {
   auto message = [](const std::string& json) {
-    try {
-      remesh_params_from_json(json);
-    } catch (const InputError& e) {
-      return std::string(e.what());
-    }
-    return std::string("accepted");
+    return test::input_error_message([&] { remesh_params_from_json(json); }, "accepted");
   };
   EXPECT_NE(message(R"({"glass": 1})").find("'glass' must be true or false"), std::string::npos);
   EXPECT_NE(message(R"({"minCornerAngleDeg": 61})").find("'minCornerAngleDeg'"), std::string::npos);

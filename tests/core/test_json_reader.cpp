@@ -7,6 +7,7 @@
 #include "core/remesh_params_json.h"
 #include "core/util/error.h"
 #include "core/util/json_reader.h"
+#include "input_error_message.h"
 
 namespace ff {
 namespace {
@@ -73,12 +74,7 @@ TEST(RemeshParamsJson, MissingFieldsKeepTheBase) {
 
 TEST(RemeshParamsJson, RefusesBadFieldsByName) {
   auto message = [](const std::string& json) {
-    try {
-      remesh_params_from_json(json);
-    } catch (const InputError& e) {
-      return std::string(e.what());
-    }
-    return std::string("accepted");
+    return test::input_error_message([&] { remesh_params_from_json(json); }, "accepted");
   };
   EXPECT_NE(message(R"({"panels": 0})").find("'panels'"), std::string::npos);
   EXPECT_NE(message(R"({"panels": 1.5})").find("whole number"), std::string::npos);

@@ -4,6 +4,7 @@
 
 #include "core/prepare/nurbs_json.h"
 #include "core/util/error.h"
+#include "input_error_message.h"
 
 namespace ff {
 namespace {
@@ -13,12 +14,7 @@ const std::string kPatch =
     R"( "points": [0, 0, 0, 0, 1, 0, 1, 0, 0, 1, 1, 1])";
 
 std::string error_of(const std::string& json) {
-  try {
-    surface_set_from_json(json);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
+  return test::input_error_message([&] { surface_set_from_json(json); });
 }
 
 TEST(NurbsJson, ReadsASurfaceSet) {

@@ -9,6 +9,7 @@
 #include "core/prepare/nurbs_surface.h"
 #include "core/prepare/nurbs_tessellate.h"
 #include "core/util/error.h"
+#include "input_error_message.h"
 
 namespace ff {
 namespace {
@@ -68,12 +69,7 @@ NurbsSurface full_cylinder(double r, double h) {
 }
 
 std::string error_of(const NurbsSurface& s) {
-  try {
-    validate_nurbs(s, "Roof");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
+  return test::input_error_message([&] { validate_nurbs(s, "Roof"); });
 }
 
 TEST(NurbsSurface, BilinearPatchIsExact) {

@@ -13,6 +13,7 @@
 #include "core/mesh/topology.h"
 #include "core/prepare/subdivision.h"
 #include "core/util/error.h"
+#include "input_error_message.h"
 #include "panel_checks.h"
 #include "subdivision_shapes.h"
 #include "test_meshes.h"
@@ -315,14 +316,7 @@ TEST(Subdivision, KeepsTopologyAndOrientation) {
 }
 
 TEST(Subdivision, RefusesWhatItCannotSubdivide) {
-  const auto message_of = [](auto&& call) -> std::string {
-    try {
-      call();
-    } catch (const InputError& e) {
-      return e.what();
-    }
-    return "no error";
-  };
+  const auto message_of = [](auto&& call) { return test::input_error_message(call, "no error"); };
   TriMesh fin = test::octahedron();
   fin.positions.emplace_back(0.5, 0.5, 0.0);
   fin.triangles.push_back({0, 2, 6});  // a third face on edge (0, 2)

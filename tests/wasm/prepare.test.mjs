@@ -3,7 +3,8 @@
 // a mesh fine enough stays exactly as loaded; bad requests come back as messages and leave
 // the loaded mesh as it was. Preparing again (a panel count the mesh cannot serve) starts
 // from the mesh as loaded, so it gives the mesh opening at that count gives; painted values
-// and edited triangles are carried over (transferField, remapFaces).
+// and edited triangles are carried over (transferField, remapFaces), and the mesh they are
+// carried from is dropped once designing on the new mesh begins.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
@@ -184,4 +185,21 @@ test('painted values and edited triangles are carried to the mesh prepared again
   assert.equal(s.transferField(new Float64Array(3)).length, 0);
   assert.equal(s.remapFaces(Int32Array.from([oldIndices.length / 3])).length, 0);
   s.delete();
+});
+
+test('the mesh before is dropped once designing on the prepared mesh begins', () => {
+  for (const begin of [(s) => s.setParams(JSON.stringify({ panels: 1200 })), (s) => s.setDensity(new Float64Array(0)), (s) => s.step()]) {
+    const { s } = loaded();
+    assert.equal(json(s.prepare(150, 0, 0)).ok, true);
+    const before = s.inputPositions().length / 3;
+    const faces = Int32Array.from([0, 1]);
+    const info = json(s.prepare(1200, 0, 0));
+    assert.ok(info.vertices !== before, 'prepared again: another mesh');
+    assert.equal(s.transferField(new Float64Array(before).fill(2)).length, info.vertices, 'carried while it is kept');
+    assert.equal(s.remapFaces(faces).length, faces.length);
+    assert.equal(json(begin(s)).ok, true);
+    assert.equal(s.transferField(new Float64Array(before).fill(2)).length, 0, 'nothing to carry from afterwards');
+    assert.equal(s.remapFaces(faces).length, 0);
+    s.delete();
+  }
 });

@@ -4,35 +4,10 @@
 // enough; bad options are refused and change nothing.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
+import { cubeOff, twoCubesObj } from '../fixtures/meshes.mjs';
 import { json, loadModule, maxPlanarity, parseObj, solve } from './module.mjs';
 
 const ff = await loadModule();
-
-// Two unit cubes sharing the edge x = y = 1 (the second uses the first's vertices 3 and 7).
-function twoCubesObj() {
-  const quads = [[0, 3, 2, 1], [4, 5, 6, 7], [0, 1, 5, 4], [2, 3, 7, 6], [1, 2, 6, 5], [0, 4, 7, 3]];
-  const corners = [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0, 0, 1], [1, 0, 1], [1, 1, 1], [0, 1, 1]];
-  const lines = corners.map(([x, y, z]) => `v ${x} ${y} ${z}`);
-  const second = { 0: 3, 4: 7 };
-  for (let i = 0; i < 8; ++i) {
-    if (i in second) continue;
-    const [x, y, z] = corners[i];
-    lines.push(`v ${x + 1} ${y + 1} ${z}`);
-    second[i] = lines.length;
-  }
-  for (const q of quads) lines.push(`f ${q.map((i) => i + 1).join(' ')}`);
-  for (const q of quads) lines.push(`f ${q.map((i) => second[i]).join(' ')}`);
-  return new TextEncoder().encode(lines.join('\n') + '\n');
-}
-
-// A closed cube as OFF without `open` of its 12 triangles: holes.
-function cubeOff(drop = []) {
-  const corners = [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0, 0, 1], [1, 0, 1], [1, 1, 1], [0, 1, 1]];
-  const quads = [[0, 3, 2, 1], [4, 5, 6, 7], [0, 1, 5, 4], [2, 3, 7, 6], [1, 2, 6, 5], [0, 4, 7, 3]];
-  const tris = quads.flatMap(([a, b, c, d]) => [[a, b, c], [a, c, d]]).filter((_, f) => !drop.includes(f));
-  const text = `OFF\n8 ${tris.length} 0\n${corners.map((p) => p.join(' ')).join('\n')}\n${tris.map((t) => `3 ${t.join(' ')}`).join('\n')}\n`;
-  return new TextEncoder().encode(text);
-}
 
 test('a non-manifold edge is named, with the size of the largest manifold part', () => {
   const s = new ff.Session();

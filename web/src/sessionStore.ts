@@ -6,8 +6,8 @@
 import { findExample } from './examples.ts';
 import { failure, type Checked } from './params.ts';
 import { checkPaintFields, paintEntries } from './paintFields.ts';
-import { checkRepair, repairJson, type MeshRepair } from './meshRepair.ts';
-import { checkFileName, checkParamsAndHistory, checkPrepare, decodePayload, prepareJson, MAX_SHARED_PAINT_BYTES, optionalFabrication, type DesignMesh, type DesignState, type MeshPrepare } from './share.ts';
+import { repairJson, type MeshRepair } from './meshRepair.ts';
+import { checkFileName, checkParamsAndHistory, decodePayload, prepareJson, MAX_SHARED_PAINT_BYTES, optionalFabrication, withMeshOptions, type DesignMesh, type DesignState, type MeshPrepare } from './share.ts';
 
 const DB_NAME = 'flatfacet';
 const DB_VERSION = 2;
@@ -166,12 +166,9 @@ function checkRecord(record: unknown, meshBytes: unknown): Checked<DesignState> 
     if (meshBytes.length !== meshValue.size) return failure(`the mesh ${name.value} in the browser's storage is damaged`);
     mesh = { kind: 'file', name: name.value, bytes: meshBytes };
   }
-  const prepare = checkPrepare(meshValue.prepare, 'in the stored session');
-  if (!prepare.ok) return prepare;
-  if (prepare.value) mesh.prepare = prepare.value;
-  const repair = checkRepair(meshValue.repair, 'in the stored session');
-  if (!repair.ok) return repair;
-  if (repair.value) mesh.repair = repair.value;
+  const options = withMeshOptions(mesh, meshValue, 'in the stored session');
+  if (!options.ok) return options;
+  mesh = options.value;
   const checked = checkParamsAndHistory(record.params, record.history, 'the stored session');
   if (!checked.ok) return checked;
   const fabrication = optionalFabrication(record.fabrication, 'the stored session');

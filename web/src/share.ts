@@ -68,6 +68,16 @@ export function checkPrepare(value: unknown, where: string): Checked<MeshPrepare
   return { ok: true, value: { panels, subdivide, edgeLength } };
 }
 
+// The mesh of a link or the stored session with the preparation and repair its record
+// names (checked; each left out when the record has none).
+export function withMeshOptions(mesh: DesignMesh, meshValue: Record<string, unknown>, where: string): Checked<DesignMesh> {
+  const prepare = checkPrepare(meshValue.prepare, where);
+  if (!prepare.ok) return prepare;
+  const repair = checkRepair(meshValue.repair, where);
+  if (!repair.ok) return repair;
+  return { ok: true, value: { ...mesh, ...(prepare.value ? { prepare: prepare.value } : {}), ...(repair.value ? { repair: repair.value } : {}) } };
+}
+
 // The preparation as JSON, keys in one order (links and the stored session compare as text).
 export function prepareJson(mesh: DesignMesh): { prepare?: MeshPrepare } {
   const p = mesh.prepare;
@@ -241,12 +251,9 @@ export function decodePayload(payload: Uint8Array, limits: DecodeLimits): Checke
   } else {
     return failure('the link names no mesh');
   }
-  const prepare = checkPrepare(meshValue.prepare, 'in the link');
-  if (!prepare.ok) return prepare;
-  if (prepare.value) mesh.prepare = prepare.value;
-  const repair = checkRepair(meshValue.repair, 'in the link');
-  if (!repair.ok) return repair;
-  if (repair.value) mesh.repair = repair.value;
+  const options = withMeshOptions(mesh, meshValue, 'in the link');
+  if (!options.ok) return options;
+  mesh = options.value;
   const checked = checkParamsAndHistory(parsed.params, parsed.history, 'the link');
   if (!checked.ok) return checked;
   const fabrication = optionalFabrication(parsed.fabrication, 'the link');
