@@ -156,6 +156,7 @@ class Remesher {
   void optimize_planes();
   void finish_panels();
   void mend_best();  // last fixes on the best attempt when it is still invalid
+  void keep_alternate(std::unique_ptr<PanelAttempt> attempt);
   void cut_glass();  // glass mode, last: the pieces of concave panels (glass_split.h)
 
   // Edits (remesher_edits.cpp). A held cluster keeps exactly these faces, and this plane (a
@@ -206,6 +207,7 @@ class Remesher {
   Progress progress_;
   std::vector<Vec3> local_positions_;   // mesh vertices in the frame of faces_
   std::unique_ptr<PanelAttempt> best_;  // the attempt with the fewest invalid panels so far
+  std::vector<std::unique_ptr<PanelAttempt>> alternates_;  // close runners-up (keep_alternate)
   ClusterMomentsCache moments_;         // the panel phase's cluster moments (faces_ and clustering_)
   PanelMesh panels_;
   int panel_rounds_done_ = 0;

@@ -6,6 +6,7 @@
 #include <algorithm>
 
 #include "core/panels/panel_layout.h"
+#include "core/panels/vertex_rule.h"
 
 namespace ff {
 
@@ -22,6 +23,33 @@ Vec3 least_squares_point(const std::vector<Plane>& planes, const std::vector<int
     b += p.offset * p.normal;
   }
   return A.ldlt().solve(b);
+}
+
+// The plane nearest `plane` through every point (at most three; an empty list: false),
+// oriented like it; false when the points do not pin it down well (two nearly equal points,
+// three nearly on a line, the plane's own normal along the line) or it would turn by more
+// than about 20 degrees. `length`: the scale below which points count as the same.
+bool through_points(const Plane& plane, const std::vector<Vec3>& points, double length, Plane& out) {
+  constexpr double kMinCosine = 0.94;  // about 20 degrees
+  if (points.empty() || points.size() > 3) return false;
+  Vec3 normal = plane.normal;
+  if (points.size() >= 2) {
+    const Vec3 u = points[1] - points[0];
+    if (!(u.norm() > 1e-6 * length)) return false;
+    if (points.size() == 2) {
+      normal -= normal.dot(u.normalized()) * u.normalized();
+    } else {
+      normal = u.cross(points[2] - points[0]);
+      // Nearly on a line: the plane would turn on noise.
+      if (!(normal.norm() > 1e-3 * u.norm() * (points[2] - points[0]).norm())) return false;
+      if (normal.dot(plane.normal) < 0.0) normal = -normal;
+    }
+  }
+  if (!(normal.norm() > 1e-6)) return false;
+  normal.normalize();
+  if (!(normal.dot(plane.normal) >= kMinCosine)) return false;
+  out = Plane::through(points[0], normal);
+  return true;
 }
 
 }  // namespace
@@ -165,7 +193,7 @@ bool PanelLayout::tilt_spike_planes(const std::vector<char>& fixed_masters, cons
 }
 
 int PanelLayout::single_point_fix(const std::vector<char>& fixed_masters) {
-  // Interior groups of four or more distinct planes at the corners of invalid panels.
+  // Interior groups of four or more clusters at the corners of invalid panels.
   std::vector<int> candidates;
   for (size_t c = 0; c < polygons_.size(); ++c) {
     if (issues_[c].valid()) continue;
@@ -175,9 +203,15 @@ int PanelLayout::single_point_fix(const std::vector<char>& fixed_masters) {
   }
   std::sort(candidates.begin(), candidates.end());
   candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
-  // Masters already pinned through the point of a single group cannot move freely.
-  std::vector<char> pinned(planes_.planes.size(), 0);
-  for (int m : single_point_masters()) pinned[static_cast<size_t>(m)] = 1;
+  // Per master: the points of single groups its plane must keep passing through. A panel
+  // whose corners are several such groups (a short panel between three 4-plane groups) needs
+  // its plane through all of them: through a second point it turns about the line from the
+  // first, through a third it is the plane of the three (through_points()).
+  std::vector<std::vector<Vec3>> through(planes_.planes.size());
+  for (size_t g = 0; g < single_.size(); ++g) {
+    if (!single_[g]) continue;
+    for (int m : distinct_masters(static_cast<int>(g))) through[static_cast<size_t>(m)].push_back(single_point_[g]);
+  }
   // A panel may need several of its groups made single: each is kept while it adds no
   // invalid panel, and all of them go back when together they mend none.
   const int start = num_invalid();
@@ -187,31 +221,48 @@ int PanelLayout::single_point_fix(const std::vector<char>& fixed_masters) {
   for (int g : candidates) {
     const NodeGroup& group = groups_.groups[static_cast<size_t>(g)];
     if (group.on_boundary || single_[static_cast<size_t>(g)] || held_group_[static_cast<size_t>(g)]) continue;
-    std::vector<int> masters;
-    for (int c : clusters_of_group(g)) {
-      const int m = planes_.master_of[static_cast<size_t>(c)];
-      if (std::find(masters.begin(), masters.end(), m) == masters.end()) masters.push_back(m);
-    }
-    if (masters.size() < 4) continue;
+    const std::vector<int> masters = distinct_masters(g);
+    // Three distinct planes at a group of four or more clusters (two of them share a master):
+    // the planes already meet in one point, while the group's nodes on only two of them run
+    // along their line. That point, when near, is the group's vertex, no plane moving.
+    const bool three = masters.size() == 3 && clusters_of_group(g).size() >= 4;
+    if (masters.size() < 4 && !three) continue;
     // Still next to an invalid panel (an earlier fix may have mended it).
     bool needed = false;
     for (int c : clusters_of_group(g)) needed = needed || !issues_[static_cast<size_t>(c)].valid();
     if (!needed) continue;
-    // The point: least squares on the planes that may move, held to the reference by a
-    // small weight; on the one fixed plane if there is one (two or more: no point).
+    // The point: least squares on the planes, held to the reference by a small weight; on
+    // the one fixed plane if there is one (two or more: no point).
     std::vector<int> fixed, free;
-    bool blocked = false;
     for (int m : masters) {
-      blocked = blocked || pinned[static_cast<size_t>(m)];
       const bool keep = static_cast<size_t>(m) < fixed_masters.size() && fixed_masters[static_cast<size_t>(m)];
       (keep ? fixed : free).push_back(m);
     }
-    if (blocked || fixed.size() > 1) continue;
     Vec3 x = least_squares_point(planes_.planes, masters, group.reference);
-    if (!fixed.empty()) x = planes_.planes[static_cast<size_t>(fixed[0])].project(x);
+    if (three) {
+      std::vector<Plane> meeting;
+      for (int m : masters) meeting.push_back(planes_.planes[static_cast<size_t>(m)]);
+      const VertexRuleResult r = closest_point_on_planes(meeting, group.reference);
+      if (!r.exact) continue;
+      x = r.point;
+      free.clear();
+    } else {
+      if (fixed.size() > 1) continue;
+      if (!fixed.empty()) x = planes_.planes[static_cast<size_t>(fixed[0])].project(x);
+    }
     if (!x.allFinite() || !((x - group.reference).norm() <= options_.spike_distance)) continue;
     const std::vector<Plane> old = planes_.planes;
-    for (int m : free) planes_.planes[static_cast<size_t>(m)] = Plane::through(x, planes_.planes[static_cast<size_t>(m)].normal);
+    bool moved = true;
+    for (int m : free) {
+      std::vector<Vec3> points = through[static_cast<size_t>(m)];
+      points.push_back(x);
+      Plane& plane = planes_.planes[static_cast<size_t>(m)];
+      moved = moved && through_points(plane, points, options_.diameter, plane);
+    }
+    if (!moved) {
+      planes_.planes = old;
+      continue;
+    }
     const int before = num_invalid();
     single_[static_cast<size_t>(g)] = 1;
     single_point_[static_cast<size_t>(g)] = x;
@@ -219,14 +270,14 @@ int PanelLayout::single_point_fix(const std::vector<char>& fixed_masters) {
     place_group_nodes(g);
     rebuild(clusters_of_group(g));
     if (num_invalid() <= before) {
-      for (int m : masters) pinned[static_cast<size_t>(m)] = 1;
+      for (int m : masters) through[static_cast<size_t>(m)].push_back(x);
       ++made;
       continue;
     }
-    const std::vector<Plane> moved = planes_.planes;
+    const std::vector<Plane> changed = planes_.planes;
     planes_.planes = old;
     single_[static_cast<size_t>(g)] = 0;
-    rebuild_changed(moved);
+    rebuild_changed(changed);
     place_group_nodes(g);
     rebuild(clusters_of_group(g));
   }
@@ -237,6 +288,15 @@ int PanelLayout::single_point_fix(const std::vector<char>& fixed_masters) {
     return 0;
   }
   return made;
+}
+
+std::vector<int> PanelLayout::distinct_masters(int group) const {
+  std::vector<int> masters;
+  for (int c : clusters_of_group(group)) {
+    const int m = planes_.master_of[static_cast<size_t>(c)];
+    if (std::find(masters.begin(), masters.end(), m) == masters.end()) masters.push_back(m);
+  }
+  return masters;
 }
 
 std::vector<int> PanelLayout::single_point_masters() const {

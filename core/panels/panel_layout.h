@@ -124,6 +124,7 @@ class PanelLayout {
   void rebuild_all();
   void rebuild_changed(const std::vector<Plane>& old);  // after planes_ changed from `old`
   std::vector<int> clusters_of_group(int group) const;
+  std::vector<int> distinct_masters(int group) const;  // the masters of its clusters, in their order
   std::vector<int> masters_of_node(size_t node) const;
   // A node's distinct master planes, sorted (at most three: one per cluster of its triangle).
   struct NodeMasters {
