@@ -12,8 +12,7 @@ constexpr double kPi = 3.14159265358979323846;
 }
 
 PanelIssues check_panel(const std::vector<Vec3>& points, const std::vector<Vec3>& references, const Plane& plane,
-                        double spike_distance, double tolerance, double min_corner_angle_deg, bool glass,
-                        double min_flap_width) {
+                        double spike_distance, double tolerance, double min_corner_angle_deg, bool glass) {
   PanelIssues issues;
   for (size_t i = 0; i < points.size(); ++i) {
     if (!((points[i] - references[i]).norm() <= spike_distance)) issues.spike_vertices += 1;  // NaN too
@@ -37,25 +36,7 @@ PanelIssues check_panel(const std::vector<Vec3>& points, const std::vector<Vec3>
     const bool split = glass && !issues.not_simple && area > 0.0;
     issues.acute_corner = !acute_corners_after_split(polygon, min_corner_angle_deg, split).empty();
   }
-  if (min_flap_width > 0.0) issues.thin_flap = !fold_back_corners(polygon, min_flap_width, tolerance).empty();
   return issues;
-}
-
-std::vector<int> fold_back_corners(const std::vector<Vec2>& polygon, double min_width, double tolerance) {
-  std::vector<int> out;
-  const size_t n = polygon.size();
-  if (n < 3) return out;
-  for (size_t i = 0; i < n; ++i) {
-    const Vec2 a = polygon[(i + n - 1) % n] - polygon[i];
-    const Vec2 b = polygon[(i + 1) % n] - polygon[i];
-    const double la = a.norm(), lb = b.norm();
-    if (!(la > tolerance && lb > tolerance)) continue;  // zero or NaN edges: other checks
-    if (!(a.dot(b) > 0.0)) continue;                    // the edges open 90 degrees or more
-    // |a x b| / longer = shorter * |sin|: how far the shorter edge's end is from the other.
-    const double width = std::abs(a.x() * b.y() - a.y() * b.x()) / std::max(la, lb);
-    if (width < min_width) out.push_back(static_cast<int>(i));
-  }
-  return out;
 }
 
 double corner_angle_deg(const Vec2& prev, const Vec2& at, const Vec2& next) {

@@ -5,8 +5,7 @@
 // distance from the mesh vertex it stands for; with a minimum corner angle (degrees, 0 =
 // off), no convex corner below it (reflex corners are split in glass mode, so only corners
 // under 180 degrees are judged); in glass mode, the corners of its convex pieces
-// (glass_split.h), simple counter-clockwise panels only. With a flap width (> 0), no
-// corner where the two edges fold back on each other (fold_back_corners).
+// (glass_split.h), simple counter-clockwise panels only.
 #include <vector>
 
 #include "core/panels/panel_mesh.h"
@@ -17,19 +16,8 @@ namespace ff {
 
 // points: the panel's vertices (on `plane`); references[i]: where points[i] belongs (its
 // mesh corner). tolerance: lengths below it count as zero (edges, kernel width).
-// min_flap_width: fold-back corners narrower than this make the panel a `thin_flap` (0: off).
 PanelIssues check_panel(const std::vector<Vec3>& points, const std::vector<Vec3>& references, const Plane& plane,
-                        double spike_distance, double tolerance, double min_corner_angle_deg = 0.0, bool glass = false,
-                        double min_flap_width = 0.0);
-
-// Corners where the outline folds back on itself into a flap no one can cut (issue 3: two
-// near-identical planes let their node slide along their line, and a third panel runs out
-// and back along it): the two edges make an angle under 90 degrees on either side (interior
-// angle below 90 or above 270), and the far end of the shorter edge lies within min_width
-// of the longer edge's line (width = shorter length * |sin(angle)|). The star test at an
-// absolute 1e-9 passes such a flap (about 1e-6 D wide on Yas Island). Edges shorter than
-// `tolerance` are left to the other checks. Indices into the polygon, ascending.
-std::vector<int> fold_back_corners(const std::vector<Vec2>& polygon, double min_width, double tolerance);
+                        double spike_distance, double tolerance, double min_corner_angle_deg = 0.0, bool glass = false);
 
 // Indices of the corners whose interior angle (counter-clockwise polygon) is below min_deg.
 std::vector<int> acute_corners(const std::vector<Vec2>& ccw_polygon, double min_deg);

@@ -326,7 +326,7 @@ void PanelLayout::build_panel(int c) {
   int inexact = 0;
   for (int node : poly.node) inexact += node >= 0 && !node_exact_[static_cast<size_t>(node)] ? 1 : 0;
   issues = check_panel(poly.points, poly.reference, plane, options_.spike_distance, options_.tolerance,
-                       options_.min_corner_angle_deg, options_.glass, options_.flap_width * options_.diameter);
+                       options_.min_corner_angle_deg, options_.glass);
   if (!node_limit_.empty()) {  // vertices of locked panels have their own limit
     issues.spike_vertices = 0;
     for (size_t i = 0; i < poly.points.size(); ++i)
@@ -360,15 +360,6 @@ std::vector<int> PanelLayout::problem_corners(int c) const {
   for (size_t i = 0; i < poly.points.size(); ++i) {
     const bool spike = !((poly.points[i] - poly.reference[i]).norm() <= spike_limit(poly, i, c));
     if (spike || issues.flipped || issues.not_star || issues.not_simple) out.push_back(poly.corner[i]);
-  }
-  // A thin flap only: split next to the fold-back corners.
-  if (out.empty() && issues.thin_flap) {
-    const Plane& plane = planes_.plane_of(c);
-    const PlaneFrame frame = make_plane_frame(plane.offset * plane.normal, plane.normal);
-    std::vector<Vec2> polygon;
-    for (const Vec3& p : poly.points) polygon.push_back(frame.to_2d(p));
-    for (int i : fold_back_corners(polygon, options_.flap_width * options_.diameter, options_.tolerance))
-      out.push_back(poly.corner[static_cast<size_t>(i)]);
   }
   // An acute corner only (the panel otherwise fine): split next to that corner.
   if (out.empty() && issues.acute_corner) {

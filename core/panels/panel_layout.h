@@ -28,12 +28,6 @@ struct LayoutOptions {
   double tolerance = 1e-9;            // lengths below this count as zero in the panel checks
   double min_corner_angle_deg = 0.0;  // a convex corner below this is a problem; 0 = off
   bool glass = false;                 // judge the corners of the convex pieces (glass_split.h)
-  // A corner whose edges fold back within this * D of each other is a thin flap (invalid,
-  // panel_check.h fold_back_corners): 1e-5 D is 10 micrometres on a 1 m panel, far below
-  // any corner a designer means and far above rounding (about 1e-13 D); the Yas Island
-  // flap of issue 3 is about 1e-6 D. 1e-4 D also caught it but made barrel_vault at 400
-  // end with 2 flipped panels (the mending took another path). 0 = off.
-  double flap_width = 1e-5;
   // Cluster triples (sorted, kBoundary first) that must be nodes where a group can have them:
   // the corners of locked panels (remesher_edits.cpp), so their outlines stay. A group with
   // any keeps the pairing that has them all (none: as usual) and is never switched.

@@ -18,11 +18,10 @@ struct PanelIssues {
   bool too_few_vertices = false;  // fewer than 3 vertices
   bool not_disk = false;          // its cluster has a hole, is enclosed, pinches or touches a neighbour twice
   bool acute_corner = false;      // a corner below the designer's minimum angle (glass mode, DESIGN.md 3)
-  bool thin_flap = false;         // two edges fold back on each other, thinner than a cut can be (panel_check.h)
 
   bool valid() const {
     return !not_simple && !flipped && !not_star && spike_vertices == 0 && !too_few_vertices && !not_disk &&
-           !acute_corner && !thin_flap;
+           !acute_corner;
   }
 };
 

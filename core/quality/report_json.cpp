@@ -22,7 +22,6 @@ std::vector<std::string> panel_problems(const PanelIssues& issues) {
   if (issues.too_few_vertices) problems.push_back("too_few_vertices");
   if (issues.not_disk) problems.push_back("not_disk");
   if (issues.acute_corner) problems.push_back("acute_corner");
-  if (issues.thin_flap) problems.push_back("thin_flap");
   return problems;
 }
 

@@ -145,51 +145,5 @@ TEST(PanelCheck, DegenerateSliverIsNotValid) {
   }
 }
 
-// Issue 3 (Yas Island at 150 panels): a panel runs 1.5 along one line, turns back by 0.0006
-// degrees and runs 0.085 back along a second line: a flap about 1e-6 wide, which the
-// star test at 1e-9 passes. With a flap width it is a thin_flap; without one (and for
-// ordinary sharp corners) nothing changes.
-const Outline kYasFlap = {{0, 0}, {-0.0045384, -1.5541499}, {-0.0042892, -1.4691351}, {1.5798059, -1.4324854},
-                          {1.2368698, -0.2861510}, {0.3620550, 1.2137633}};
-
-TEST(PanelCheck, FoldBackFlapIsAThinFlap) {
-  for (bool tilted : {false, true}) {
-    SCOPED_TRACE(tilted ? "tilted plane" : "z = 0");
-    const Placed p = place(kYasFlap, tilted);
-    const PanelIssues loose = check_panel(p.points, p.points, p.plane, 10.0, 1e-9);
-    EXPECT_TRUE(loose.valid()) << "the old checks pass the flap (else this test shows nothing)";
-    const PanelIssues strict = check_panel(p.points, p.points, p.plane, 10.0, 1e-9, 0.0, false, 1e-4);
-    EXPECT_TRUE(strict.thin_flap);
-    EXPECT_FALSE(strict.valid());
-  }
-  std::vector<Vec2> polygon;
-  for (const auto& [x, y] : kYasFlap) polygon.emplace_back(x, y);
-  EXPECT_EQ(fold_back_corners(polygon, 1e-4, 1e-9), std::vector<int>{1});
-  // The flap is about 9.4e-7 wide: a width below that does not call it thin.
-  EXPECT_TRUE(fold_back_corners(polygon, 5e-7, 1e-9).empty());
-  EXPECT_EQ(fold_back_corners(polygon, 2e-6, 1e-9), std::vector<int>{1});
-}
-
-TEST(PanelCheck, SharpCornersAreNotFlapsButNeedleNotchesAre) {
-  for (bool tilted : {false, true}) {
-    SCOPED_TRACE(tilted ? "tilted plane" : "z = 0");
-    // A 3 degree sliver triangle: sharp, but its narrow end is 0.05 wide at length 1.
-    const Outline sliver = {{0, 0}, {1, 0}, {0.9986, 0.0523}};
-    // A square, an L-shape, collinear border vertices: no fold-back at all.
-    for (const Outline& o : {kSquare, kLShape, sliver, Outline{{0, 0}, {0.5, 0}, {1, 0}, {1, 1}, {0, 1}}}) {
-      const Placed p = place(o, tilted);
-      EXPECT_FALSE(check_panel(p.points, p.points, p.plane, 10.0, 1e-9, 0.0, false, 1e-4).thin_flap);
-    }
-    // The same sliver scaled down to 1e-5: thinner than 1e-4, so a flap no one can cut.
-    Outline tiny = sliver;
-    for (auto& [x, y] : tiny) x *= 1e-3, y *= 1e-3;
-    const Placed p = place(tiny, tilted);
-    EXPECT_TRUE(check_panel(p.points, p.points, p.plane, 10.0, 1e-9, 0.0, false, 1e-4).thin_flap);
-  }
-  // A reflex corner folding back (interior angle near 360): a needle notch into the panel.
-  const std::vector<Vec2> notch = {{0, 0}, {2, 0}, {2, 2}, {1 + 1e-7, 2}, {1, 0.5}, {1, 2}, {0, 2}};
-  EXPECT_EQ(fold_back_corners(notch, 1e-4, 1e-9), std::vector<int>{4});
-}
-
 }  // namespace
 }  // namespace ff
