@@ -33,6 +33,16 @@ const char* stage_name(Stage stage) {
 
 namespace {
 constexpr int kMaxIterations = 100000;
+// Panel rounds without a new fewest-invalid count before the panel phase gives up (k2 bounds
+// it). The count jumps about from round to round, and progress comes late: on cow.off the
+// fewest went 7 -> 6 after 45 rounds at 61 panels (valid at round 65) and 4 -> 3 after 36 at
+// 78 (valid at round 96).
+constexpr int kPanelPatience = 50;
+// Split requests carried out per panel round, at most: each split merges a pair elsewhere and
+// refloods both places, so many at once unsettle more panels than they fix (cow.off at 46-78
+// panels asks 5-16 per round and its invalid count jumps around 20-40 for 100 rounds; with 3
+// it goes down). Which 3 rotates with the round, so no request is dropped every round.
+constexpr size_t kMaxSplitsPerRound = 3;
 }
 
 Remesher::Remesher(TriMesh mesh, RemeshParams params)
@@ -69,6 +79,7 @@ void Remesher::start_lloyd() {
   settled_planes_.clear();
   panel_rounds_done_ = 0;
   stalled_rounds_ = 0;
+  best_round_ = 0;
   progress_ = Progress{Stage::Lloyd, 0, params_.lloyd_iterations, clustering_.energy * faces_.area_to_world(), 0};
   if (params_.lloyd_iterations == 0) after_lloyd();
 }
@@ -117,9 +128,13 @@ void Remesher::panel_round() {
   ++panel_rounds_done_;
   progress_.iteration = panel_rounds_done_;
   progress_.invalid_panels = invalid;
-  const bool last = invalid == 0 || panel_rounds_done_ >= std::max(1, params_.panel_rounds);
   const bool improved = !best_ || invalid < best_->num_invalid();
   stalled_rounds_ = improved ? 0 : stalled_rounds_ + 1;
+  if (improved) best_round_ = panel_rounds_done_;
+  // k2 is the hard limit; before it, a run whose fewest invalid panels has not gone down for
+  // kPanelPatience rounds stops: inputs that cannot get better end early.
+  const bool last = invalid == 0 || panel_rounds_done_ >= std::max(1, params_.panel_rounds) ||
+                    panel_rounds_done_ - best_round_ >= kPanelPatience;
   if (last) {
     if (!best_ || invalid <= best_->num_invalid()) std::swap(best_, attempt);
     keep_alternate(std::move(attempt));
@@ -166,6 +181,11 @@ void Remesher::fix_panels(const PanelAttempt& attempt) {
   std::vector<std::pair<int, int>> requests = split_requests(mesh_, topology_, attempt, splits, held);
   requests.erase(std::remove_if(requests.begin(), requests.end(), [&](const auto& r) { return is_held(r.first); }),
                  requests.end());
+  if (requests.size() > kMaxSplitsPerRound) {
+    const size_t first = static_cast<size_t>(panel_rounds_done_) % requests.size();
+    std::rotate(requests.begin(), requests.begin() + static_cast<std::ptrdiff_t>(first), requests.end());
+    requests.resize(kMaxSplitsPerRound);
+  }
   // Merges happen away from the splits; a settled pair may merge (then it is unsettled below).
   const std::vector<int> seeds_before = clustering_.seeds;
   const std::vector<Proxy> proxies_before = clustering_.proxies;

@@ -59,7 +59,9 @@ struct RemeshParams {
   int teleport_interval = 4;  // teleport before every 4th iteration; 0 = never
   int teleport_moves = 0;     // moves per teleport; 0 = automatic (1 per 64 clusters, >= 1)
   bool make_panels = true;    // false: stop after the Lloyd phase (`flatfacet cluster`)
-  int panel_rounds = 30;      // k2: an upper bound; stops at the first valid panel mesh
+  // k2: an upper bound; stops at the first valid panel mesh, or after 50 rounds in which the
+  // fewest invalid panels did not go down.
+  int panel_rounds = 100;
   // Where four or more planes meet: false (default) splits the node into valence-3 nodes
   // joined by short edges; true makes all of them pass through one point (paper 2.2).
   bool single_point_nodes = false;
@@ -212,6 +214,7 @@ class Remesher {
   PanelMesh panels_;
   int panel_rounds_done_ = 0;
   int stalled_rounds_ = 0;  // panel rounds since the fewest invalid panels went down
+  int best_round_ = 0;      // the panel round that last lowered the fewest invalid panels
   // Per cluster: valid among valid panels in the last round, so it keeps its faces and plane.
   std::vector<char> settled_;
   std::vector<Plane> settled_planes_;  // per cluster: its plane in the last round
