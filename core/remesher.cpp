@@ -43,7 +43,7 @@ constexpr int kPanelPatience = 50;
 // panels asks 5-16 per round and its invalid count jumps around 20-40 for 100 rounds; with 3
 // it goes down). Which 3 rotates with the round, so no request is dropped every round.
 constexpr size_t kMaxSplitsPerRound = 3;
-}
+}  // namespace
 
 Remesher::Remesher(TriMesh mesh, RemeshParams params)
     : mesh_(std::move(mesh)),
