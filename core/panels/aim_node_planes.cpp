@@ -102,14 +102,31 @@ int PanelLayout::aim_node_planes(const std::vector<char>& fixed_masters, double 
       if (off < half && along.norm() > std::sqrt(half * half - off * off))
         targets.push_back(line.point + along.normalized() * std::sqrt(half * half - off * off));
       targets.push_back(line.point);
+      // Pivots: the plane's centre, or a node on it that is close to being a spike itself
+      // (kept in place, so the turn does not push it over).
+      master_reach(m, groups, clusters);
+      std::vector<std::pair<double, int>> close;
+      for (int c : clusters) {
+        if (planes_.master_of[static_cast<size_t>(c)] != m) continue;
+        for (int other : polygons_[static_cast<size_t>(c)].node) {
+          if (other < 0 || static_cast<size_t>(other) == node) continue;
+          const double d = (node_point_[static_cast<size_t>(other)] -
+                            groups_.groups[static_cast<size_t>(node_group_[static_cast<size_t>(other)])].reference)
+                               .norm();
+          if (d > 0.5 * options_.spike_distance) close.emplace_back(-d, other);
+        }
+      }
+      std::sort(close.begin(), close.end());
+      close.erase(std::unique(close.begin(), close.end()), close.end());
+      std::vector<Vec3> pivots{planes_.centers[static_cast<size_t>(m)]};
+      for (size_t k = 0; k < close.size() && k < 3; ++k) pivots.push_back(node_point_[static_cast<size_t>(close[k].second)]);
       bool done = false;
-      for (const Vec3& target : targets) {
+      for (size_t k = 0; k < pivots.size() * targets.size() && !done; ++k) {
+        const Vec3& target = targets[k % targets.size()];
         const Plane old = planes_.planes[static_cast<size_t>(m)];
         Plane turned;
-        if (!turned_through(old, planes_.centers[static_cast<size_t>(m)], target, options_.diameter, max_turn_deg,
-                            turned))
+        if (!turned_through(old, pivots[k / targets.size()], target, options_.diameter, max_turn_deg, turned))
           continue;
-        master_reach(m, groups, clusters);
         int before = 0;
         for (int c : clusters) before += issues_[static_cast<size_t>(c)].valid() ? 0 : 1;
         planes_.planes[static_cast<size_t>(m)] = turned;
@@ -119,7 +136,7 @@ int PanelLayout::aim_node_planes(const std::vector<char>& fixed_masters, double 
         for (int c : clusters) after += issues_[static_cast<size_t>(c)].valid() ? 0 : 1;
         if (after < before) {
           done = true;
-          break;
+          continue;
         }
         planes_.planes[static_cast<size_t>(m)] = old;
         for (int g : groups) place_group_nodes(g);
