@@ -67,7 +67,8 @@ int PanelLayout::aim_node_planes(const std::vector<char>& fixed_masters, double 
       if (node < 0 || node_planes_[static_cast<size_t>(node)] != 3) continue;
       const int g = node_group_[static_cast<size_t>(node)];
       if (single_[static_cast<size_t>(g)] || held_group_[static_cast<size_t>(g)]) continue;
-      const double far = (node_point_[static_cast<size_t>(node)] - groups_.groups[static_cast<size_t>(g)].reference).norm();
+      const double far =
+          (node_point_[static_cast<size_t>(node)] - groups_.groups[static_cast<size_t>(g)].reference).norm();
       nodes.emplace_back(-far, node);
     }
   }
@@ -82,7 +83,8 @@ int PanelLayout::aim_node_planes(const std::vector<char>& fixed_masters, double 
     if (masters.count != 3) continue;
     // Still next to an invalid panel (an earlier turn may have mended it).
     bool needed = false;
-    for (int c : node_clusters(static_cast<int>(node))) needed = needed || (c != kBoundary && !issues_[static_cast<size_t>(c)].valid());
+    for (int c : node_clusters(static_cast<int>(node)))
+      needed = needed || (c != kBoundary && !issues_[static_cast<size_t>(c)].valid());
     if (!needed) continue;
     const Vec3& reference = groups_.groups[static_cast<size_t>(node_group_[node])].reference;
     for (int i = 0; i < 3; ++i) {
@@ -119,14 +121,14 @@ int PanelLayout::aim_node_planes(const std::vector<char>& fixed_masters, double 
       std::sort(close.begin(), close.end());
       close.erase(std::unique(close.begin(), close.end()), close.end());
       std::vector<Vec3> pivots{planes_.centers[static_cast<size_t>(m)]};
-      for (size_t k = 0; k < close.size() && k < 3; ++k) pivots.push_back(node_point_[static_cast<size_t>(close[k].second)]);
+      for (size_t k = 0; k < close.size() && k < 3; ++k)
+        pivots.push_back(node_point_[static_cast<size_t>(close[k].second)]);
       bool done = false;
       for (size_t k = 0; k < pivots.size() * targets.size() && !done; ++k) {
         const Vec3& target = targets[k % targets.size()];
         const Plane old = planes_.planes[static_cast<size_t>(m)];
         Plane turned;
-        if (!turned_through(old, pivots[k / targets.size()], target, options_.diameter, max_turn_deg, turned))
-          continue;
+        if (!turned_through(old, pivots[k / targets.size()], target, options_.diameter, max_turn_deg, turned)) continue;
         int before = 0;
         for (int c : clusters) before += issues_[static_cast<size_t>(c)].valid() ? 0 : 1;
         planes_.planes[static_cast<size_t>(m)] = turned;
