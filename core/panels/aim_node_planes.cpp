@@ -5,8 +5,10 @@
 // distance or swaps order with its neighbours (a flipped edge). tilt_spike_planes() turns
 // every spike's planes at once and relax_planes() pulls all nodes in one least squares;
 // both are kept only when the whole layout improves, and at such nodes they often are not.
-// Here one node and one of its planes at a time: the plane turns about its centre just
-// enough that the node lands where the other two planes' line passes nearest its corner.
+// Here one node and one of its planes at a time: the plane turns about its centre (or, when
+// that fails, about a near-spike node on it, which then stays put) just enough that the node
+// comes within half the spike distance of its corner along the other two planes' line, or
+// onto that line's point nearest the corner.
 // Near-parallel planes make that a small turn, so the plane's other nodes barely move; each
 // turn is kept only when fewer panels around it are invalid. Kept apart from
 // panel_fixes.cpp like single_point_nodes.cpp.

@@ -85,8 +85,9 @@ class PanelLayout {
   // fewer panels are invalid. Returns the number of groups made single.
   int single_point_fix(const std::vector<char>& fixed_masters = {});
   // At the nodes of invalid panels on three distinct planes (farthest from their corner
-  // first): turns one of the node's planes about its centre (by at most max_turn_deg) so the
-  // node lands where the other two planes' line passes nearest its corner; each turn kept
+  // first): turns one of the node's planes (by at most max_turn_deg, about its centre or else
+  // about a near-spike node on it, which stays) so the node comes to within half the spike
+  // distance of its corner, or onto the other two planes' line nearest it; each turn kept
   // only when fewer panels around the plane are invalid (aim_node_planes.cpp). fixed_masters
   // (per master, empty for none) and single-point masters stay. Returns the turns kept.
   int aim_node_planes(const std::vector<char>& fixed_masters = {}, double max_turn_deg = 5.0);
