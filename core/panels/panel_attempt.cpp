@@ -232,6 +232,10 @@ void PanelAttempt::mend(const FaceData& faces, const std::vector<char>& held, co
     layout.set_planes(best);
     if (layout.num_invalid() > 0) layout.switch_pairings();
   }
+  // Nodes whose planes nearly share a line: one plane at a time aimed at the node.
+  for (int t = 0; t < 2 && layout.num_invalid() > 0; ++t) {
+    if (layout.aim_node_planes(fixed_masters) == 0) break;
+  }
   layout.single_point_fix(fixed_masters);
 }
 

@@ -84,6 +84,13 @@ class PanelLayout {
   // group and makes the group one vertex, as make_single_point_nodes() does. Kept only when
   // fewer panels are invalid. Returns the number of groups made single.
   int single_point_fix(const std::vector<char>& fixed_masters = {});
+  // At the nodes of invalid panels on three distinct planes (farthest from their corner
+  // first): turns one of the node's planes (by at most max_turn_deg, about its centre or else
+  // about a near-spike node on it, which stays) so the node comes to within half the spike
+  // distance of its corner, or onto the other two planes' line nearest it; each turn kept
+  // only when fewer panels around the plane are invalid (aim_node_planes.cpp). fixed_masters
+  // (per master, empty for none) and single-point masters stay. Returns the turns kept.
+  int aim_node_planes(const std::vector<char>& fixed_masters = {}, double max_turn_deg = 5.0);
   // The masters whose planes pass through the point of a single-point group, sorted.
   std::vector<int> single_point_masters() const;
   // Replaces the plane of each master with `candidates[m]`, one at a time, keeping each
@@ -126,6 +133,8 @@ class PanelLayout {
   std::vector<int> clusters_of_group(int group) const;
   std::vector<int> distinct_masters(int group) const;  // the masters of its clusters, in their order
   std::vector<int> masters_of_node(size_t node) const;
+  // The groups a master's plane places and the panels they (and its own) build, sorted.
+  void master_reach(int master, std::vector<int>& groups, std::vector<int>& clusters) const;
   // A node's distinct master planes, sorted (at most three: one per cluster of its triangle).
   struct NodeMasters {
     int m[3] = {-1, -1, -1};
