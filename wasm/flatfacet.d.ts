@@ -48,7 +48,7 @@ export interface RemeshParams {
   seed?: number; // integer 0 .. 2^53-1; default 1
   weights?: { euclidean?: number; l2?: number; l21?: number; density?: number; boundary?: number };
   lloydIterations?: number; // k1, default 20
-  panelRounds?: number; // k2, default 30
+  panelRounds?: number; // k2, default 100 (stops at the first valid round, or after 50 rounds without fewer invalid panels)
   seeding?: 'farthest' | 'random';
   teleport?: boolean; // default true
   singlePointNodes?: boolean; // default false

@@ -55,7 +55,7 @@ export const DEFAULT_PARAMS: DesignParams = {
   seed: 1,
   weights: { euclidean: 1, l2: 1, l21: 1, boundary: 1 },
   lloydIterations: 20,
-  panelRounds: 30,
+  panelRounds: 100,
   seeding: 'farthest',
   teleport: true,
   singlePointNodes: false,
