@@ -6,7 +6,7 @@
 #include <limits>
 #include <utility>
 
-#include "core/panels/sym_eigen3.h"
+#include "core/panels/sym_eigen3_newton.h"
 
 namespace ff {
 
@@ -17,11 +17,8 @@ namespace {
 // was), without the generic machinery around them: the node solve runs once per node and
 // iteration, 80 times per relaxation. Eigen 3.4, LDLT.h: ldlt_inplace<Lower>::unblocked
 // and _solve_impl_transposed (unrolled triangular solves).
-Vec3 ldlt_solve3(const Eigen::Matrix3d& A, const Vec3& b) {
-  double m[3][3];  // the lower triangle: L below the diagonal, D on it
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j <= i; ++j) m[i][j] = A(i, j);
-  }
+// m: A's lower triangle on entry (overwritten: L below the diagonal, D on it); y: b on entry.
+Vec3 ldlt_solve3(double (&m)[3][3], double (&y)[3]) {
   int t[3] = {0, 1, 2};
   for (int k = 0; k < 3; ++k) {
     int p = k;  // the largest diagonal entry left (the first on ties)
@@ -52,7 +49,6 @@ Vec3 ldlt_solve3(const Eigen::Matrix3d& A, const Vec3& b) {
       for (int i = k + 1; i < 3; ++i) m[i][k] /= pivot;
     }
   }
-  double y[3] = {b.x(), b.y(), b.z()};
   for (int k = 0; k < 3; ++k) {
     if (t[k] != k) std::swap(y[k], y[t[k]]);
   }
@@ -71,6 +67,13 @@ Vec3 ldlt_solve3(const Eigen::Matrix3d& A, const Vec3& b) {
   }
   return Vec3(y[0], y[1], y[2]);
 }
+
+// A plane's part of its nodes' solves at the current W: W n n^T (lower triangle, row by
+// row) and W d n.
+struct PlaneTerms {
+  double a[6];
+  double b[3];
+};
 
 bool hinged(const std::vector<PlaneHinge>& hinges, size_t i) { return i < hinges.size() && hinges[i].on; }
 
@@ -121,18 +124,34 @@ std::vector<Plane> relax_planes(const std::vector<NodeConstraint>& nodes, const 
   std::vector<double> area(m);
   std::vector<Vec3> first(m), center(m);
   std::vector<Eigen::Matrix3d> scatter(m);
+  std::vector<PlaneTerms> terms(m);
   double w = options.start_weight;
   for (int it = 0; it < options.iterations; ++it, w *= options.growth) {
     // Nodes: minimise c_k |x - p|^2 + W sum_i (n_i.x - d_i)^2, c_k the node's own weight.
+    // Each plane's W n n^T (lower triangle) and W d n once per iteration rather than once per
+    // node: the same products, so the same bits as forming them per node.
+    for (size_t i = 0; i < m; ++i) {
+      const Vec3& n = planes[i].normal;
+      const double wn[3] = {w * n.x(), w * n.y(), w * n.z()};
+      const double wd = w * planes[i].offset;
+      PlaneTerms& pt = terms[i];
+      pt.a[0] = wn[0] * n.x();
+      pt.a[1] = wn[1] * n.x(), pt.a[2] = wn[1] * n.y();
+      pt.a[3] = wn[2] * n.x(), pt.a[4] = wn[2] * n.y(), pt.a[5] = wn[2] * n.z();
+      pt.b[0] = wd * n.x(), pt.b[1] = wd * n.y(), pt.b[2] = wd * n.z();
+    }
     for (size_t k : active) {
-      Eigen::Matrix3d A = nodes[k].weight * Eigen::Matrix3d::Identity();
-      Vec3 b = nodes[k].weight * nodes[k].corner;
-      for (int j = 0; j < nodes[k].count; ++j) {
-        const Plane& p = planes[static_cast<size_t>(nodes[k].planes[static_cast<size_t>(j)])];
-        A += w * p.normal * p.normal.transpose();
-        b += w * p.offset * p.normal;
+      const NodeConstraint& node = nodes[k];
+      double a[3][3] = {{node.weight, 0.0, 0.0}, {0.0, node.weight, 0.0}, {0.0, 0.0, node.weight}};
+      double b[3] = {node.weight * node.corner.x(), node.weight * node.corner.y(), node.weight * node.corner.z()};
+      for (int j = 0; j < node.count; ++j) {
+        const PlaneTerms& pt = terms[static_cast<size_t>(node.planes[static_cast<size_t>(j)])];
+        a[0][0] += pt.a[0];
+        a[1][0] += pt.a[1], a[1][1] += pt.a[2];
+        a[2][0] += pt.a[3], a[2][1] += pt.a[4], a[2][2] += pt.a[5];
+        b[0] += pt.b[0], b[1] += pt.b[1], b[2] += pt.b[2];
       }
-      x[k] = ldlt_solve3(A, b);
+      x[k] = ldlt_solve3(a, b);
     }
     // Planes: least squares over their faces (exact moments) and their nodes (weight W w_i),
     // the scatter formed about the common centre (two passes) to keep its precision at large W.
@@ -166,8 +185,9 @@ std::vector<Plane> relax_planes(const std::vector<NodeConstraint>& nodes, const 
         planes[i] = hinged_fit(hinges[i], 0.5 * (scatter[i] + scatter[i].transpose()), planes[i]);
         continue;
       }
-      // Eigen's solver to the bit, for a fraction of its cost (sym_eigen3.h).
-      Vec3 normal = smallest_eigenvector(0.5 * (scatter[i] + scatter[i].transpose()));
+      // The characteristic cubic's smallest root (sym_eigen3_newton.h): Eigen's axis to
+      // rounding at a ninth of its iterative solver's cost.
+      Vec3 normal = smallest_eigenvector_newton(0.5 * (scatter[i] + scatter[i].transpose()));
       if (!normal.allFinite() || normal.norm() < 0.5) continue;
       if (normal.dot(planes[i].normal) < 0.0) normal = -normal;
       planes[i] = Plane::through(center[i], normal.normalized());

@@ -4,7 +4,9 @@
 // of its cost. Why: the plane relaxation (plane_relax.h) solves one such problem per plane and
 // iteration (80 per relaxation), and the generic solver's dynamic-size QR steps were a quarter
 // of the panel phase. Same bits matter: the panel rounds are chaotic, so any change in the
-// last bit of a plane moves the whole result.
+// last bit of a plane moves the whole result. The relaxation now uses the cheaper
+// smallest_eigenvector_newton (sym_eigen3_newton.h), which falls back to this one on
+// near-double eigenvalues and non-finite input.
 #include <Eigen/Core>
 
 #include "core/mesh/tri_mesh.h"
