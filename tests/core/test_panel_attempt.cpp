@@ -21,45 +21,18 @@
 namespace ff {
 namespace {
 
-// An open tube along z (radius 0.5, length 5), `segments` around and `rings` along,
-// normals outward. Vertex (s, r) is r * segments + s % segments.
-TriMesh tube(int segments, int rings) {
-  TriMesh m;
-  for (int r = 0; r <= rings; ++r) {
-    for (int s = 0; s < segments; ++s) {
-      const double a = 2.0 * test::kPi * s / segments;
-      m.positions.emplace_back(0.5 * std::cos(a), 0.5 * std::sin(a), 5.0 * r / rings);
-    }
-  }
-  const auto id = [segments](int s, int r) { return r * segments + s % segments; };
-  for (int r = 0; r < rings; ++r) {
-    for (int s = 0; s < segments; ++s) {
-      m.triangles.push_back({id(s, r), id(s + 1, r), id(s + 1, r + 1)});
-      m.triangles.push_back({id(s, r), id(s + 1, r + 1), id(s, r + 1)});
-    }
-  }
-  return m;
-}
-
-Vec3 centroid(const TriMesh& m, int f) {
-  const Triangle& t = m.triangles[static_cast<size_t>(f)];
-  return (m.positions[static_cast<size_t>(t[0])] + m.positions[static_cast<size_t>(t[1])] +
-          m.positions[static_cast<size_t>(t[2])]) /
-         3.0;
-}
-
 // The tube in two halves along its length: A (y > 0) and B (y < 0) meet along the seams at
 // x = 0.5 and x = -0.5, two chains between the rims. A's seed sits in its middle.
 TEST(SplitRequests, TwoChainClusterSplitsBetweenItsChainsNotAcross) {
   const int segments = 16, rings = 20;
-  const TriMesh mesh = tube(segments, rings);
+  const TriMesh mesh = test::tube(segments, rings, 0.5, 5.0);
   const MeshTopology topology = build_topology(mesh);
   const FaceData faces = make_face_data(mesh);
   const Metric metric(faces, MetricWeights{}, 2);
   Clustering c;
   int seed_a = -1, seed_b = -1;
   for (int f = 0; f < mesh.num_faces(); ++f) {
-    const Vec3 p = centroid(mesh, f);
+    const Vec3 p = face_centroid(mesh, f);
     c.labels.push_back(p.y() > 0.0 ? 0 : 1);
     const bool middle = std::abs(p.z() - 2.5) < 0.2 && std::abs(p.x()) < 0.15;
     if (middle && p.y() > 0.0 && seed_a < 0) seed_a = f;
@@ -90,7 +63,7 @@ TEST(SplitRequests, TwoChainClusterSplitsBetweenItsChainsNotAcross) {
   for (int g : topology.face_neighbors[static_cast<size_t>(face)])
     on_seam = on_seam || (g >= 0 && c.labels[static_cast<size_t>(g)] == 1);
   EXPECT_TRUE(on_seam);
-  EXPECT_LT(std::abs(centroid(mesh, face).z() - 2.5), 0.75);
+  EXPECT_LT(std::abs(face_centroid(mesh, face).z() - 2.5), 0.75);
 }
 
 // The cow (issue 3): its legs, horns, ears and tail are tubes a few clusters around, where
