@@ -68,24 +68,17 @@ TEST(SplitRequests, TwoChainClusterSplitsBetweenItsChainsNotAcross) {
 
 // The cow (issue 3): its legs, horns, ears and tail are tubes a few clusters around, where
 // clusters meet a neighbour on both sides every round. Cut along, they become panels.
-TEST(TwoChainSplits, CowAt110PanelsIsValid) {
-  RemeshParams p;
-  p.panels = 110;
-  Remesher r(test::load_clean("cow.off"), p);
-  r.run();
-  EXPECT_TRUE(test::valid_panels(r, p.panels, 0.08));
-}
+class TwoChainSplits : public ::testing::TestWithParam<test::ValidRemesh> {};
+TEST_P(TwoChainSplits, CowEndsValid) { EXPECT_TRUE(test::remeshes_valid(GetParam())); }
 
-// At 100 the rounds reach valid panels after the default 30 (about 40 here): the splits
-// converge, the budget was what ended them.
-TEST(TwoChainSplits, CowAt100PanelsIsValidWithMoreRounds) {
-  RemeshParams p;
-  p.panels = 100;
-  p.panel_rounds = 60;
-  Remesher r(test::load_clean("cow.off"), p);
-  r.run();
-  EXPECT_TRUE(test::valid_panels(r, p.panels, 0.08));
-}
+const auto cow = [] { return test::load_clean("cow.off"); };
+INSTANTIATE_TEST_SUITE_P(
+    Cow, TwoChainSplits,
+    ::testing::Values(test::ValidRemesh{"At110Panels", cow, 110},
+                      // At 100 the rounds reach valid panels after the default 30 (about 40
+                      // here): the splits converge, the budget was what ended them.
+                      test::ValidRemesh{"At100PanelsWithMoreRounds", cow, 100, 60}),
+    test::valid_remesh_name);
 
 }  // namespace
 }  // namespace ff
