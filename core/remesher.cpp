@@ -13,6 +13,7 @@
 #include "core/panels/boundary_term.h"
 #include "core/panels/glass_split.h"
 #include "core/panels/plane_fit.h"
+#include "core/panels/split_requests.h"
 #include "core/util/error.h"
 
 namespace ff {

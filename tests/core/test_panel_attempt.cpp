@@ -1,4 +1,4 @@
-// Where a failed panel attempt splits (split_requests, core/panels/panel_attempt.cpp): a
+// Where a failed panel attempt splits (split_requests, core/panels/split_requests.cpp): a
 // cluster that meets one neighbour in two separate chains (paper 2.4, fig. 10) must be cut
 // along, between the chains, not across: on a thin tube (a cow's leg) halves cut across
 // both still meet the neighbour twice.
@@ -14,6 +14,7 @@
 #include "core/mesh/topology.h"
 #include "core/panels/panel_attempt.h"
 #include "core/panels/panel_graph.h"
+#include "core/panels/split_requests.h"
 #include "core/remesher.h"
 #include "panel_checks.h"
 #include "synthetic_meshes.h"
