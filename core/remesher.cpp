@@ -1,6 +1,8 @@
 #include "core/remesher.h"
 
 #include <algorithm>
+#include <cstddef>
+#include <limits>
 #include <optional>
 
 #include "core/cluster/cluster_edits.h"
@@ -11,6 +13,7 @@
 #include "core/panels/boundary_term.h"
 #include "core/panels/glass_split.h"
 #include "core/panels/plane_fit.h"
+#include "core/panels/split_requests.h"
 #include "core/util/error.h"
 
 namespace ff {
@@ -149,15 +152,24 @@ void Remesher::panel_round() {
 // Attempts that did not become the best but came close, for mend_best(): the last fixes
 // mend one clustering where they fail on a slightly different one (on 3holes.off at 102
 // panels they fail on the best round and succeed on the three after it). The fewest invalid
-// first, the later round first among equals. Not with locked panels (their held clusters
-// are numbered in the clustering of the moment).
+// first, the later round first among equals; only those within kAlternateMargin invalid
+// panels of the best (a whole attempt is large, and one far behind is not close). Not with
+// locked panels (their held clusters are numbered in the clustering of the moment).
 void Remesher::keep_alternate(std::unique_ptr<PanelAttempt> attempt) {
   constexpr size_t kAlternates = 4;
+  constexpr int kAlternateMargin = 2;
   if (!attempt || attempt->num_invalid() == 0 || !locks_.empty()) return;
-  alternates_.insert(alternates_.begin(), std::move(attempt));
-  std::stable_sort(alternates_.begin(), alternates_.end(),
-                   [](const auto& a, const auto& b) { return a->num_invalid() < b->num_invalid(); });
-  if (alternates_.size() > kAlternates) alternates_.resize(kAlternates);
+  // The best only gets better, so one too far behind now stays so: drop them (the last).
+  const int limit = best_ ? best_->num_invalid() + kAlternateMargin : std::numeric_limits<int>::max();
+  while (!alternates_.empty() && alternates_.back()->num_invalid() > limit) alternates_.pop_back();
+  const int invalid = attempt->num_invalid();
+  if (invalid > limit) return;
+  // Kept in order: before the first with as many invalid panels or more.
+  const auto at = std::find_if(alternates_.begin(), alternates_.end(),
+                               [invalid](const auto& a) { return a->num_invalid() >= invalid; });
+  if (at - alternates_.begin() >= static_cast<std::ptrdiff_t>(kAlternates)) return;
+  alternates_.insert(at, std::move(attempt));
+  if (alternates_.size() > kAlternates) alternates_.pop_back();
 }
 
 void Remesher::fix_panels(const PanelAttempt& attempt) {
@@ -235,13 +247,9 @@ void Remesher::fix_panels(const PanelAttempt& attempt) {
 }
 
 void Remesher::finish_panels() {
-  clustering_ = best_->clustering();
+  clustering_ = best_->clustering();  // before mend_best: held_clusters() reads it
+  if (best_->num_invalid() > 0) mend_best();
   progress_.energy = clustering_.energy * faces_.area_to_world();
-  if (best_->num_invalid() > 0) {
-    mend_best();
-    clustering_ = best_->clustering();  // an alternate may have taken its place
-    progress_.energy = clustering_.energy * faces_.area_to_world();
-  }
   panels_ = best_->layout().to_panel_mesh(faces_);
   progress_.invalid_panels = panels_.num_invalid();
   const bool optimize = (params_.optimize_planes || params_.single_point_nodes) && panels_.num_invalid() == 0;
@@ -252,17 +260,20 @@ void Remesher::finish_panels() {
 
 // The panel rounds are over and some panels are still invalid: the last fixes, on the best
 // attempt only (runs that end valid never get here, so they are unchanged). Locked panels
-// and their neighbours keep their planes.
+// and their neighbours keep their planes. Where a runner-up takes the best's place,
+// clustering_ becomes its clustering.
 void Remesher::mend_best() {
   best_->mend(faces_, held_clusters(), PanelAttemptOptions{});
   // Then the close runners-up (keep_alternate), until one ends valid; one replaces the
   // best only with fewer invalid panels, so a run the best's mend leaves as it was stays so.
+  bool replaced = false;
   for (std::unique_ptr<PanelAttempt>& alternate : alternates_) {
     if (best_->num_invalid() == 0) break;
     alternate->mend(faces_, {}, PanelAttemptOptions{});
-    if (alternate->num_invalid() < best_->num_invalid()) std::swap(best_, alternate);
+    if (alternate->num_invalid() < best_->num_invalid()) std::swap(best_, alternate), replaced = true;
   }
   alternates_.clear();
+  if (replaced) clustering_ = best_->clustering();
 }
 
 void Remesher::cut_glass() {

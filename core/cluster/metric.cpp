@@ -53,6 +53,18 @@ void ClusterMoments::add(const ClusterMoments& o) {
   stretch_sq += o.stretch_sq;
 }
 
+void ClusterMoments::add(const ClusterMoments& o, double weight) {
+  area += weight * o.area;
+  first += weight * o.first;
+  centroid_sq += weight * o.centroid_sq;
+  second += weight * o.second;
+  normal_sum += weight * o.normal_sum;
+  density_area += weight * o.density_area;
+  stretch_second += weight * o.stretch_second;
+  stretch_first += weight * o.stretch_first;
+  stretch_sq += weight * o.stretch_sq;
+}
+
 EnergyTerms EnergyTerms::scaled(double factor) const {
   return EnergyTerms{euclidean * factor, l2 * factor, l21 * factor, density * factor};
 }

@@ -50,6 +50,9 @@ struct ClusterMoments {
 
   void add_face(const FaceData& faces, int f);
   void add(const ClusterMoments& other);
+  // Adds `weight` times other's moments: a set counted `weight` times (e.g. a border's line
+  // moments scaled to weigh like the faces).
+  void add(const ClusterMoments& other, double weight);
 };
 
 // Energy of a cluster (or a whole clustering) split by term; `density` is the part the

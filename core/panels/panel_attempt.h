@@ -78,20 +78,4 @@ class PanelAttempt {
 std::vector<std::pair<int, int>> plane_neighbours(const MeshTopology& topology, const std::vector<int>& labels,
                                                   const PanelGraph& graph);
 
-// Clusters enclosed by a single neighbour: to be moved elsewhere (relocate_clusters).
-std::vector<int> enclosed_clusters(const PanelAttempt& attempt);
-
-// Where to split after a failed attempt: (cluster, face) requests for split_near(). A cluster
-// that meets one neighbour in two separate chains splits at the middle of its chain with
-// that neighbour farthest from its seed (cut off it, the halves meet the neighbour once
-// each); any other cluster that is not a disk (and not merely enclosed) at its face
-// farthest from its seed; an invalid panel at a face next to its problem corner, one split per corner, at most
-// `max_geometric` of those.
-// `keep` (per cluster, empty for none): clusters never to split (held by a lock): the
-// geometric splits go to the other invalid panels first, then to a free cluster at a kept
-// panel's problem corner.
-std::vector<std::pair<int, int>> split_requests(const TriMesh& mesh, const MeshTopology& topology,
-                                                const PanelAttempt& attempt, int max_geometric,
-                                                const std::vector<char>& keep = {});
-
 }  // namespace ff

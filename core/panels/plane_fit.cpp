@@ -24,10 +24,7 @@ std::vector<Plane> surface_fit_planes(const FaceData& faces, const std::vector<i
     }
     for (size_t m = 0; m < line.size(); ++m) {
       if (!(line[m].area > 0.0) || !(moments[m].area > 0.0)) continue;
-      const double scale = border_weight * moments[m].area / line[m].area;
-      moments[m].area += scale * line[m].area;
-      moments[m].first += scale * line[m].first;
-      moments[m].second += scale * line[m].second;
+      moments[m].add(line[m], border_weight * moments[m].area / line[m].area);
     }
   }
   RelaxOptions fit;

@@ -5,6 +5,8 @@
 // Checked by the independent quality module, not by the panel phase's own flags alone.
 #include <gtest/gtest.h>
 
+#include <functional>
+#include <ostream>
 #include <string>
 
 #include "core/quality/report.h"
@@ -30,6 +32,29 @@ inline ::testing::AssertionResult valid_panels(const Remesher& r, int panels, do
   if (!(q.hausdorff <= max_hausdorff)) return fail;
   if (q.interior_valence.empty() && q.euler_in == 2) return fail << " (no interior nodes on a closed surface?)";
   return ::testing::AssertionSuccess() << "valence-3 share " << q.valence3_share;
+}
+
+// One remesh for the parameterised "ends valid" tests: a name for the test, the mesh, the
+// panel count, the panel rounds (0: the default) and the bound on the Hausdorff distance.
+struct ValidRemesh {
+  std::string name;
+  std::function<TriMesh()> mesh;
+  int panels = 0;
+  int panel_rounds = 0;
+  double max_hausdorff = 0.08;
+};
+
+inline void PrintTo(const ValidRemesh& c, std::ostream* os) { *os << c.name; }
+inline std::string valid_remesh_name(const ::testing::TestParamInfo<ValidRemesh>& info) { return info.param.name; }
+
+// Remeshes c.mesh() with the default parameters but c's panel count and rounds.
+inline ::testing::AssertionResult remeshes_valid(const ValidRemesh& c) {
+  RemeshParams p;
+  p.panels = c.panels;
+  if (c.panel_rounds > 0) p.panel_rounds = c.panel_rounds;
+  Remesher r(c.mesh(), p);
+  r.run();
+  return valid_panels(r, c.panels, c.max_hausdorff);
 }
 
 }  // namespace ff::test

@@ -1,5 +1,5 @@
 #pragma once
-// Small synthetic meshes with known topology for the Topology and CleanMesh tests.
+// Small synthetic meshes with known topology, shared by the core tests.
 #include <Eigen/Geometry>
 #include <cmath>
 #include <vector>
@@ -70,6 +70,26 @@ inline TriMesh torus(int nu, int nv) {
     for (int i = 0; i < nu; ++i) {
       m.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
       m.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  }
+  return m;
+}
+
+// An open tube along z (radius `radius`, from z = 0 to `length`), `segments` around and
+// `rings` along, normals outward. Vertex (s, r) is r * segments + s % segments.
+inline TriMesh tube(int segments, int rings, double radius, double length) {
+  TriMesh m;
+  for (int r = 0; r <= rings; ++r) {
+    for (int s = 0; s < segments; ++s) {
+      const double a = 2.0 * kPi * s / segments;
+      m.positions.emplace_back(radius * std::cos(a), radius * std::sin(a), length * r / rings);
+    }
+  }
+  const auto id = [segments](int s, int r) { return r * segments + s % segments; };
+  for (int r = 0; r < rings; ++r) {
+    for (int s = 0; s < segments; ++s) {
+      m.triangles.push_back({id(s, r), id(s + 1, r), id(s + 1, r + 1)});
+      m.triangles.push_back({id(s, r), id(s + 1, r + 1), id(s, r + 1)});
     }
   }
   return m;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <vector>
 
+#include "core/mesh/tri_mesh.h"
 #include "core/prepare/mesh_transfer.h"
 #include "core/prepare/prepare.h"
 #include "core/util/error.h"
@@ -21,13 +22,6 @@ TriMesh unit_grid(int n) {
   TriMesh m = grid(n, n);
   for (Vec3& p : m.positions) p /= static_cast<double>(n);
   return m;
-}
-
-Vec3 centroid(const TriMesh& m, int f) {
-  const Triangle& t = m.triangles[static_cast<size_t>(f)];
-  return (m.positions[static_cast<size_t>(t[0])] + m.positions[static_cast<size_t>(t[1])] +
-          m.positions[static_cast<size_t>(t[2])]) /
-         3.0;
 }
 
 TEST(MeshTransfer, ALinearFieldOnAPlaneIsCarriedExactly) {
@@ -72,9 +66,9 @@ TEST(MeshTransfer, FacesGoToTheTriangleWithTheNearestCentroid) {
   const std::vector<int> mapped = nearest_faces_by_centroid(coarse, all, fine);
   ASSERT_EQ(mapped.size(), all.size());
   for (size_t i = 0; i < all.size(); ++i) {
-    const Vec3 c = centroid(coarse, all[i]);
-    const double found = (centroid(fine, mapped[i]) - c).norm();
-    for (int g = 0; g < fine.num_faces(); ++g) EXPECT_LE(found, (centroid(fine, g) - c).norm() + 1e-15);
+    const Vec3 c = face_centroid(coarse, all[i]);
+    const double found = (face_centroid(fine, mapped[i]) - c).norm();
+    for (int g = 0; g < fine.num_faces(); ++g) EXPECT_LE(found, (face_centroid(fine, g) - c).norm() + 1e-15);
   }
 }
 

@@ -4,6 +4,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <cmath>
+#include <vector>
 
 #include "core/cluster/clustering.h"
 #include "core/cluster/metric.h"
@@ -103,6 +104,34 @@ TEST(Metric, EnergyFromMomentsEqualsSumOfFaceCosts) {
   double sum = 0.0;
   for (int f = 0; f < 40; ++f) sum += metric.cost(f, metric.terms(p));
   EXPECT_NEAR(metric.energy(m, p).total(), sum, 1e-9 * sum);
+}
+
+// add(other, w) counts `other` w times: every field, the anisotropy moments too; with
+// w = 1 it is add(other) to the bit.
+TEST(Metric, WeightedAddCountsEveryMomentThatManyTimes) {
+  const TriMesh mesh = make_roof(6, 5);
+  FaceData fd = make_face_data(mesh);
+  fd.stretch.assign(static_cast<size_t>(fd.num_faces()), Vec3(0.3, -0.2, 0.1));
+  ClusterMoments part;
+  for (int f = 0; f < 20; ++f) part.add_face(fd, f);
+  ClusterMoments twice, weighted, once, unit;
+  twice.add(part);
+  twice.add(part);
+  weighted.add(part, 2.0);
+  once.add(part);
+  unit.add(part, 1.0);
+  const auto fields = [](const ClusterMoments& m) {
+    std::vector<double> v = {m.area, m.centroid_sq, m.density_area, m.stretch_sq};
+    for (int i = 0; i < 3; ++i) v.insert(v.end(), {m.first[i], m.normal_sum[i], m.stretch_first[i]});
+    for (int i = 0; i < 9; ++i) v.insert(v.end(), {m.second(i), m.stretch_second(i)});
+    return v;
+  };
+  const std::vector<double> a = fields(twice), b = fields(weighted);
+  for (size_t k = 0; k < a.size(); ++k) {
+    EXPECT_NEAR(a[k], b[k], 1e-12 * (1.0 + std::abs(a[k]))) << "field " << k;
+  }
+  EXPECT_GT(part.stretch_sq, 0.0);  // the anisotropy moments are really there
+  EXPECT_EQ(fields(once), fields(unit));
 }
 
 TEST(Metric, DensityScalesTheEuclideanTerm) {

@@ -1,4 +1,4 @@
-// Where a failed panel attempt splits (split_requests, core/panels/panel_attempt.cpp): a
+// Where a failed panel attempt splits (split_requests, core/panels/split_requests.cpp): a
 // cluster that meets one neighbour in two separate chains (paper 2.4, fig. 10) must be cut
 // along, between the chains, not across: on a thin tube (a cow's leg) halves cut across
 // both still meet the neighbour twice.
@@ -14,6 +14,7 @@
 #include "core/mesh/topology.h"
 #include "core/panels/panel_attempt.h"
 #include "core/panels/panel_graph.h"
+#include "core/panels/split_requests.h"
 #include "core/remesher.h"
 #include "panel_checks.h"
 #include "synthetic_meshes.h"
@@ -21,45 +22,18 @@
 namespace ff {
 namespace {
 
-// An open tube along z (radius 0.5, length 5), `segments` around and `rings` along,
-// normals outward. Vertex (s, r) is r * segments + s % segments.
-TriMesh tube(int segments, int rings) {
-  TriMesh m;
-  for (int r = 0; r <= rings; ++r) {
-    for (int s = 0; s < segments; ++s) {
-      const double a = 2.0 * test::kPi * s / segments;
-      m.positions.emplace_back(0.5 * std::cos(a), 0.5 * std::sin(a), 5.0 * r / rings);
-    }
-  }
-  const auto id = [segments](int s, int r) { return r * segments + s % segments; };
-  for (int r = 0; r < rings; ++r) {
-    for (int s = 0; s < segments; ++s) {
-      m.triangles.push_back({id(s, r), id(s + 1, r), id(s + 1, r + 1)});
-      m.triangles.push_back({id(s, r), id(s + 1, r + 1), id(s, r + 1)});
-    }
-  }
-  return m;
-}
-
-Vec3 centroid(const TriMesh& m, int f) {
-  const Triangle& t = m.triangles[static_cast<size_t>(f)];
-  return (m.positions[static_cast<size_t>(t[0])] + m.positions[static_cast<size_t>(t[1])] +
-          m.positions[static_cast<size_t>(t[2])]) /
-         3.0;
-}
-
 // The tube in two halves along its length: A (y > 0) and B (y < 0) meet along the seams at
 // x = 0.5 and x = -0.5, two chains between the rims. A's seed sits in its middle.
 TEST(SplitRequests, TwoChainClusterSplitsBetweenItsChainsNotAcross) {
   const int segments = 16, rings = 20;
-  const TriMesh mesh = tube(segments, rings);
+  const TriMesh mesh = test::tube(segments, rings, 0.5, 5.0);
   const MeshTopology topology = build_topology(mesh);
   const FaceData faces = make_face_data(mesh);
   const Metric metric(faces, MetricWeights{}, 2);
   Clustering c;
   int seed_a = -1, seed_b = -1;
   for (int f = 0; f < mesh.num_faces(); ++f) {
-    const Vec3 p = centroid(mesh, f);
+    const Vec3 p = face_centroid(mesh, f);
     c.labels.push_back(p.y() > 0.0 ? 0 : 1);
     const bool middle = std::abs(p.z() - 2.5) < 0.2 && std::abs(p.x()) < 0.15;
     if (middle && p.y() > 0.0 && seed_a < 0) seed_a = f;
@@ -90,20 +64,19 @@ TEST(SplitRequests, TwoChainClusterSplitsBetweenItsChainsNotAcross) {
   for (int g : topology.face_neighbors[static_cast<size_t>(face)])
     on_seam = on_seam || (g >= 0 && c.labels[static_cast<size_t>(g)] == 1);
   EXPECT_TRUE(on_seam);
-  EXPECT_LT(std::abs(centroid(mesh, face).z() - 2.5), 0.75);
+  EXPECT_LT(std::abs(face_centroid(mesh, face).z() - 2.5), 0.75);
 }
 
 // The cow (issue 3): its legs, horns, ears and tail are tubes a few clusters around, where
 // clusters meet a neighbour on both sides every round. Cut along, they become panels.
 // (110 became 112 when the panel rounds got a larger budget and at most 3 splits each: 110
 // ends with one invalid panel since. The sweep counts are in test_panel_rounds.cpp.)
-TEST(TwoChainSplits, CowAt112PanelsIsValid) {
-  RemeshParams p;
-  p.panels = 112;
-  Remesher r(test::load_clean("cow.off"), p);
-  r.run();
-  EXPECT_TRUE(test::valid_panels(r, p.panels, 0.08));
-}
+class TwoChainSplits : public ::testing::TestWithParam<test::ValidRemesh> {};
+TEST_P(TwoChainSplits, CowEndsValid) { EXPECT_TRUE(test::remeshes_valid(GetParam())); }
+
+const auto cow = [] { return test::load_clean("cow.off"); };
+INSTANTIATE_TEST_SUITE_P(Cow, TwoChainSplits, ::testing::Values(test::ValidRemesh{"At112Panels", cow, 112}),
+                         test::valid_remesh_name);
 
 }  // namespace
 }  // namespace ff

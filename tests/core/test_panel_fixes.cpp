@@ -89,48 +89,38 @@ TEST(SpikeMasterClusters, ClustersAloneOnTheirPlanesAreNotMarked) {
   EXPECT_EQ(f.spike_master_clusters(false, 0.5), (std::vector<char>{0, 0, 0, 0}));
 }
 
-// Barrel vault, 50k triangles: at 550 panels the panel rounds end with one panel invalid
-// (a short edge flipped at a group of four planes, no pairing mends it); the last fix makes
-// that group one point on its four planes. Valid, planar, topology kept.
-TEST(SinglePointFix, BarrelVaultEndsValid) {
-  RemeshParams p;
-  p.panels = 550;
-  Remesher r(make_barrel_vault(50000), p);
-  r.run();
-  EXPECT_TRUE(test::valid_panels(r, 550, 0.05));
-}
+// The last fixes (test::remeshes_valid: valid, planar, topology kept).
+class SinglePointFix : public ::testing::TestWithParam<test::ValidRemesh> {};
+TEST_P(SinglePointFix, EndsValid) { EXPECT_TRUE(test::remeshes_valid(GetParam())); }
 
-// Barrel vault, 50k triangles, 300 panels: the best round leaves a short panel between three
-// groups of four clusters flipped (its neighbours nearly coplanar). Each group made one point
-// pins the short panel's plane through one more point: translated through the first, turned
-// about the line to the second, the plane of all three for the third. Fails when a plane
-// already through a point blocks the next group.
-TEST(SinglePointFix, PlaneThroughSeveralGroupPoints) {
-  RemeshParams p;
-  p.panels = 300;
-  Remesher r(make_barrel_vault(50000), p);
-  r.run();
-  EXPECT_TRUE(test::valid_panels(r, 300, 0.05));
-}
+INSTANTIATE_TEST_SUITE_P(
+    BarrelVault, SinglePointFix,
+    ::testing::Values(
+        // 50k triangles: at 550 panels the panel rounds end with one panel invalid (a short
+        // edge flipped at a group of four planes, no pairing mends it); the last fix makes that
+        // group one point on its four planes.
+        test::ValidRemesh{"At550", [] { return make_barrel_vault(50000); }, 550, 0, 0.05},
+        // 50k triangles, 300 panels: the best round leaves a short panel between three groups of
+        // four clusters flipped (its neighbours nearly coplanar). Each group made one point pins
+        // the short panel's plane through one more point: translated through the first, turned
+        // about the line to the second, the plane of all three for the third. Fails when a plane
+        // already through a point blocks the next group.
+        test::ValidRemesh{"PlaneThroughSeveralGroupPointsAt300", [] { return make_barrel_vault(50000); }, 300, 0,
+                          0.05}),
+    test::valid_remesh_name);
 
 // Shared meshes where the last fixes fail on the best round's clustering and mend a runner-up
 // (Remesher::keep_alternate): 3holes.off at 102 panels (a flipped edge at a group of four
 // planes), camelhead.off at 324 (two such groups on one panel).
-TEST(MendAlternates, ThreeHolesAt102) {
-  RemeshParams p;
-  p.panels = 102;
-  Remesher r(test::load_clean("3holes.off"), p);
-  r.run();
-  EXPECT_TRUE(test::valid_panels(r, 102, 0.08));
-}
+class MendAlternates : public ::testing::TestWithParam<test::ValidRemesh> {};
+TEST_P(MendAlternates, EndsValid) { EXPECT_TRUE(test::remeshes_valid(GetParam())); }
 
-TEST(MendAlternates, CamelheadAt324) {
-  RemeshParams p;
-  p.panels = 324;
-  Remesher r(test::load_clean("camelhead.off"), p);
-  r.run();
-  EXPECT_TRUE(test::valid_panels(r, 324, 0.08));
-}
+INSTANTIATE_TEST_SUITE_P(SharedMeshes, MendAlternates,
+                         ::testing::Values(test::ValidRemesh{"ThreeHolesAt102",
+                                                             [] { return test::load_clean("3holes.off"); }, 102},
+                                           test::ValidRemesh{"CamelheadAt324",
+                                                             [] { return test::load_clean("camelhead.off"); }, 324}),
+                         test::valid_remesh_name);
 
 }  // namespace
 }  // namespace ff

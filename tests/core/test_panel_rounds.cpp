@@ -5,7 +5,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <ostream>
 #include <string>
 
 #include "cluster_checks.h"
@@ -28,32 +27,19 @@ TriMesh torus() {
       true, true);
 }
 
-struct CowCase {
-  int panels;
-  double max_hausdorff;
-};
-
-void PrintTo(const CowCase& c, std::ostream* os) { *os << "cow.off at " << c.panels; }
-
-class CowPanelRounds : public ::testing::TestWithParam<CowCase> {};
+class CowPanelRounds : public ::testing::TestWithParam<test::ValidRemesh> {};
+TEST_P(CowPanelRounds, ValidWithTheDefaults) { EXPECT_TRUE(test::remeshes_valid(GetParam())); }
 
 // 2-5 s of Release each (30 to 100 rounds). The Hausdorff bound is the shared meshes' 0.08
 // where the result has it; at 61 and 100 the valid result leaves a thin part (a tip) farther
 // from its panels (0.14 and 0.11 of the diagonal, measured input to panels).
-TEST_P(CowPanelRounds, ValidWithTheDefaults) {
-  const CowCase& c = GetParam();
-  RemeshParams p;
-  p.panels = c.panels;
-  Remesher r(test::load_clean("cow.off"), p);
-  r.run();
-  EXPECT_TRUE(test::valid_panels(r, p.panels, c.max_hausdorff)) << "cow.off at " << p.panels;
-  EXPECT_LE(r.panel_rounds_done(), p.panel_rounds);
-}
-
+const auto cow = [] { return test::load_clean("cow.off"); };
 INSTANTIATE_TEST_SUITE_P(SweepCounts, CowPanelRounds,
-                         ::testing::Values(CowCase{61, 0.15}, CowCase{78, 0.08}, CowCase{100, 0.12},
-                                           CowCase{122, 0.08}),
-                         [](const auto& info) { return std::to_string(info.param.panels); });
+                         ::testing::Values(test::ValidRemesh{"At61", cow, 61, 0, 0.15},
+                                           test::ValidRemesh{"At78", cow, 78},
+                                           test::ValidRemesh{"At100", cow, 100, 0, 0.12},
+                                           test::ValidRemesh{"At122", cow, 122}),
+                         test::valid_remesh_name);
 
 // A hopeless input stops once 50 rounds bring no fewer invalid panels, long before a large k2.
 TEST(PanelRoundBudget, HopelessInputEndsBeforeALargeBudget) {

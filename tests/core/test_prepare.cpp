@@ -136,35 +136,32 @@ TEST(Prepare, ImpossibleRequestsAreClearErrors) {
   }
 }
 
-// The coarse quads of YasIsland (976 quads, 1952 triangles) at 2500 panels: refined, then a
-// valid panelization with the input's topology.
-TEST(PrepareEndToEnd, CoarseYasIslandAtMorePanelsThanFaces) {
-  const TriMesh yas = test::load_clean("YasIsland.off");
-  const int panels = 2500;
-  PreparedSurface p = prepare_surface(yas, panels, {});
+// Coarse inputs at more panels than faces: refined with the input's topology, then a valid
+// panelization of it (test::valid_panels).
+class PrepareEndToEnd : public ::testing::TestWithParam<test::ValidRemesh> {};
+
+TEST_P(PrepareEndToEnd, RefinedThenValidPanels) {
+  const test::ValidRemesh& c = GetParam();
+  const TriMesh input = c.mesh();
+  ASSERT_LT(input.num_faces(), c.panels);
+  PreparedSurface p = prepare_surface(input, c.panels, {});
   ASSERT_TRUE(p.report.applied);
-  EXPECT_TRUE(test::summarize(p.mesh) == test::summarize(yas));
+  EXPECT_TRUE(test::summarize(p.mesh) == test::summarize(input));
   RemeshParams params;
-  params.panels = panels;
+  params.panels = c.panels;
   Remesher r(std::move(p.mesh), params);
   r.run();
-  EXPECT_TRUE(test::valid_panels(r, panels, 0.01));
+  EXPECT_TRUE(test::valid_panels(r, c.panels, c.max_hausdorff));
 }
 
-// A coarse roof with a courtyard (2 boundary loops, 150 triangles) at 400 panels.
-TEST(PrepareEndToEnd, CoarseRoofWithHoleAtMorePanelsThanFaces) {
-  const TriMesh roof = make_roof_with_hole(150);
-  const int panels = 400;
-  ASSERT_LT(roof.num_faces(), panels);
-  PreparedSurface p = prepare_surface(roof, panels, {});
-  ASSERT_TRUE(p.report.applied);
-  EXPECT_TRUE(test::summarize(p.mesh) == test::summarize(roof));
-  RemeshParams params;
-  params.panels = panels;
-  Remesher r(std::move(p.mesh), params);
-  r.run();
-  EXPECT_TRUE(test::valid_panels(r, panels, 0.02));
-}
+INSTANTIATE_TEST_SUITE_P(
+    MorePanelsThanFaces, PrepareEndToEnd,
+    ::testing::Values(
+        // The coarse quads of YasIsland (976 quads, 1952 triangles) at 2500 panels.
+        test::ValidRemesh{"CoarseYasIsland", [] { return test::load_clean("YasIsland.off"); }, 2500, 0, 0.01},
+        // A coarse roof with a courtyard (2 boundary loops, 150 triangles) at 400 panels.
+        test::ValidRemesh{"CoarseRoofWithHole", [] { return make_roof_with_hole(150); }, 400, 0, 0.02}),
+    test::valid_remesh_name);
 
 }  // namespace
 }  // namespace ff

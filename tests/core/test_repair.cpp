@@ -195,27 +195,8 @@ TEST(Repair, HolesOfThreeAndSixAreFilledOnlyWhenAskedAndSmallEnough) {
   EXPECT_NE(std::find(messages.begin(), messages.end(), "filled 2 holes with 5 faces"), messages.end());
 }
 
-// An open tube: two circles of `segments` edges.
-TriMesh tube(int segments, int rings) {
-  TriMesh m;
-  for (int r = 0; r <= rings; ++r) {
-    for (int s = 0; s < segments; ++s) {
-      const double a = 2.0 * test::kPi * s / segments;
-      m.positions.emplace_back(std::cos(a), std::sin(a), 0.5 * r);
-    }
-  }
-  const auto id = [segments](int s, int r) { return r * segments + s % segments; };
-  for (int r = 0; r < rings; ++r) {
-    for (int s = 0; s < segments; ++s) {
-      m.triangles.push_back({id(s, r), id(s + 1, r), id(s + 1, r + 1)});
-      m.triangles.push_back({id(s, r), id(s + 1, r + 1), id(s, r + 1)});
-    }
-  }
-  return m;
-}
-
 TEST(Repair, HolesOfFortyEdgesAreFilledUpToTheLimit) {
-  const TriMesh m = tube(40, 3);
+  const TriMesh m = test::tube(40, 3, 1.0, 1.5);  // two circles of 40 edges
   EXPECT_EQ(shape_of(clean_mesh(m).mesh).loops, 2);
   const CleanMesh below = fill(m, 39);
   EXPECT_EQ(below.report.holes_filled, 0);
