@@ -43,22 +43,6 @@ bool turned_through(const Plane& plane, const Vec3& pivot, const Vec3& target, d
 
 }  // namespace
 
-void PanelLayout::master_reach(int master, std::vector<int>& groups, std::vector<int>& clusters) const {
-  groups.clear(), clusters.clear();
-  for (size_t c = 0; c < planes_.master_of.size(); ++c) {
-    if (planes_.master_of[c] != master) continue;
-    clusters.push_back(static_cast<int>(c));
-    for (int g : groups_of_cluster_[c]) groups.push_back(g);
-  }
-  std::sort(groups.begin(), groups.end());
-  groups.erase(std::unique(groups.begin(), groups.end()), groups.end());
-  for (int g : groups) {
-    for (int c : clusters_of_group(g)) clusters.push_back(c);
-  }
-  std::sort(clusters.begin(), clusters.end());
-  clusters.erase(std::unique(clusters.begin(), clusters.end()), clusters.end());
-}
-
 int PanelLayout::aim_node_planes(const std::vector<char>& fixed_masters, double max_turn_deg) {
   // The nodes of invalid panels on three distinct planes, farthest from their corner first
   // (sorted by node index among equals: deterministic).

@@ -90,6 +90,22 @@ bool PanelLayout::tilt_spike_planes(const std::vector<char>& fixed_masters, cons
   return false;
 }
 
+void PanelLayout::master_reach(int master, std::vector<int>& groups, std::vector<int>& clusters) const {
+  groups.clear(), clusters.clear();
+  for (size_t c = 0; c < planes_.master_of.size(); ++c) {
+    if (planes_.master_of[c] != master) continue;
+    clusters.push_back(static_cast<int>(c));
+    for (int g : groups_of_cluster_[c]) groups.push_back(g);
+  }
+  std::sort(groups.begin(), groups.end());
+  groups.erase(std::unique(groups.begin(), groups.end()), groups.end());
+  for (int g : groups) {
+    for (int c : clusters_of_group(g)) clusters.push_back(c);
+  }
+  std::sort(clusters.begin(), clusters.end());
+  clusters.erase(std::unique(clusters.begin(), clusters.end()), clusters.end());
+}
+
 int PanelLayout::try_planes(const std::vector<Plane>& candidates) {
   int kept = 0;
   const std::vector<int> pinned = single_point_masters();  // they must keep their point
@@ -100,18 +116,7 @@ int PanelLayout::try_planes(const std::vector<Plane>& candidates) {
     if (std::binary_search(pinned.begin(), pinned.end(), static_cast<int>(m))) continue;
     // The groups and panels this plane reaches.
     std::vector<int> groups, clusters;
-    for (size_t c = 0; c < planes_.master_of.size(); ++c) {
-      if (planes_.master_of[c] != static_cast<int>(m)) continue;
-      clusters.push_back(static_cast<int>(c));
-      for (int g : groups_of_cluster_[c]) groups.push_back(g);
-    }
-    std::sort(groups.begin(), groups.end());
-    groups.erase(std::unique(groups.begin(), groups.end()), groups.end());
-    for (int g : groups) {
-      for (int c : clusters_of_group(g)) clusters.push_back(c);
-    }
-    std::sort(clusters.begin(), clusters.end());
-    clusters.erase(std::unique(clusters.begin(), clusters.end()), clusters.end());
+    master_reach(static_cast<int>(m), groups, clusters);
     int before = 0;
     for (int c : clusters) before += issues_[static_cast<size_t>(c)].valid() ? 0 : 1;
     planes_.planes[m] = cand;

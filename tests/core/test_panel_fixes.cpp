@@ -28,10 +28,8 @@ struct FourClusters {
   PanelGraph graph;
 
   FourClusters() {
-    for (const Triangle& t : mesh.triangles) {
-      const Vec3 c = (mesh.positions[static_cast<size_t>(t[0])] + mesh.positions[static_cast<size_t>(t[1])] +
-                      mesh.positions[static_cast<size_t>(t[2])]) /
-                     3.0;
+    for (int f = 0; f < mesh.num_faces(); ++f) {
+      const Vec3 c = face_centroid(mesh, f);
       labels.push_back(c.y() < 1.0 ? 2 : (c.x() < 2.0 ? 0 : (c.x() < 4.0 ? 1 : 3)));
     }
     graph = build_panel_graph(mesh, topology, labels, 4);
