@@ -209,8 +209,13 @@ test('the main thread keeps painting frames during a long solve', () =>
     // Frames are recorded from now on; the solve's span is from its first progress line on the
     // page to its result, so a fast machine that finishes early still measures what it ran.
     await page.evaluate(() => {
-      const record = { frames: [], firstProgress: null, done: null };
+      const record = { frames: [], longTasks: [], firstProgress: null, done: null };
       window.frameRecord = record;
+      // Tasks of 50 ms or more on the main thread (Long Tasks API): what our own code blocks.
+      if (!PerformanceObserver.supportedEntryTypes.includes('longtask')) throw new Error('no Long Tasks API');
+      new PerformanceObserver((list) => {
+        for (const entry of list.getEntries()) record.longTasks.push({ start: entry.startTime, duration: entry.duration });
+      }).observe({ type: 'longtask' });
       const tick = (now) => {
         record.frames.push(now);
         if (record.done === null) requestAnimationFrame(tick);
@@ -237,8 +242,6 @@ test('the main thread keeps painting frames during a long solve', () =>
           requestAnimationFrame(() => requestAnimationFrame(() => resolve(performance.now() - t)));
         }),
     );
-    // As lenient as the frame gap below: software GL on 2 busy cores takes ~300 ms per redraw.
-    assert.ok(latency < 500, `a toggle is on screen ${latency.toFixed(0)} ms after the click`);
     await screenshot(page, 'clusters-converging');
     assert.equal(await waitForDone(page, since), 1200);
     const record = await page.evaluate(() => window.frameRecord);
@@ -247,12 +250,21 @@ test('the main thread keeps painting frames during a long solve', () =>
     const frames = record.frames.filter((t) => t >= record.firstProgress && t <= record.done);
     const edges = [record.firstProgress, ...frames, record.done];
     const maxGap = Math.max(...edges.slice(1).map((t, i) => t - edges[i]));
-    // Lenient for a software rasteriser on 2 busy cores (a GPU paints 60 a second); a solve on
-    // the main thread would paint none.
+    const during = record.longTasks.filter((task) => task.start + task.duration >= record.firstProgress && task.start <= record.done);
+    const longest = Math.max(0, ...during.map((task) => task.duration));
+    // Lenient for a software rasteriser on 2 busy cores (a GPU paints 60 a second; 6 a second
+    // measured here with other work running); a solve on the main thread would paint none, and
+    // would be one task of seconds.
     const perSecond = (frames.length / span) * 1000;
-    if (process.env.FF_FRAME_STATS) console.log(`frames: ${frames.length} in ${span.toFixed(0)} ms (${perSecond.toFixed(1)}/s), max gap ${maxGap.toFixed(0)} ms, toggle ${latency.toFixed(0)} ms`);
-    assert.ok(perSecond >= 8, `at least 8 frames a second while solving (${frames.length} in ${span.toFixed(0)} ms)`);
-    assert.ok(maxGap < 500, `no frame gap of 500 ms or more while solving (max ${maxGap.toFixed(0)} ms)`);
+    if (process.env.FF_FRAME_STATS) console.log(`frames: ${frames.length} in ${span.toFixed(0)} ms (${perSecond.toFixed(1)}/s), max gap ${maxGap.toFixed(0)} ms, longest task ${longest.toFixed(0)} ms (${during.length} of 50 ms or more), toggle ${latency.toFixed(0)} ms`);
+    assert.ok(perSecond >= 3, `at least 3 frames a second while solving (${frames.length} in ${span.toFixed(0)} ms)`);
+    // As lenient as the frame gap below: software GL on 2 busy cores takes ~300 ms per redraw.
+    assert.ok(latency < 1000, `a toggle is on screen ${latency.toFixed(0)} ms after the click`);
+    assert.ok(longest < 1000, `no main-thread task of 1 s or more while solving (longest ${longest.toFixed(0)} ms)`);
+    // Our longest tasks measured here are 110-310 ms (the result of 1200 panels taken in); a solve
+    // on this thread would be one task of several seconds. A frame gap also counts time the machine
+    // gave to other processes (a gap of 500 ms failed a CI run on 2 shared cores): a looser bound.
+    assert.ok(maxGap < 1500, `no frame gap of 1.5 s or more while solving (max ${maxGap.toFixed(0)} ms)`);
   }));
 
 test('screenshots of the page after a solve, in each view', () =>
