@@ -95,7 +95,7 @@ int PanelLayout::aim_edge_order(const std::vector<char>& fixed_masters, double m
       const Vec3 x = cross.point;
       const Vec3 ua = pp.normal.cross(pa.normal).normalized(), ub = pp.normal.cross(pb.normal).normalized();
       if (!ua.allFinite() || !ub.allFinite()) continue;
-      // Spots for a and b: where they are, then either side of X, nearest first.
+      // Spots for a and b: where they are, or either side of X along their lines.
       std::vector<Vec3> spots_a{node_point_[na]}, spots_b{node_point_[nb]};
       for (double share : shares) {
         for (double sign : {1.0, -1.0}) {
@@ -116,8 +116,7 @@ int PanelLayout::aim_edge_order(const std::vector<char>& fixed_masters, double m
         if (!(std::abs(turned.distance(centre)) <= 0.5 * options_.spike_distance)) continue;
         turns.emplace_back(-turned.normal.dot(old.normal), turned);
       }
-      std::stable_sort(turns.begin(), turns.end(),
-                       [](const auto& x, const auto& y) { return x.first < y.first; });
+      std::stable_sort(turns.begin(), turns.end(), [](const auto& l, const auto& r) { return l.first < r.first; });
       master_reach(q, groups, clusters);
       bool done = false;
       for (size_t t = 0; t < turns.size() && !done; ++t) {
