@@ -235,6 +235,8 @@ void PanelAttempt::mend(const FaceData& faces, const std::vector<char>& held, co
   for (int t = 0; t < 2 && layout.num_invalid() > 0; ++t) {
     if (layout.aim_node_planes(fixed_masters) == 0) break;
   }
+  // Short edges whose two nodes came out in the wrong order with no spike to aim at.
+  if (layout.num_invalid() > 0 && layout.aim_edge_order(fixed_masters) > 0) layout.switch_pairings();
   layout.single_point_fix(fixed_masters);
 }
 

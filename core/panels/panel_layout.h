@@ -91,6 +91,15 @@ class PanelLayout {
   // only when fewer panels around the plane are invalid (aim_node_planes.cpp). fixed_masters
   // (per master, empty for none) and single-point masters stay. Returns the turns kept.
   int aim_node_planes(const std::vector<char>& fixed_masters = {}, double max_turn_deg = 5.0);
+  // At each edge of a flipped or not-simple panel (plane P) between two three-plane nodes on
+  // a shared neighbour plane Q (their other planes A and B): turns Q (by at most
+  // max_turn_deg, and only while it stays within half the spike distance of its centre) so
+  // its trace passes through chosen spots, each node kept or put just before or after the
+  // point P, A and B share, which sets the two nodes' order along the edge; the smallest
+  // turns first, each kept only when fewer panels around Q are invalid (aim_edge_order.cpp).
+  // fixed_masters (per master, empty for none) and single-point masters stay. Returns the
+  // turns kept.
+  int aim_edge_order(const std::vector<char>& fixed_masters = {}, double max_turn_deg = 30.0);
   // The masters whose planes pass through the point of a single-point group, sorted.
   std::vector<int> single_point_masters() const;
   // Replaces the plane of each master with `candidates[m]`, one at a time, keeping each
