@@ -121,7 +121,30 @@ std::vector<Plane> relax_planes(const std::vector<NodeConstraint>& nodes, const 
       free = !fixed[static_cast<size_t>(nodes[k].planes[static_cast<size_t>(j)])];
     if (free) active.push_back(k);
   }
-  std::vector<double> area(m);
+  // Which planes the iterations touch: the free ones (fitted) and every plane of an active
+  // node (its terms enter the node's solve). With most planes fixed (the later panel rounds)
+  // the loops below run over these lists only; the arithmetic per plane and per node is the
+  // same, in the same order, so the result is the same to the bit.
+  const auto is_fixed = [&](size_t i) { return !fixed.empty() && fixed[i]; };
+  std::vector<char> used(m, 0);
+  for (size_t k : active) {
+    for (int j = 0; j < nodes[k].count; ++j) used[static_cast<size_t>(nodes[k].planes[static_cast<size_t>(j)])] = 1;
+  }
+  std::vector<size_t> termed, fitted;  // planes with node terms; planes fitted each iteration
+  for (size_t i = 0; i < m; ++i) {
+    if (used[i]) termed.push_back(i);
+    if (!is_fixed(i)) fitted.push_back(i);
+  }
+  // Per active node, its free planes (the only ones whose sums are read).
+  std::vector<int> free_offset(1, 0), free_plane;
+  for (size_t k : active) {
+    for (int j = 0; j < nodes[k].count; ++j) {
+      const int i = nodes[k].planes[static_cast<size_t>(j)];
+      if (!is_fixed(static_cast<size_t>(i))) free_plane.push_back(i);
+    }
+    free_offset.push_back(static_cast<int>(free_plane.size()));
+  }
+  std::vector<double> area(m), pull(m);
   std::vector<Vec3> first(m), center(m);
   std::vector<Eigen::Matrix3d> scatter(m);
   std::vector<PlaneTerms> terms(m);
@@ -130,7 +153,7 @@ std::vector<Plane> relax_planes(const std::vector<NodeConstraint>& nodes, const 
     // Nodes: minimise c_k |x - p|^2 + W sum_i (n_i.x - d_i)^2, c_k the node's own weight.
     // Each plane's W n n^T (lower triangle) and W d n once per iteration rather than once per
     // node: the same products, so the same bits as forming them per node.
-    for (size_t i = 0; i < m; ++i) {
+    for (size_t i : termed) {
       const Vec3& n = planes[i].normal;
       const double wn[3] = {w * n.x(), w * n.y(), w * n.z()};
       const double wd = w * planes[i].offset;
@@ -155,32 +178,33 @@ std::vector<Plane> relax_planes(const std::vector<NodeConstraint>& nodes, const 
     }
     // Planes: least squares over their faces (exact moments) and their nodes (weight W w_i),
     // the scatter formed about the common centre (two passes) to keep its precision at large W.
-    for (size_t i = 0; i < m; ++i) area[i] = moments[i].area, first[i] = moments[i].first;
-    for (size_t k : active) {
-      for (int j = 0; j < nodes[k].count; ++j) {
-        const size_t i = static_cast<size_t>(nodes[k].planes[static_cast<size_t>(j)]);
-        area[i] += w * node_weight[i];
-        first[i] += w * node_weight[i] * x[k];
+    // Only the free planes: a fixed one stays as it is, its sums are not needed.
+    for (size_t i : fitted) area[i] = moments[i].area, first[i] = moments[i].first, pull[i] = w * node_weight[i];
+    for (size_t a = 0; a < active.size(); ++a) {
+      const Vec3& xk = x[active[a]];
+      for (int j = free_offset[a]; j < free_offset[a + 1]; ++j) {
+        const size_t i = static_cast<size_t>(free_plane[static_cast<size_t>(j)]);
+        area[i] += pull[i];
+        first[i] += pull[i] * xk;
       }
     }
-    for (size_t i = 0; i < m; ++i) {
-      if (!fixed.empty() && fixed[i]) continue;  // stays as it is: its scatter is not needed
+    for (size_t i : fitted) {
       // A hinged plane's scatter is about its hinge point: the plane must pass through it.
       center[i] = hinged(hinges, i) ? hinges[i].point : area[i] > 0.0 ? Vec3(first[i] / area[i]) : Vec3::Zero();
       const ClusterMoments& mo = moments[i];
       const Vec3& c = center[i];
       scatter[i] = mo.second - mo.first * c.transpose() - c * mo.first.transpose() + mo.area * c * c.transpose();
     }
-    for (size_t k : active) {
-      for (int j = 0; j < nodes[k].count; ++j) {
-        const size_t i = static_cast<size_t>(nodes[k].planes[static_cast<size_t>(j)]);
-        if (!fixed.empty() && fixed[i]) continue;
-        const Vec3 d = x[k] - center[i];
-        scatter[i] += w * node_weight[i] * d * d.transpose();
+    for (size_t a = 0; a < active.size(); ++a) {
+      const Vec3& xk = x[active[a]];
+      for (int j = free_offset[a]; j < free_offset[a + 1]; ++j) {
+        const size_t i = static_cast<size_t>(free_plane[static_cast<size_t>(j)]);
+        const Vec3 d = xk - center[i];
+        scatter[i] += pull[i] * d * d.transpose();
       }
     }
-    for (size_t i = 0; i < m; ++i) {
-      if (!(area[i] > 0.0) || (!fixed.empty() && fixed[i])) continue;
+    for (size_t i : fitted) {
+      if (!(area[i] > 0.0)) continue;
       if (hinged(hinges, i)) {
         planes[i] = hinged_fit(hinges[i], 0.5 * (scatter[i] + scatter[i].transpose()), planes[i]);
         continue;

@@ -145,6 +145,37 @@ TEST(PlaneRelax, FixedPlanesDoNotMove) {
   EXPECT_LT(d1, 0.1 * d0);
 }
 
+// The free planes depend on the fixed planes their nodes touch, and on nothing else that is
+// fixed: a node among fixed planes only and a fixed plane no free node touches change no bit
+// of the result (relax_planes loops over the planes it needs only), while moving a fixed
+// plane that a free node touches moves the free planes.
+TEST(PlaneRelax, FreePlanesIgnoreWhatNoFreeNodeTouches) {
+  const Corner3 s = barrel(Vec3(0.01, -0.01, 0.005));
+  const std::vector<Plane> alone = relax_planes(s.nodes, s.moments, s.planes, RelaxOptions{}, {1, 0, 0});
+  Corner3 more = s;
+  const Plane far = Plane::through(Vec3(5.0, 0.0, 0.0), Vec3(1.0, 0.2, 0.1).normalized());
+  more.planes.push_back(far);
+  more.moments.push_back(faces_on(far, Vec3(5.0, 0.0, 0.0)));
+  NodeConstraint fixed_only;
+  fixed_only.corner = Vec3(2.0, 0.0, 1.0);
+  fixed_only.planes = {{0, 3, -1}};
+  fixed_only.count = 2;
+  more.nodes.insert(more.nodes.begin(), fixed_only);
+  const std::vector<Plane> with = relax_planes(more.nodes, more.moments, more.planes, RelaxOptions{}, {1, 0, 0, 1});
+  ASSERT_EQ(with.size(), 4u);
+  for (size_t i = 0; i < 3; ++i) {
+    EXPECT_TRUE(with[i].normal == alone[i].normal) << i;
+    EXPECT_EQ(with[i].offset, alone[i].offset) << i;
+  }
+  EXPECT_TRUE(with[3].normal == far.normal);
+  EXPECT_EQ(with[3].offset, far.offset);
+  Corner3 moved = s;
+  moved.planes[0] = Plane::through(moved.planes[0].project(s.corner) + 0.05 * moved.planes[0].normal,
+                                   moved.planes[0].normal);
+  const std::vector<Plane> shifted = relax_planes(moved.nodes, moved.moments, moved.planes, RelaxOptions{}, {1, 0, 0});
+  EXPECT_GT(std::abs(shifted[1].offset - alone[1].offset) + std::abs(shifted[2].offset - alone[2].offset), 1e-4);
+}
+
 // A hinged plane (the neighbour of a locked panel) fits its faces only among the planes
 // through its hinge's line: it keeps containing the line exactly, however far its faces lie
 // from any such plane, and is the best fit of that pencil; a plane without a hinge fits its
