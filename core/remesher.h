@@ -213,8 +213,11 @@ class Remesher {
   ClusterMomentsCache moments_;         // the panel phase's cluster moments (faces_ and clustering_)
   PanelMesh panels_;
   int panel_rounds_done_ = 0;
-  int stalled_rounds_ = 0;  // panel rounds since the fewest invalid panels went down
-  int best_round_ = 0;      // the panel round that last lowered the fewest invalid panels
+  // Panel rounds since the fewest invalid panels went down or since the last stall split
+  // (reset by both: it paces the splits); best_round_ is not reset by splits (it paces the
+  // patience stop).
+  int stalled_rounds_ = 0;
+  int best_round_ = 0;  // the panel round that last lowered the fewest invalid panels
   // Per cluster: valid among valid panels in the last round, so it keeps its faces and plane.
   std::vector<char> settled_;
   std::vector<Plane> settled_planes_;  // per cluster: its plane in the last round

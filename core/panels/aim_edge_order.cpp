@@ -27,22 +27,6 @@ namespace ff {
 
 namespace {
 
-// The plane through `p` and `q` whose normal is nearest `plane`'s (a turn about an axis
-// perpendicular to the old normal); false when the points nearly coincide, the line is
-// nearly along the old normal, or the turn would exceed `max_turn_deg`.
-bool plane_through_pair(const Plane& plane, const Vec3& p, const Vec3& q, double length, double max_turn_deg,
-                        Plane& out) {
-  const Vec3 d = q - p;
-  if (!(d.norm() > 1e-6 * length)) return false;
-  const Vec3 dir = d.normalized();
-  Vec3 normal = plane.normal - plane.normal.dot(dir) * dir;
-  if (!(normal.norm() > 1e-6)) return false;
-  normal.normalize();
-  if (!(normal.dot(plane.normal) >= std::cos(max_turn_deg * M_PI / 180.0))) return false;
-  out = Plane::through(p, normal);
-  return true;
-}
-
 // The master of `masters` (three distinct) that is neither `x` nor `y`, or -1.
 int third_master(const int (&masters)[3], int x, int y) {
   for (int m : masters) {
@@ -110,7 +94,7 @@ int PanelLayout::aim_edge_order(const std::vector<char>& fixed_masters, double m
       std::vector<std::pair<double, Plane>> turns;
       for (size_t s = 1; s < spots_a.size() * spots_b.size(); ++s) {
         Plane turned;
-        if (!plane_through_pair(old, spots_a[s / spots_b.size()], spots_b[s % spots_b.size()], options_.diameter,
+        if (!turn_plane_through(old, spots_a[s / spots_b.size()], spots_b[s % spots_b.size()], options_.diameter,
                                 max_turn_deg, turned))
           continue;
         if (!(std::abs(turned.distance(centre)) <= 0.5 * options_.spike_distance)) continue;

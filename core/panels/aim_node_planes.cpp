@@ -29,16 +29,7 @@ namespace {
 // the turn would exceed `max_turn_deg`.
 bool turned_through(const Plane& plane, const Vec3& pivot, const Vec3& target, double length, double max_turn_deg,
                     Plane& out) {
-  const Vec3 at = plane.project(pivot);
-  const Vec3 u = target - at;
-  if (!(u.norm() > 1e-6 * length)) return false;
-  const Vec3 dir = u.normalized();
-  Vec3 normal = plane.normal - plane.normal.dot(dir) * dir;
-  if (!(normal.norm() > 1e-6)) return false;
-  normal.normalize();
-  if (!(normal.dot(plane.normal) >= std::cos(max_turn_deg * M_PI / 180.0))) return false;
-  out = Plane::through(at, normal);
-  return true;
+  return turn_plane_through(plane, plane.project(pivot), target, length, max_turn_deg, out);
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include "core/mesh/topology.h"
 #include "core/panels/panel_graph.h"
 #include "core/panels/panel_layout.h"
+#include "labelled_grid.h"
 #include "panel_checks.h"
 #include "synthetic_meshes.h"
 
@@ -23,27 +24,17 @@ namespace {
 // crosses B's. With y0 below X (0.9) the two come out swapped: P's edge along Q runs the
 // wrong way (P not simple, Q flipped), each node still within the spike distance of its
 // corner. Above X (1.2) every panel is valid.
-struct Notch {
-  TriMesh mesh = half_cells();
-  MeshTopology topology = build_topology(mesh);
-  std::vector<int> labels;
-  PanelGraph graph;
-
+struct Notch : test::LabelledGrid {
   static TriMesh half_cells() {  // 12 x 8 cells of 0.5: chains long enough to be their own nodes
     TriMesh m = test::grid(12, 8);
     for (Vec3& p : m.positions) p *= 0.5;
     return m;
   }
 
-  Notch() {
-    for (const Triangle& t : mesh.triangles) {
-      const Vec3 c = (mesh.positions[static_cast<size_t>(t[0])] + mesh.positions[static_cast<size_t>(t[1])] +
-                      mesh.positions[static_cast<size_t>(t[2])]) /
-                     3.0;
-      labels.push_back(c.y() < 2.0 ? 0 : (c.x() < 2.0 ? 1 : (c.x() < 4.0 ? 2 : 3)));
-    }
-    graph = build_panel_graph(mesh, topology, labels, 4);
-  }
+  Notch()
+      : LabelledGrid(test::labelled_grid(half_cells(), 4, [](const Vec3& c) {
+          return c.y() < 2.0 ? 0 : (c.x() < 2.0 ? 1 : (c.x() < 4.0 ? 2 : 3));
+        })) {}
 
   PanelLayout layout(double y0) const {
     const double t = 0.3, s = 0.253, r = std::sqrt(10.0);

@@ -10,6 +10,7 @@
 #include "core/panels/panel_layout.h"
 #include "core/remesher.h"
 #include "core/shapes/hard_cases.h"
+#include "labelled_grid.h"
 #include "panel_checks.h"
 #include "synthetic_meshes.h"
 
@@ -22,19 +23,10 @@ namespace {
 // A, and meeting A's and C's line at (3.5, 1, 0). With a = 0.01, s = 0.1 the three normals
 // are nearly coplanar (triple product a s = 0.001): the interior node is half a unit from
 // its corner, a spike at 0.3, while every border node is within 0.3 of its own.
-struct Strip {
-  TriMesh mesh = test::grid(6, 2);
-  MeshTopology topology = build_topology(mesh);
-  std::vector<int> labels;
-  PanelGraph graph;
-
-  Strip() {
-    for (int f = 0; f < mesh.num_faces(); ++f) {
-      const Vec3 c = face_centroid(mesh, f);
-      labels.push_back(c.y() < 1.0 ? 2 : (c.x() < 3.0 ? 0 : 1));
-    }
-    graph = build_panel_graph(mesh, topology, labels, 3);
-  }
+struct Strip : test::LabelledGrid {
+  Strip()
+      : LabelledGrid(test::labelled_grid(test::grid(6, 2), 3,
+                                         [](const Vec3& c) { return c.y() < 1.0 ? 2 : (c.x() < 3.0 ? 0 : 1); })) {}
 
   PanelLayout layout(double spike_distance) const {
     const double a = 0.01, s = 0.1;

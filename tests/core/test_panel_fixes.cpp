@@ -11,6 +11,7 @@
 #include "core/panels/panel_layout.h"
 #include "core/remesher.h"
 #include "core/shapes/hard_cases.h"
+#include "labelled_grid.h"
 #include "panel_checks.h"
 #include "remesh_checks.h"
 #include "synthetic_meshes.h"
@@ -21,19 +22,11 @@ namespace {
 // A flat 6 x 2 grid in four clusters: A (x < 2), B (2 < x < 4) and D (x > 4) above y = 1,
 // C below. Interior corners at (2, 1) (A, B, C) and (4, 1) (B, D, C); border corners at
 // (2, 2), (4, 2), (0, 1) and (6, 1).
-struct FourClusters {
-  TriMesh mesh = test::grid(6, 2);
-  MeshTopology topology = build_topology(mesh);
-  std::vector<int> labels;
-  PanelGraph graph;
-
-  FourClusters() {
-    for (int f = 0; f < mesh.num_faces(); ++f) {
-      const Vec3 c = face_centroid(mesh, f);
-      labels.push_back(c.y() < 1.0 ? 2 : (c.x() < 2.0 ? 0 : (c.x() < 4.0 ? 1 : 3)));
-    }
-    graph = build_panel_graph(mesh, topology, labels, 4);
-  }
+struct FourClusters : test::LabelledGrid {
+  FourClusters()
+      : LabelledGrid(test::labelled_grid(test::grid(6, 2), 4, [](const Vec3& c) {
+          return c.y() < 1.0 ? 2 : (c.x() < 2.0 ? 0 : (c.x() < 4.0 ? 1 : 3));
+        })) {}
 
   // A and D on z = 0, B on a plane through the line x = 3, C through the line y = 1: both
   // interior nodes land at (3, 1, 0), one unit from their corners, and so do the nodes at
