@@ -13,31 +13,57 @@ namespace ff {
 
 int PanelLayout::switch_pairings() {
   int changes = 0;
+  std::vector<PanelPolygon> saved_polygons;
+  std::vector<PanelIssues> saved_issues;
+  std::vector<std::vector<Pairing>> pairings;  // per k, node_pairings(k) once per call
   for (size_t g = 0; g < groups_.groups.size(); ++g) {
     const int k = static_cast<int>(groups_.groups[g].clusters.size());
     if (k < 4 || held_group_[g]) continue;
     const std::vector<int> around = clusters_of_group(static_cast<int>(g));
-    const auto invalid_around = [&]() {
-      int count = 0;
-      for (int c : around) count += issues_[static_cast<size_t>(c)].valid() ? 0 : 1;
-      return count;
-    };
-    int best = invalid_around();
+    int best = 0;
+    for (int c : around) best += issues_[static_cast<size_t>(c)].valid() ? 0 : 1;
     if (best == 0) continue;
+    // The panels as they are (swapped out, their memory reused by the trials): put back when
+    // no other pairing does better, instead of built again.
+    if (saved_polygons.size() < around.size()) saved_polygons.resize(around.size());
+    saved_issues.resize(around.size());
+    for (size_t i = 0; i < around.size(); ++i) {
+      std::swap(saved_polygons[i], polygons_[static_cast<size_t>(around[i])]);
+      saved_issues[i] = issues_[static_cast<size_t>(around[i])];
+    }
     const Pairing original = pairing_[g];
     Pairing best_pairing = original;
-    for (const Pairing& p : node_pairings(k)) {
+    bool built_best = false;  // the panels are those of best_pairing (the last one tried)
+    if (pairings.size() <= static_cast<size_t>(k)) pairings.resize(static_cast<size_t>(k) + 1);
+    if (pairings[static_cast<size_t>(k)].empty()) pairings[static_cast<size_t>(k)] = node_pairings(k);
+    for (const Pairing& p : pairings[static_cast<size_t>(k)]) {
       if (p == original) continue;
       pairing_[g] = p;
       place_group_nodes(static_cast<int>(g));
-      rebuild(around);
-      const int now = invalid_around();
-      if (now < best) best = now, best_pairing = p;
+      // Built one by one, given up once as many are invalid as with the best so far.
+      int now = 0;
+      size_t built = 0;
+      for (; built < around.size() && now < best; ++built) {
+        build_panel(around[built]);
+        now += issues_[static_cast<size_t>(around[built])].valid() ? 0 : 1;
+      }
+      built_best = built == around.size() && now < best;
+      if (built_best) best = now, best_pairing = p;
     }
-    pairing_[g] = best_pairing;
-    place_group_nodes(static_cast<int>(g));
-    rebuild(around);
-    if (best_pairing != original) ++changes;
+    const bool changed = best_pairing != original;
+    if (pairing_[g] != best_pairing) {
+      pairing_[g] = best_pairing;
+      place_group_nodes(static_cast<int>(g));
+    }
+    if (!changed) {
+      for (size_t i = 0; i < around.size(); ++i) {
+        std::swap(saved_polygons[i], polygons_[static_cast<size_t>(around[i])]);
+        issues_[static_cast<size_t>(around[i])] = saved_issues[i];
+      }
+    } else if (!built_best) {
+      rebuild(around);
+    }
+    if (changed) ++changes;
   }
   return changes;
 }
