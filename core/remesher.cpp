@@ -299,7 +299,7 @@ void Remesher::optimize_planes() {
     // The fitted planes move together, but try_planes takes them one at a time, each only
     // where the panels stay valid: a plane refused while its neighbours were still where they
     // were may pass once they moved (a second pass), or part of the way (half, then a quarter).
-    if (layout.try_planes(fitted) > 0) layout.try_planes(fitted);
+    layout.try_planes(fitted, 2);
     for (double step : {0.5, 0.25}) layout.try_planes(planes_toward(layout.planes().planes, fitted, step));
   }
   // Last: it pins planes to points, which the fit above would undo.

@@ -13,31 +13,57 @@ namespace ff {
 
 int PanelLayout::switch_pairings() {
   int changes = 0;
+  std::vector<PanelPolygon> saved_polygons;
+  std::vector<PanelIssues> saved_issues;
+  std::vector<std::vector<Pairing>> pairings;  // per k, node_pairings(k) once per call
   for (size_t g = 0; g < groups_.groups.size(); ++g) {
     const int k = static_cast<int>(groups_.groups[g].clusters.size());
     if (k < 4 || held_group_[g]) continue;
     const std::vector<int> around = clusters_of_group(static_cast<int>(g));
-    const auto invalid_around = [&]() {
-      int count = 0;
-      for (int c : around) count += issues_[static_cast<size_t>(c)].valid() ? 0 : 1;
-      return count;
-    };
-    int best = invalid_around();
+    int best = 0;
+    for (int c : around) best += issues_[static_cast<size_t>(c)].valid() ? 0 : 1;
     if (best == 0) continue;
+    // The panels as they are (swapped out, their memory reused by the trials): put back when
+    // no other pairing does better, instead of built again.
+    if (saved_polygons.size() < around.size()) saved_polygons.resize(around.size());
+    saved_issues.resize(around.size());
+    for (size_t i = 0; i < around.size(); ++i) {
+      std::swap(saved_polygons[i], polygons_[static_cast<size_t>(around[i])]);
+      saved_issues[i] = issues_[static_cast<size_t>(around[i])];
+    }
     const Pairing original = pairing_[g];
     Pairing best_pairing = original;
-    for (const Pairing& p : node_pairings(k)) {
+    bool built_best = false;  // the panels are those of best_pairing (the last one tried)
+    if (pairings.size() <= static_cast<size_t>(k)) pairings.resize(static_cast<size_t>(k) + 1);
+    if (pairings[static_cast<size_t>(k)].empty()) pairings[static_cast<size_t>(k)] = node_pairings(k);
+    for (const Pairing& p : pairings[static_cast<size_t>(k)]) {
       if (p == original) continue;
       pairing_[g] = p;
       place_group_nodes(static_cast<int>(g));
-      rebuild(around);
-      const int now = invalid_around();
-      if (now < best) best = now, best_pairing = p;
+      // Built one by one, given up once as many are invalid as with the best so far.
+      int now = 0;
+      size_t built = 0;
+      for (; built < around.size() && now < best; ++built) {
+        build_panel(around[built]);
+        now += issues_[static_cast<size_t>(around[built])].valid() ? 0 : 1;
+      }
+      built_best = built == around.size() && now < best;
+      if (built_best) best = now, best_pairing = p;
     }
-    pairing_[g] = best_pairing;
-    place_group_nodes(static_cast<int>(g));
-    rebuild(around);
-    if (best_pairing != original) ++changes;
+    const bool changed = best_pairing != original;
+    if (pairing_[g] != best_pairing) {
+      pairing_[g] = best_pairing;
+      place_group_nodes(static_cast<int>(g));
+    }
+    if (!changed) {
+      for (size_t i = 0; i < around.size(); ++i) {
+        std::swap(saved_polygons[i], polygons_[static_cast<size_t>(around[i])]);
+        issues_[static_cast<size_t>(around[i])] = saved_issues[i];
+      }
+    } else if (!built_best) {
+      rebuild(around);
+    }
+    if (changed) ++changes;
   }
   return changes;
 }
@@ -106,33 +132,95 @@ void PanelLayout::master_reach(int master, std::vector<int>& groups, std::vector
   clusters.erase(std::unique(clusters.begin(), clusters.end()), clusters.end());
 }
 
-int PanelLayout::try_planes(const std::vector<Plane>& candidates) {
-  int kept = 0;
+int PanelLayout::try_planes(const std::vector<Plane>& candidates, int passes) {
+  const size_t masters = planes_.planes.size();
   const std::vector<int> pinned = single_point_masters();  // they must keep their point
-  for (size_t m = 0; m < planes_.planes.size(); ++m) {
-    const Plane old = planes_.planes[m];
-    const Plane& cand = candidates[m];
-    if (cand.normal == old.normal && cand.offset == old.offset) continue;
-    if (std::binary_search(pinned.begin(), pinned.end(), static_cast<int>(m))) continue;
-    // The groups and panels this plane reaches.
-    std::vector<int> groups, clusters;
-    master_reach(static_cast<int>(m), groups, clusters);
-    int before = 0;
-    for (int c : clusters) before += issues_[static_cast<size_t>(c)].valid() ? 0 : 1;
-    planes_.planes[m] = cand;
-    for (int g : groups) place_group_nodes(g);
-    rebuild(clusters);
-    int after = 0;
-    for (int c : clusters) after += issues_[static_cast<size_t>(c)].valid() ? 0 : 1;
-    if (after <= before) {
-      ++kept;
-    } else {
-      planes_.planes[m] = old;
-      for (int g : groups) place_group_nodes(g);
-      rebuild(clusters);
-    }
+  // Per master, its clusters (master_of does not change here): master_reach without a scan
+  // over all clusters per master.
+  std::vector<int> first(masters + 1, 0), of_master(planes_.master_of.size());
+  for (int m : planes_.master_of) ++first[static_cast<size_t>(m) + 1];
+  for (size_t m = 0; m < masters; ++m) first[m + 1] += first[m];
+  {
+    std::vector<int> at(first.begin(), first.end() - 1);
+    for (size_t c = 0; c < planes_.master_of.size(); ++c)
+      of_master[static_cast<size_t>(at[static_cast<size_t>(planes_.master_of[c])]++)] = static_cast<int>(c);
   }
-  return kept;
+  // A trial reads only the planes of the clusters it rebuilds and the nodes of their groups,
+  // and all of those are rebuilt by any kept change that could alter them. So a plane refused
+  // before no panel it reaches changed since is refused again: skipped (same result).
+  std::vector<long> refused_at(masters, -1), changed_at(polygons_.size(), -1);
+  long clock = 0;
+  std::vector<int> groups, clusters;
+  std::vector<PanelPolygon> saved_polygons;
+  std::vector<PanelIssues> saved_issues;
+  int total = 0;
+  for (int pass = 0; pass < passes; ++pass) {
+    int kept = 0;
+    for (size_t m = 0; m < masters; ++m) {
+      const Plane old = planes_.planes[m];
+      const Plane& cand = candidates[m];
+      if (cand.normal == old.normal && cand.offset == old.offset) continue;
+      if (std::binary_search(pinned.begin(), pinned.end(), static_cast<int>(m))) continue;
+      // The groups and panels this plane reaches (as master_reach).
+      groups.clear(), clusters.clear();
+      for (int i = first[m]; i < first[m + 1]; ++i) {
+        const int c = of_master[static_cast<size_t>(i)];
+        clusters.push_back(c);
+        for (int g : groups_of_cluster_[static_cast<size_t>(c)]) groups.push_back(g);
+      }
+      std::sort(groups.begin(), groups.end());
+      groups.erase(std::unique(groups.begin(), groups.end()), groups.end());
+      for (int g : groups) {
+        for (int c : groups_.groups[static_cast<size_t>(g)].clusters) {
+          if (c != kBoundary) clusters.push_back(c);
+        }
+      }
+      std::sort(clusters.begin(), clusters.end());
+      clusters.erase(std::unique(clusters.begin(), clusters.end()), clusters.end());
+      if (refused_at[m] >= 0) {
+        bool moved = false;
+        for (int c : clusters) moved = moved || changed_at[static_cast<size_t>(c)] > refused_at[m];
+        if (!moved) continue;
+      }
+      int before = 0;
+      for (int c : clusters) before += issues_[static_cast<size_t>(c)].valid() ? 0 : 1;
+      // The panels as they are, to put back if the plane is refused (swapped, not copied: the
+      // vectors' memory is reused by the rebuild).
+      if (saved_polygons.size() < clusters.size()) saved_polygons.resize(clusters.size());
+      saved_issues.resize(clusters.size());
+      for (size_t i = 0; i < clusters.size(); ++i) {
+        std::swap(saved_polygons[i], polygons_[static_cast<size_t>(clusters[i])]);
+        saved_issues[i] = issues_[static_cast<size_t>(clusters[i])];
+      }
+      planes_.planes[m] = cand;
+      for (int g : groups) place_group_nodes(g);
+      // Built one by one, refused as soon as more are invalid than before (the rest would
+      // only add to that); a refused trial is undone below either way.
+      int after = 0;
+      for (size_t i = 0; i < clusters.size() && after <= before; ++i) {
+        build_panel(clusters[i]);
+        after += issues_[static_cast<size_t>(clusters[i])].valid() ? 0 : 1;
+      }
+      ++clock;
+      if (after <= before) {
+        ++kept;
+        for (int c : clusters) changed_at[static_cast<size_t>(c)] = clock;
+      } else {
+        // Nodes and panels are functions of the planes: placing the groups again gives back
+        // exactly what they were; the panels come back from the saved ones.
+        planes_.planes[m] = old;
+        for (int g : groups) place_group_nodes(g);
+        for (size_t i = 0; i < clusters.size(); ++i) {
+          std::swap(saved_polygons[i], polygons_[static_cast<size_t>(clusters[i])]);
+          issues_[static_cast<size_t>(clusters[i])] = saved_issues[i];
+        }
+        refused_at[m] = clock;
+      }
+    }
+    total += kept;
+    if (kept == 0) break;
+  }
+  return total;
 }
 
 std::vector<char> PanelLayout::spike_master_clusters() const {

@@ -57,6 +57,7 @@ PanelLayout::PanelLayout(const TriMesh& mesh, const MeshTopology& topology, cons
   node_group_.assign(nodes, -1);
   node_alias_.assign(nodes, -1);
   groups_of_cluster_.assign(clusters, {});
+  std::vector<std::vector<Pairing>> pairings;  // per k, node_pairings(k) once
   for (size_t g = 0; g < groups; ++g) {
     const NodeGroup& group = groups_.groups[g];
     for (int c : group.clusters) {
@@ -68,8 +69,14 @@ PanelLayout::PanelLayout(const TriMesh& mesh, const MeshTopology& topology, cons
     } else {
       // The pairing whose nodes stay closest to where they belong (fig. 6); validation and
       // switch_pairings() correct it where it flips an edge.
-      std::vector<Pairing> options = node_pairings(k);
-      held_group_[g] = hold_pairings(group.clusters, options_.held_nodes, options);
+      if (pairings.size() <= static_cast<size_t>(k)) pairings.resize(static_cast<size_t>(k) + 1);
+      if (pairings[static_cast<size_t>(k)].empty()) pairings[static_cast<size_t>(k)] = node_pairings(k);
+      std::vector<Pairing> held;  // a copy only where locked panels' nodes filter them
+      if (!options_.held_nodes.empty()) {
+        held = pairings[static_cast<size_t>(k)];
+        held_group_[g] = hold_pairings(group.clusters, options_.held_nodes, held);
+      }
+      const std::vector<Pairing>& options = held_group_[g] ? held : pairings[static_cast<size_t>(k)];
       double best = std::numeric_limits<double>::infinity();
       Pairing chosen = options.front();  // even if every cost is infinite or NaN
       for (const Pairing& p : options) {

@@ -106,7 +106,10 @@ class PanelLayout {
   // change that does not add invalid panels around it (beyond the paper: planes fitted to
   // the surface). Returns how many it kept.
   // Masters pinned through a single point (single_point_fix) keep their planes.
-  int try_planes(const std::vector<Plane>& candidates);
+  // passes: up to this many passes over the masters, another only after one kept any (a
+  // plane refused while its neighbours were elsewhere may pass once they moved); a plane is
+  // tried again only when a panel it reaches changed since it was refused. Returns the total.
+  int try_planes(const std::vector<Plane>& candidates, int passes = 1);
 
   // Every node's reference point and master planes (for plane_relax.h), new planes for all
   // masters, and which nodes are spikes (too far, or planes without a common point).
