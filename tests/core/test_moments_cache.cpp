@@ -11,8 +11,10 @@
 #include "core/cluster/lloyd.h"
 #include "core/cluster/moments_cache.h"
 #include "core/cluster/seeding.h"
+#include "core/cluster/teleport.h"
 #include "core/mesh/topology.h"
 #include "core/shapes/hard_cases.h"
+#include "core/shapes/shapes.h"
 #include "core/util/random.h"
 
 namespace ff {
@@ -77,6 +79,52 @@ TEST(MomentsCache, MatchesFullSumsAndRefitBitForBit) {
   const std::vector<ClusterMoments>& kept = cache.update(faces, plain.labels, 29);
   ASSERT_EQ(kept.size(), 29u);
   for (size_t c = 0; c < full.size(); ++c) EXPECT_TRUE(same_moments(full[c], kept[c]));
+}
+
+// The Lloyd phase through the cache (lloyd_iteration, teleport and its reflood) walks the
+// same path as without it, bit for bit, teleports and all; the clusters an iteration leaves
+// alone (there must be some) are where the cache spares work.
+TEST(MomentsCache, LloydAndTeleportThroughTheCacheAreBitIdentical) {
+  // All seeds crowded into one corner of a roof, so the teleports have work to do.
+  const TriMesh mesh = make_roof(60, 40);
+  const MeshTopology topology = build_topology(mesh);
+  const FaceData faces = make_face_data(mesh, {});
+  const Metric metric(faces, MetricWeights{}, 30);
+  std::vector<int> crowded;
+  for (int j = 0; j < 6; ++j)
+    for (int i = 0; i < 5; ++i) crowded.push_back(2 * (j * 60 + i));
+  Clustering plain = initial_clustering(metric, topology, crowded);
+  Clustering cached = plain;
+  ClusterMomentsCache cache;
+  int teleported = 0, kept_clusters = 0;
+  for (int it = 1; it <= 40; ++it) {
+    const std::vector<int> before = plain.labels;
+    if (it % 4 == 0 && it <= 12) {  // teleports early, then Lloyd settles
+      const int a = teleport(metric, topology, plain, TeleportOptions{2, 3});
+      const int b = teleport(metric, topology, cached, TeleportOptions{2, 3}, &cache);
+      ASSERT_EQ(a, b) << "iteration " << it;
+      teleported += a;
+    } else {
+      const LloydResult a = lloyd_iteration(metric, topology, plain);
+      const LloydResult b = lloyd_iteration(metric, topology, cached, &cache);
+      ASSERT_EQ(a.changed_faces, b.changed_faces) << "iteration " << it;
+      EXPECT_TRUE(same_bits(a.energy.total(), b.energy.total())) << "iteration " << it;
+    }
+    ASSERT_EQ(plain.labels, cached.labels) << "iteration " << it;
+    ASSERT_EQ(plain.seeds, cached.seeds) << "iteration " << it;
+    EXPECT_TRUE(same_bits(plain.energy, cached.energy)) << "iteration " << it;
+    std::vector<char> changed(static_cast<size_t>(plain.num_clusters()), 0);
+    for (size_t f = 0; f < before.size(); ++f) {
+      if (before[f] != plain.labels[f])
+        changed[static_cast<size_t>(before[f])] = changed[static_cast<size_t>(plain.labels[f])] = 1;
+    }
+    for (char k : changed) kept_clusters += k == 0;
+    for (int c = 0; c < plain.num_clusters(); ++c)
+      ASSERT_TRUE(same_proxy(plain.proxies[static_cast<size_t>(c)], cached.proxies[static_cast<size_t>(c)]))
+          << "iteration " << it << " cluster " << c;
+  }
+  EXPECT_GT(teleported, 0);
+  EXPECT_GT(kept_clusters, 0);
 }
 
 }  // namespace
