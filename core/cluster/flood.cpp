@@ -36,6 +36,11 @@ class QuadHeap {
     }
     items_[i] = e;
   }
+  // Bottom-up: the hole walks down along the smaller children to a leaf (3 comparisons a
+  // level, as a pairwise tournament), then the last entry, which belongs near the bottom,
+  // sifts up from there; a top-down sift would also compare it with every child pair.
+  // (cost, face) is a strict total order over the entries (a face is pushed again only at
+  // a lower cost), so any exact heap pops the same sequence.
   Entry pop() {
     const Entry top = items_.front();
     const Entry last = items_.back();
@@ -45,15 +50,27 @@ class QuadHeap {
     size_t i = 0;
     for (;;) {
       const size_t first = 4 * i + 1;
-      if (first >= n) break;
-      size_t best = first;
-      const size_t end = std::min(first + 4, n);
-      for (size_t k = first + 1; k < end; ++k) {
-        if (before(items_[k], items_[best])) best = k;
+      size_t best;
+      if (first + 4 <= n) {
+        const size_t a = before(items_[first + 1], items_[first]) ? first + 1 : first;
+        const size_t b = before(items_[first + 3], items_[first + 2]) ? first + 3 : first + 2;
+        best = before(items_[b], items_[a]) ? b : a;
+      } else if (first < n) {
+        best = first;
+        for (size_t k = first + 1; k < n; ++k) {
+          if (before(items_[k], items_[best])) best = k;
+        }
+      } else {
+        break;
       }
-      if (!before(items_[best], last)) break;
       items_[i] = items_[best];
       i = best;
+    }
+    while (i > 0) {
+      const size_t parent = (i - 1) / 4;
+      if (!before(last, items_[parent])) break;
+      items_[i] = items_[parent];
+      i = parent;
     }
     items_[i] = last;
     return top;
