@@ -4,6 +4,8 @@
 #include <array>
 #include <limits>
 
+#include "core/cluster/quad_heap.h"
+
 namespace ff {
 
 namespace {
@@ -14,70 +16,10 @@ struct Entry {
 };
 
 // Ties broken by face so the result never depends on anything but the input.
-inline bool before(const Entry& a, const Entry& b) { return a.cost < b.cost || (a.cost == b.cost && a.face < b.face); }
-
-// A 4-ary min-heap: half the levels of a binary heap and children on one cache line, which
-// is what a flood of a million faces spends its time on.
-class QuadHeap {
- public:
-  bool empty() const { return items_.empty(); }
-  size_t size() const { return items_.size(); }
-  const Entry& at(size_t i) const { return items_[i]; }
-  const Entry& top() const { return items_.front(); }
-  void reserve(size_t n) { items_.reserve(n); }
-  void push(Entry e) {
-    size_t i = items_.size();
-    items_.push_back(e);
-    while (i > 0) {
-      const size_t parent = (i - 1) / 4;
-      if (!before(e, items_[parent])) break;
-      items_[i] = items_[parent];
-      i = parent;
-    }
-    items_[i] = e;
+struct Before {
+  bool operator()(const Entry& a, const Entry& b) const {
+    return a.cost < b.cost || (a.cost == b.cost && a.face < b.face);
   }
-  // Bottom-up: the hole walks down along the smaller children to a leaf (3 comparisons a
-  // level, as a pairwise tournament), then the last entry, which belongs near the bottom,
-  // sifts up from there; a top-down sift would also compare it with every child pair.
-  // (cost, face) is a strict total order over the entries (a face is pushed again only at
-  // a lower cost), so any exact heap pops the same sequence.
-  Entry pop() {
-    const Entry top = items_.front();
-    const Entry last = items_.back();
-    items_.pop_back();
-    const size_t n = items_.size();
-    if (n == 0) return top;
-    size_t i = 0;
-    for (;;) {
-      const size_t first = 4 * i + 1;
-      size_t best;
-      if (first + 4 <= n) {
-        const size_t a = before(items_[first + 1], items_[first]) ? first + 1 : first;
-        const size_t b = before(items_[first + 3], items_[first + 2]) ? first + 3 : first + 2;
-        best = before(items_[b], items_[a]) ? b : a;
-      } else if (first < n) {
-        best = first;
-        for (size_t k = first + 1; k < n; ++k) {
-          if (before(items_[k], items_[best])) best = k;
-        }
-      } else {
-        break;
-      }
-      items_[i] = items_[best];
-      i = best;
-    }
-    while (i > 0) {
-      const size_t parent = (i - 1) / 4;
-      if (!before(last, items_[parent])) break;
-      items_[i] = items_[parent];
-      i = parent;
-    }
-    items_[i] = last;
-    return top;
-  }
-
- private:
-  std::vector<Entry> items_;
 };
 
 }  // namespace
@@ -102,7 +44,7 @@ double flood(const Metric& metric, const MeshTopology& topology, Clustering& clu
     int label = -1;
   };
   std::vector<FaceState> state(static_cast<size_t>(faces));
-  QuadHeap queue;
+  QuadHeap<Entry, Before> queue;
   queue.reserve(static_cast<size_t>(faces) / 8 + 64);
 
   const FaceData& records = metric.faces();
