@@ -102,7 +102,7 @@ namespace {
 // Most clusters keep their faces here (the settled ones): `moments` sums only the others.
 void panel_lloyd_iteration(const Metric& metric, const MeshTopology& topology, Clustering& clustering,
                            const ExtraCost* extra, ClusterMomentsCache& moments) {
-  choose_seeds(metric, clustering);
+  moments.choose_seeds(metric, clustering);
   flood(metric, topology, clustering, extra, /*with_energy=*/false);
   moments.refit(metric, clustering);
   for (int& s : clustering.sticky) {

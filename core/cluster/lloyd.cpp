@@ -42,7 +42,11 @@ LloydResult reflood(const Metric& metric, const MeshTopology& topology, Clusteri
 
 LloydResult lloyd_iteration(const Metric& metric, const MeshTopology& topology, Clustering& clustering,
                             ClusterMomentsCache* moments) {
-  choose_seeds(metric, clustering);
+  if (moments) {
+    moments->choose_seeds(metric, clustering);
+  } else {
+    choose_seeds(metric, clustering);
+  }
   const std::vector<int> before = clustering.labels;
   const double energy_before = clustering.energy;  // under the current proxies (refit() keeps it)
   const double flooded = flood(metric, topology, clustering);
