@@ -88,7 +88,7 @@ void Remesher::start_lloyd() {
 }
 
 void Remesher::after_lloyd() {
-  moments_.clear();
+  // moments_ holds the last Lloyd refit's moments: the first panel round starts from them.
   if (!params_.make_panels) {
     progress_.stage = Stage::Done;
     return;
@@ -102,7 +102,7 @@ namespace {
 // Most clusters keep their faces here (the settled ones): `moments` sums only the others.
 void panel_lloyd_iteration(const Metric& metric, const MeshTopology& topology, Clustering& clustering,
                            const ExtraCost* extra, ClusterMomentsCache& moments) {
-  choose_seeds(metric, clustering);
+  moments.choose_seeds(metric, clustering);
   flood(metric, topology, clustering, extra, /*with_energy=*/false);
   moments.refit(metric, clustering);
   for (int& s : clustering.sticky) {
@@ -332,12 +332,12 @@ Progress Remesher::step() {
       if (params_.teleport_interval > 0 && it % params_.teleport_interval == 0 && it + 2 <= params_.lloyd_iterations) {
         TeleportOptions options;
         options.max_moves = params_.teleport_moves > 0 ? params_.teleport_moves : std::max(1, params_.panels / 64);
-        moves = teleport(metric_, topology_, clustering_, options);
+        moves = teleport(metric_, topology_, clustering_, options, &moments_);
         teleports_ += moves;
       }
       // A teleport refloods and refits, which is this iteration's work; otherwise one Lloyd step.
       if (moves == 0) {
-        const LloydResult r = lloyd_iteration(metric_, topology_, clustering_);
+        const LloydResult r = lloyd_iteration(metric_, topology_, clustering_, &moments_);
         if (r.changed_faces == 0) converged_ = true;
       }
       lloyd_done_ = it;

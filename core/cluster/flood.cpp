@@ -4,6 +4,8 @@
 #include <array>
 #include <limits>
 
+#include "core/cluster/quad_heap.h"
+
 namespace ff {
 
 namespace {
@@ -14,53 +16,10 @@ struct Entry {
 };
 
 // Ties broken by face so the result never depends on anything but the input.
-inline bool before(const Entry& a, const Entry& b) { return a.cost < b.cost || (a.cost == b.cost && a.face < b.face); }
-
-// A 4-ary min-heap: half the levels of a binary heap and children on one cache line, which
-// is what a flood of a million faces spends its time on.
-class QuadHeap {
- public:
-  bool empty() const { return items_.empty(); }
-  size_t size() const { return items_.size(); }
-  const Entry& at(size_t i) const { return items_[i]; }
-  const Entry& top() const { return items_.front(); }
-  void reserve(size_t n) { items_.reserve(n); }
-  void push(Entry e) {
-    size_t i = items_.size();
-    items_.push_back(e);
-    while (i > 0) {
-      const size_t parent = (i - 1) / 4;
-      if (!before(e, items_[parent])) break;
-      items_[i] = items_[parent];
-      i = parent;
-    }
-    items_[i] = e;
+struct Before {
+  bool operator()(const Entry& a, const Entry& b) const {
+    return a.cost < b.cost || (a.cost == b.cost && a.face < b.face);
   }
-  Entry pop() {
-    const Entry top = items_.front();
-    const Entry last = items_.back();
-    items_.pop_back();
-    const size_t n = items_.size();
-    if (n == 0) return top;
-    size_t i = 0;
-    for (;;) {
-      const size_t first = 4 * i + 1;
-      if (first >= n) break;
-      size_t best = first;
-      const size_t end = std::min(first + 4, n);
-      for (size_t k = first + 1; k < end; ++k) {
-        if (before(items_[k], items_[best])) best = k;
-      }
-      if (!before(items_[best], last)) break;
-      items_[i] = items_[best];
-      i = best;
-    }
-    items_[i] = last;
-    return top;
-  }
-
- private:
-  std::vector<Entry> items_;
 };
 
 }  // namespace
@@ -85,7 +44,7 @@ double flood(const Metric& metric, const MeshTopology& topology, Clustering& clu
     int label = -1;
   };
   std::vector<FaceState> state(static_cast<size_t>(faces));
-  QuadHeap queue;
+  QuadHeap<Entry, Before> queue;
   queue.reserve(static_cast<size_t>(faces) / 8 + 64);
 
   const FaceData& records = metric.faces();

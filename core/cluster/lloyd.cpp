@@ -7,6 +7,11 @@ namespace ff {
 
 namespace {
 
+// refit(), through the cache when there is one (the same bits either way).
+EnergyTerms refit_with(const Metric& metric, Clustering& clustering, ClusterMomentsCache* moments) {
+  return moments ? moments->refit(metric, clustering) : refit(metric, clustering);
+}
+
 int count_changes(const std::vector<int>& before, const std::vector<int>& after) {
   int changed = 0;
   for (size_t f = 0; f < after.size(); ++f) changed += f >= before.size() || before[f] != after[f];
@@ -25,17 +30,23 @@ Clustering initial_clustering(const Metric& metric, const MeshTopology& topology
   return c;
 }
 
-LloydResult reflood(const Metric& metric, const MeshTopology& topology, Clustering& clustering) {
+LloydResult reflood(const Metric& metric, const MeshTopology& topology, Clustering& clustering,
+                    ClusterMomentsCache* moments) {
   const std::vector<int> before = clustering.labels;
   flood(metric, topology, clustering);
   LloydResult result;
   result.changed_faces = count_changes(before, clustering.labels);
-  result.energy = refit(metric, clustering);
+  result.energy = refit_with(metric, clustering, moments);
   return result;
 }
 
-LloydResult lloyd_iteration(const Metric& metric, const MeshTopology& topology, Clustering& clustering) {
-  choose_seeds(metric, clustering);
+LloydResult lloyd_iteration(const Metric& metric, const MeshTopology& topology, Clustering& clustering,
+                            ClusterMomentsCache* moments) {
+  if (moments) {
+    moments->choose_seeds(metric, clustering);
+  } else {
+    choose_seeds(metric, clustering);
+  }
   const std::vector<int> before = clustering.labels;
   const double energy_before = clustering.energy;  // under the current proxies (refit() keeps it)
   const double flooded = flood(metric, topology, clustering);
@@ -49,7 +60,7 @@ LloydResult lloyd_iteration(const Metric& metric, const MeshTopology& topology, 
   }
   LloydResult result;
   result.changed_faces = count_changes(before, clustering.labels);
-  result.energy = refit(metric, clustering);
+  result.energy = refit_with(metric, clustering, moments);
   for (int& s : clustering.sticky) {
     if (s > 0) --s;
   }

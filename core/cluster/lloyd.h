@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "core/cluster/clustering.h"
+#include "core/cluster/moments_cache.h"
 
 namespace ff {
 
@@ -14,10 +15,15 @@ struct LloydResult {
 // Clusters grown from the given seed faces with single-face proxies, then refitted.
 Clustering initial_clustering(const Metric& metric, const MeshTopology& topology, const std::vector<int>& seeds);
 
-// One iteration; counts down stickiness.
-LloydResult lloyd_iteration(const Metric& metric, const MeshTopology& topology, Clustering& clustering);
+// One iteration; counts down stickiness. `moments` (optional, kept by the caller across
+// iterations on the same FaceData): refit through it, so only the clusters whose faces changed
+// are summed and fitted again; the result is the same bits as without it.
+LloydResult lloyd_iteration(const Metric& metric, const MeshTopology& topology, Clustering& clustering,
+                            ClusterMomentsCache* moments = nullptr);
 
 // Floods from the current seeds and refits: used after seeds or proxies were changed by hand.
-LloydResult reflood(const Metric& metric, const MeshTopology& topology, Clustering& clustering);
+// `moments` as for lloyd_iteration.
+LloydResult reflood(const Metric& metric, const MeshTopology& topology, Clustering& clustering,
+                    ClusterMomentsCache* moments = nullptr);
 
 }  // namespace ff

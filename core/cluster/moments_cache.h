@@ -21,7 +21,12 @@ class ClusterMomentsCache {
   // whose faces did not change and whose proxy is still the one the last refit() gave it
   // keeps that proxy without fitting again. The metric must be the one of earlier calls.
   EnergyTerms refit(const Metric& metric, Clustering& clustering);
-  // Forget everything: the next update() sums all faces.
+  // choose_seeds(metric, clustering), the same bits: a cluster's new seed is a function of
+  // its faces, proxy, stickiness and old seed, so a cluster whose faces, proxy and seed are
+  // what they were after the last call here (and was not sticky then) keeps its seed without
+  // a pass over its faces. The metric must be the one of earlier calls.
+  void choose_seeds(const Metric& metric, Clustering& clustering);
+  // Forget everything: the next update() sums all faces, the next choose_seeds() visits all.
   void clear();
 
  private:
@@ -30,6 +35,12 @@ class ClusterMomentsCache {
   std::vector<char> dirty_;      // update()'s working memory
   std::vector<Proxy> fitted_;    // per cluster: the proxy the last refit() gave it
   std::vector<char> fitted_ok_;  // per cluster: fitted_ holds the fit of its current moments
+  // choose_seeds(): the labels, and per cluster the proxy and the seed, as of its last call;
+  // seeded_ marks the clusters it chose a seed for then (not sticky).
+  std::vector<int> seed_labels_;
+  std::vector<Proxy> seed_proxies_;
+  std::vector<int> seed_results_;
+  std::vector<char> seeded_, seed_work_;
 };
 
 }  // namespace ff

@@ -3,11 +3,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <memory>
-#include <queue>
 #include <string>
 
+#include "core/cluster/quad_heap.h"
 #include "core/util/error.h"
 #include "core/util/random.h"
 
@@ -82,6 +83,10 @@ class DistanceBuckets {
     for (int f : faces) max_dist = std::max(max_dist, dist[static_cast<size_t>(f)]);
     width_ = max_dist > 0.0 ? max_dist / (kBuckets - 1) : 1.0;
     buckets_.resize(kBuckets);
+    // Sized up front: thousands of buckets grown one face at a time cost more than the fill.
+    std::vector<int> count(kBuckets, 0);
+    for (int f : faces) ++count[static_cast<size_t>(index(dist[static_cast<size_t>(f)]))];
+    for (size_t b = 0; b < buckets_.size(); ++b) buckets_[b].reserve(static_cast<size_t>(count[b]) + 2);
     for (int f : faces) buckets_[static_cast<size_t>(index(dist[static_cast<size_t>(f)]))].push_back(f);
     top_ = kBuckets - 1;
   }
@@ -159,7 +164,7 @@ void farthest_seeds(const std::vector<double>& weight, const MeshTopology& topol
   random_seeds(weight, candidates, 1, rng, taken, first);
   int next = first.front();
   std::unique_ptr<DistanceBuckets> buckets;
-  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> frontier;
+  QuadHeap<Item, std::less<Item>> frontier;  // nearest first; (distance, face) orders it strictly
   for (int s = 0; s < count; ++s) {
     taken[static_cast<size_t>(next)] = 1;
     seeds.push_back(next);
@@ -167,8 +172,7 @@ void farthest_seeds(const std::vector<double>& weight, const MeshTopology& topol
     dist[static_cast<size_t>(next)] = 0.0;
     frontier.push({0.0, next});
     while (!frontier.empty()) {
-      const auto [d, f] = frontier.top();
-      frontier.pop();
+      const auto [d, f] = frontier.pop();
       if (d > dist[static_cast<size_t>(f)]) continue;
       for (size_t i = 0; i < 3; ++i) {
         const int g = topology.face_neighbors[static_cast<size_t>(f)][i];

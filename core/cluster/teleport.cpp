@@ -25,10 +25,10 @@ struct ClusterStats {
   std::vector<int> worst_face;  // the face farthest from the proxy (never the seed), or -1
 };
 
-ClusterStats cluster_stats(const Metric& metric, const Clustering& c) {
+ClusterStats cluster_stats(const Metric& metric, const Clustering& c, ClusterMomentsCache* cache = nullptr) {
   ClusterStats s;
   const int n = c.num_clusters();
-  s.moments = cluster_moments(metric.faces(), c.labels, n);
+  s.moments = cache ? cache->update(metric.faces(), c.labels, n) : cluster_moments(metric.faces(), c.labels, n);
   s.energy.resize(static_cast<size_t>(n));
   for (size_t i = 0; i < s.moments.size(); ++i) s.energy[i] = metric.energy(s.moments[i], c.proxies[i]).total();
   const std::vector<Metric::Terms> terms = metric.terms(c.proxies);
@@ -89,8 +89,9 @@ bool split_into(const Metric& metric, Clustering& c, const ClusterStats& s, int 
 
 }  // namespace
 
-int teleport(const Metric& metric, const MeshTopology& topology, Clustering& c, const TeleportOptions& options) {
-  ClusterStats s = cluster_stats(metric, c);
+int teleport(const Metric& metric, const MeshTopology& topology, Clustering& c, const TeleportOptions& options,
+             ClusterMomentsCache* moments) {
+  ClusterStats s = cluster_stats(metric, c, moments);
   const std::vector<MergeCandidate> merges = merge_candidates(metric, topology, c, s);
   const std::vector<int> worst = worst_first(s.energy);
   std::vector<char> used(static_cast<size_t>(c.num_clusters()), 0);
@@ -117,7 +118,7 @@ int teleport(const Metric& metric, const MeshTopology& topology, Clustering& c, 
     split_into(metric, c, s, w, m.b, options.sticky_iterations);  // slot b now seeds the new cluster
     ++moves;
   }
-  if (moves > 0) reflood(metric, topology, c);
+  if (moves > 0) reflood(metric, topology, c, moments);
   return moves;
 }
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/cluster/clustering.h"
+#include "core/cluster/moments_cache.h"
 
 namespace ff {
 
@@ -17,9 +18,10 @@ struct TeleportOptions {
 
 // Each move happens only when the merge costs less than half the worst cluster's energy
 // (the gain a split is expected to bring). Keeps n, refloods and refits when anything moved.
-// Returns the number of moves.
+// Returns the number of moves. `moments` (optional, as for lloyd_iteration): the cluster
+// moments and the refit come from it; the result is the same bits as without it.
 int teleport(const Metric& metric, const MeshTopology& topology, Clustering& clustering,
-             const TeleportOptions& options = {});
+             const TeleportOptions& options = {}, ClusterMomentsCache* moments = nullptr);
 
 // Adds `count` clusters by splitting the worst ones (sticky), then refloods.
 void add_clusters(const Metric& metric, const MeshTopology& topology, Clustering& clustering, int count,

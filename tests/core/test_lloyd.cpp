@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <set>
 
 #include "cluster_checks.h"
@@ -23,6 +24,53 @@ TEST(Flood, ClustersAreContiguousAndCoverEveryFace) {
   const Metric metric(fd, MetricWeights{}, 25);
   Clustering c = initial_clustering(metric, topo, place_seeds(fd, topo, 25, SeedingMethod::Random, 9));
   EXPECT_TRUE(test::keeps_invariants(topo, c, 25));
+}
+
+// The flood as the paper states it, with an ordered set for a queue: every face joins the
+// cluster of the cheapest offer made to it so far, popped in (cost, face) order.
+std::vector<int> reference_flood(const Metric& metric, const MeshTopology& topo, const Clustering& c) {
+  const size_t faces = c.labels.size();
+  std::vector<int> label(faces, -1), best_cluster(faces, -1);
+  std::vector<double> best(faces, std::numeric_limits<double>::infinity());
+  std::set<std::pair<double, int>> queue;
+  const auto offer = [&](int f, int i) {
+    for (int g : topo.face_neighbors[static_cast<size_t>(f)]) {
+      if (g < 0 || label[static_cast<size_t>(g)] >= 0 || best_cluster[static_cast<size_t>(g)] == i) continue;
+      const double cost = metric.cost(g, metric.terms(c.proxies[static_cast<size_t>(i)]));
+      if (cost < best[static_cast<size_t>(g)]) {
+        best[static_cast<size_t>(g)] = cost;
+        best_cluster[static_cast<size_t>(g)] = i;
+        queue.insert({cost, g});
+      }
+    }
+  };
+  for (int i = 0; i < c.num_clusters(); ++i) label[static_cast<size_t>(c.seeds[static_cast<size_t>(i)])] = i;
+  for (size_t f = 0; f < faces; ++f) {
+    if (label[f] >= 0) offer(static_cast<int>(f), label[f]);
+  }
+  while (!queue.empty()) {
+    const auto [cost, f] = *queue.begin();
+    queue.erase(queue.begin());
+    if (label[static_cast<size_t>(f)] >= 0 || cost != best[static_cast<size_t>(f)]) continue;
+    label[static_cast<size_t>(f)] = best_cluster[static_cast<size_t>(f)];
+    offer(f, label[static_cast<size_t>(f)]);
+  }
+  return label;
+}
+
+TEST(Flood, MatchesTheReferenceFloodFaceForFace) {
+  // Real proxies (after a few iterations) on a real mesh, so the queue holds long fronts.
+  const TriMesh mesh = test::load_clean("bunny.off");
+  const MeshTopology topo = build_topology(mesh);
+  const FaceData fd = make_face_data(mesh);
+  const Metric metric(fd, MetricWeights{}, 150);
+  Clustering c = initial_clustering(metric, topo, place_seeds(fd, topo, 150, SeedingMethod::FarthestPoint, 5));
+  for (int it = 0; it < 3; ++it) lloyd_iteration(metric, topo, c);
+  choose_seeds(metric, c);
+  std::fill(c.sticky.begin(), c.sticky.end(), 0);
+  const std::vector<int> expected = reference_flood(metric, topo, c);
+  flood(metric, topo, c);
+  EXPECT_EQ(c.labels, expected);
 }
 
 EnergyTerms single_term_run(const TriMesh& mesh, MetricWeights w, std::vector<double>& energies) {

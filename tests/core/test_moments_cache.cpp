@@ -11,8 +11,10 @@
 #include "core/cluster/lloyd.h"
 #include "core/cluster/moments_cache.h"
 #include "core/cluster/seeding.h"
+#include "core/cluster/teleport.h"
 #include "core/mesh/topology.h"
 #include "core/shapes/hard_cases.h"
+#include "core/shapes/shapes.h"
 #include "core/util/random.h"
 
 namespace ff {
@@ -77,6 +79,98 @@ TEST(MomentsCache, MatchesFullSumsAndRefitBitForBit) {
   const std::vector<ClusterMoments>& kept = cache.update(faces, plain.labels, 29);
   ASSERT_EQ(kept.size(), 29u);
   for (size_t c = 0; c < full.size(); ++c) EXPECT_TRUE(same_moments(full[c], kept[c]));
+}
+
+// choose_seeds through the cache equals choose_seeds after any change a caller makes between
+// calls: faces moving, a proxy refitted, a cluster turning sticky and back, a seed set by hand
+// (a teleport's split), and no change at all (where the cache must keep every seed).
+TEST(MomentsCache, ChooseSeedsMatchesAFullPass) {
+  const TriMesh mesh = make_saddle(3000);
+  const MeshTopology topology = build_topology(mesh);
+  const FaceData faces = make_face_data(mesh, {});
+  const Metric metric(faces, MetricWeights{}, 30);
+  Clustering plain =
+      initial_clustering(metric, topology, place_seeds(faces, topology, 30, SeedingMethod::FarthestPoint, 4));
+  Clustering cached = plain;
+  ClusterMomentsCache cache;
+  SplitMix64 rng(5);
+  int seeds_moved = 0;
+  for (int round = 0; round < 16; ++round) {
+    const std::vector<int> seeds_before = plain.seeds;
+    choose_seeds(metric, plain);
+    cache.choose_seeds(metric, cached);
+    ASSERT_EQ(plain.seeds, cached.seeds) << "round " << round;
+    for (size_t i = 0; i < plain.seeds.size(); ++i) seeds_moved += plain.seeds[i] != seeds_before[i];
+    const int kind = round % 4;
+    if (kind == 1) {  // a few faces move, and their clusters are refitted
+      for (int k = 0; k < 10; ++k) {
+        const size_t f = static_cast<size_t>(rng.uniform() * static_cast<double>(plain.labels.size()));
+        plain.labels[f] = cached.labels[f] = static_cast<int>(rng.uniform() * plain.num_clusters());
+      }
+      refit(metric, plain);
+      cached.proxies = plain.proxies;
+    } else if (kind == 2) {  // one proxy moves, one cluster turns sticky, another stops being sticky
+      plain.proxies[3].center += Vec3(0.05, 0.0, 0.0);
+      plain.sticky[static_cast<size_t>(round % 7)] = 1;
+      plain.sticky[static_cast<size_t>((round + 3) % 7)] = 0;
+      cached.proxies = plain.proxies;
+      cached.sticky = plain.sticky;
+    } else if (kind == 3) {  // a seed set by hand to another face of its cluster
+      for (size_t f = 0; f < plain.labels.size(); ++f) {
+        if (plain.labels[f] == 5 && static_cast<int>(f) != plain.seeds[5]) {
+          plain.seeds[5] = cached.seeds[5] = static_cast<int>(f);
+          break;
+        }
+      }
+    }
+  }
+  EXPECT_GT(seeds_moved, 0);
+}
+
+// The Lloyd phase through the cache (lloyd_iteration, teleport and its reflood) walks the
+// same path as without it, bit for bit, teleports and all; the clusters an iteration leaves
+// alone (there must be some) are where the cache spares work.
+TEST(MomentsCache, LloydAndTeleportThroughTheCacheAreBitIdentical) {
+  // All seeds crowded into one corner of a roof, so the teleports have work to do.
+  const TriMesh mesh = make_roof(60, 40);
+  const MeshTopology topology = build_topology(mesh);
+  const FaceData faces = make_face_data(mesh, {});
+  const Metric metric(faces, MetricWeights{}, 30);
+  std::vector<int> crowded;
+  for (int j = 0; j < 6; ++j)
+    for (int i = 0; i < 5; ++i) crowded.push_back(2 * (j * 60 + i));
+  Clustering plain = initial_clustering(metric, topology, crowded);
+  Clustering cached = plain;
+  ClusterMomentsCache cache;
+  int teleported = 0, kept_clusters = 0;
+  for (int it = 1; it <= 40; ++it) {
+    const std::vector<int> before = plain.labels;
+    if (it % 4 == 0 && it <= 12) {  // teleports early, then Lloyd settles
+      const int a = teleport(metric, topology, plain, TeleportOptions{2, 3});
+      const int b = teleport(metric, topology, cached, TeleportOptions{2, 3}, &cache);
+      ASSERT_EQ(a, b) << "iteration " << it;
+      teleported += a;
+    } else {
+      const LloydResult a = lloyd_iteration(metric, topology, plain);
+      const LloydResult b = lloyd_iteration(metric, topology, cached, &cache);
+      ASSERT_EQ(a.changed_faces, b.changed_faces) << "iteration " << it;
+      EXPECT_TRUE(same_bits(a.energy.total(), b.energy.total())) << "iteration " << it;
+    }
+    ASSERT_EQ(plain.labels, cached.labels) << "iteration " << it;
+    ASSERT_EQ(plain.seeds, cached.seeds) << "iteration " << it;
+    EXPECT_TRUE(same_bits(plain.energy, cached.energy)) << "iteration " << it;
+    std::vector<char> changed(static_cast<size_t>(plain.num_clusters()), 0);
+    for (size_t f = 0; f < before.size(); ++f) {
+      if (before[f] != plain.labels[f])
+        changed[static_cast<size_t>(before[f])] = changed[static_cast<size_t>(plain.labels[f])] = 1;
+    }
+    for (char k : changed) kept_clusters += k == 0;
+    for (int c = 0; c < plain.num_clusters(); ++c)
+      ASSERT_TRUE(same_proxy(plain.proxies[static_cast<size_t>(c)], cached.proxies[static_cast<size_t>(c)]))
+          << "iteration " << it << " cluster " << c;
+  }
+  EXPECT_GT(teleported, 0);
+  EXPECT_GT(kept_clusters, 0);
 }
 
 }  // namespace

@@ -1,0 +1,76 @@
+#pragma once
+// A 4-ary min-heap for the floods (clustering, seeding): half the levels of a binary heap and
+// the four children on one cache line. `Less` must be a strict total order over the entries
+// that are in the heap together (e.g. (cost, face) where a face is pushed again only at a
+// lower cost): then any exact heap pops the same sequence, so results do not depend on it.
+#include <algorithm>
+#include <cstddef>
+#include <vector>
+
+namespace ff {
+
+// Popping is what a flood of a million faces spends its time on.
+template <typename T, typename Less>
+class QuadHeap {
+ public:
+  explicit QuadHeap(Less before = Less()) : before_(before) {}
+  bool empty() const { return items_.empty(); }
+  size_t size() const { return items_.size(); }
+  const T& at(size_t i) const { return items_[i]; }
+  const T& top() const { return items_.front(); }
+  void reserve(size_t n) { items_.reserve(n); }
+  void push(T e) {
+    size_t i = items_.size();
+    items_.push_back(e);
+    while (i > 0) {
+      const size_t parent = (i - 1) / 4;
+      if (!before_(e, items_[parent])) break;
+      items_[i] = items_[parent];
+      i = parent;
+    }
+    items_[i] = e;
+  }
+  // Bottom-up: the hole walks down along the smaller children to a leaf (3 comparisons a
+  // level, as a pairwise tournament), then the last entry, which belongs near the bottom,
+  // sifts up from there; a top-down sift would also compare it with every child pair.
+  T pop() {
+    const T top = items_.front();
+    const T last = items_.back();
+    items_.pop_back();
+    const size_t n = items_.size();
+    if (n == 0) return top;
+    size_t i = 0;
+    for (;;) {
+      const size_t first = 4 * i + 1;
+      size_t best;
+      if (first + 4 <= n) {
+        const size_t a = before_(items_[first + 1], items_[first]) ? first + 1 : first;
+        const size_t b = before_(items_[first + 3], items_[first + 2]) ? first + 3 : first + 2;
+        best = before_(items_[b], items_[a]) ? b : a;
+      } else if (first < n) {
+        best = first;
+        for (size_t k = first + 1; k < n; ++k) {
+          if (before_(items_[k], items_[best])) best = k;
+        }
+      } else {
+        break;
+      }
+      items_[i] = items_[best];
+      i = best;
+    }
+    while (i > 0) {
+      const size_t parent = (i - 1) / 4;
+      if (!before_(last, items_[parent])) break;
+      items_[i] = items_[parent];
+      i = parent;
+    }
+    items_[i] = last;
+    return top;
+  }
+
+ private:
+  Less before_;
+  std::vector<T> items_;
+};
+
+}  // namespace ff
