@@ -336,7 +336,8 @@ void PanelLayout::build_panel(int c) {
   issues = check_panel(poly.points, poly.reference, plane, options_.spike_distance, options_.tolerance,
                        options_.min_corner_angle_deg, options_.glass);
   const Vec3& faces = faces_normal_[static_cast<size_t>(c)];
-  if (faces.squaredNorm() > 0.0 && !(plane.normal.dot(faces) > 0.0)) issues.flipped = true;  // misoriented
+  if (judge_orientation_ && faces.squaredNorm() > 0.0 && !(plane.normal.dot(faces) > 0.0))
+    issues.flipped = true;  // misoriented
   if (!node_limit_.empty()) {  // vertices of locked panels have their own limit
     issues.spike_vertices = 0;
     for (size_t i = 0; i < poly.points.size(); ++i)
@@ -381,6 +382,12 @@ std::vector<int> PanelLayout::problem_corners(int c) const {
       out.push_back(poly.corner[static_cast<size_t>(i)]);
   }
   return out;
+}
+
+void PanelLayout::judge_orientation() {
+  if (judge_orientation_) return;
+  judge_orientation_ = true;
+  for (size_t c = 0; c < polygons_.size(); ++c) build_panel(static_cast<int>(c));
 }
 
 void PanelLayout::set_planes(std::vector<Plane> planes) {

@@ -137,6 +137,14 @@ class PanelLayout {
   // Returns the number of groups made single.
   int make_single_point_nodes();
 
+  // From now on a panel whose plane faces away from its faces (the sum of their area
+  // normals) is flipped too, as the quality report (core/quality/report.cpp) calls it
+  // misoriented although its outline may run counter-clockwise in its own plane (a plane
+  // turned across its faces); rebuilds every panel. The panel rounds leave it off, so their
+  // choices (and every run that ends valid without it) stay as they were; the remesher turns
+  // it on for the attempts it finishes with (Remesher::finish_panels), before the mend.
+  void judge_orientation();
+
   PanelMesh to_panel_mesh(const FaceData& frame) const;
 
  private:
@@ -195,6 +203,7 @@ class PanelLayout {
   // misoriented (the quality check's test, core/quality/report.cpp), even when its outline
   // runs counter-clockwise in its own plane (a plane turned across its faces).
   std::vector<Vec3> faces_normal_;
+  bool judge_orientation_ = false;  // judge_orientation()
   // build_panel()'s working memory, kept between calls (it runs thousands of times a round).
   std::vector<int> scratch_triangles_, scratch_border_;
   struct ScratchEvent {
