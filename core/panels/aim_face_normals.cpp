@@ -1,10 +1,10 @@
 // Turning planes back toward their faces (issue 3). A panel must face the way its faces do:
 // the quality report (core/quality/report.cpp) calls it misoriented when its outline's normal
-// points away from the sum of its faces' area normals, and build_panel() flags a plane that
-// does so as flipped (the outline runs counter-clockwise in its own plane, so the two tests
-// agree). A plane can end up turned across its faces although its outline still runs
-// counter-clockwise in it (face.obj at 574 panels, seed 2: the nodes of a narrow panel came
-// out mirrored); no spike, so tilting and aim_node_planes() have nothing to aim at, and
+// points away from the sum of its faces' area normals, and once judge_orientation() is on,
+// build_panel() flags a plane that does so as flipped (the outline runs counter-clockwise in
+// its own plane, so the two tests agree). A plane can end up turned across its faces
+// although its outline still runs counter-clockwise in it (face.obj at 574 panels, seed 2:
+// a panel 94 degrees from its faces' normal, which this cannot mend); no spike, so tilting and aim_node_planes() have nothing to aim at, and
 // aim_edge_order() turns neighbours only. Here such a plane turns about its centre toward
 // its faces' normal until it is 80, 60, 30 or 0 degrees from it, or is mirrored across the
 // plane normal to it (its tilt kept, now facing the faces: a plane tipped over comes back
