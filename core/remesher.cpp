@@ -248,6 +248,7 @@ void Remesher::fix_panels(const PanelAttempt& attempt) {
 
 void Remesher::finish_panels() {
   clustering_ = best_->clustering();  // before mend_best: held_clusters() reads it
+  best_->layout().judge_orientation();  // what the quality report judges (issue 3)
   if (best_->num_invalid() > 0) mend_best();
   progress_.energy = clustering_.energy * faces_.area_to_world();
   panels_ = best_->layout().to_panel_mesh(faces_);
@@ -269,6 +270,7 @@ void Remesher::mend_best() {
   bool replaced = false;
   for (std::unique_ptr<PanelAttempt>& alternate : alternates_) {
     if (best_->num_invalid() == 0) break;
+    alternate->layout().judge_orientation();
     alternate->mend(faces_, {}, PanelAttemptOptions{});
     if (alternate->num_invalid() < best_->num_invalid()) std::swap(best_, alternate), replaced = true;
   }

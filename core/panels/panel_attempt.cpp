@@ -237,6 +237,8 @@ void PanelAttempt::mend(const FaceData& faces, const std::vector<char>& held, co
   }
   // Short edges whose two nodes came out in the wrong order with no spike to aim at.
   if (layout.num_invalid() > 0 && layout.aim_edge_order(fixed_masters) > 0) layout.switch_pairings();
+  // Planes turned across their faces (misoriented panels).
+  if (layout.num_invalid() > 0 && layout.aim_face_normals(fixed_masters) > 0) layout.switch_pairings();
   layout.single_point_fix(fixed_masters);
 }
 

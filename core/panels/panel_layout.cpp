@@ -89,6 +89,14 @@ PanelLayout::PanelLayout(const TriMesh& mesh, const MeshTopology& topology, cons
     }
     place_group_nodes(static_cast<int>(g));
   }
+  faces_normal_.assign(clusters, Vec3::Zero());
+  for (size_t f = 0; f < mesh_.triangles.size() && f < labels_.size(); ++f) {
+    const Triangle& t = mesh_.triangles[f];
+    const Vec3& a = positions_[static_cast<size_t>(t[0])];
+    const size_t c = static_cast<size_t>(labels_[f]);
+    if (c < clusters)
+      faces_normal_[c] += (positions_[static_cast<size_t>(t[1])] - a).cross(positions_[static_cast<size_t>(t[2])] - a);
+  }
   polygons_.resize(clusters);
   issues_.resize(clusters);
   for (size_t c = 0; c < clusters; ++c) build_panel(static_cast<int>(c));
@@ -334,6 +342,9 @@ void PanelLayout::build_panel(int c) {
   for (int node : poly.node) inexact += node >= 0 && !node_exact_[static_cast<size_t>(node)] ? 1 : 0;
   issues = check_panel(poly.points, poly.reference, plane, options_.spike_distance, options_.tolerance,
                        options_.min_corner_angle_deg, options_.glass);
+  const Vec3& faces = faces_normal_[static_cast<size_t>(c)];
+  if (judge_orientation_ && faces.squaredNorm() > 0.0 && !(plane.normal.dot(faces) > 0.0))
+    issues.flipped = true;  // misoriented
   if (!node_limit_.empty()) {  // vertices of locked panels have their own limit
     issues.spike_vertices = 0;
     for (size_t i = 0; i < poly.points.size(); ++i)
@@ -378,6 +389,12 @@ std::vector<int> PanelLayout::problem_corners(int c) const {
       out.push_back(poly.corner[static_cast<size_t>(i)]);
   }
   return out;
+}
+
+void PanelLayout::judge_orientation() {
+  if (judge_orientation_) return;
+  judge_orientation_ = true;
+  for (size_t c = 0; c < polygons_.size(); ++c) build_panel(static_cast<int>(c));
 }
 
 void PanelLayout::set_planes(std::vector<Plane> planes) {

@@ -100,6 +100,13 @@ class PanelLayout {
   // fixed_masters (per master, empty for none) and single-point masters stay. Returns the
   // turns kept.
   int aim_edge_order(const std::vector<char>& fixed_masters = {}, double max_turn_deg = 30.0);
+  // At each invalid panel whose plane faces away from its faces (the sum of their area
+  // normals; build_panel() flags it flipped): turns the plane about its centre toward that
+  // normal until it is 80, 60, 30 or 0 degrees from it, or mirrors it across the plane normal
+  // to it; the turn leaving the fewest panels around it invalid kept when that is fewer
+  // (aim_face_normals.cpp). fixed_masters (per master, empty for none) and
+  // single-point masters stay. Returns the turns kept.
+  int aim_face_normals(const std::vector<char>& fixed_masters = {});
   // The masters whose planes pass through the point of a single-point group, sorted.
   std::vector<int> single_point_masters() const;
   // Replaces the plane of each master with `candidates[m]`, one at a time, keeping each
@@ -132,6 +139,14 @@ class PanelLayout {
   // makes a panel around it invalid. Exact: the vertex lies on every plane by construction.
   // Returns the number of groups made single.
   int make_single_point_nodes();
+
+  // From now on a panel whose plane faces away from its faces (the sum of their area
+  // normals) is flipped too, as the quality report (core/quality/report.cpp) calls it
+  // misoriented although its outline may run counter-clockwise in its own plane (a plane
+  // turned across its faces); rebuilds every panel. The panel rounds leave it off, so their
+  // choices (and every run that ends valid without it) stay as they were; the remesher turns
+  // it on for the attempts it finishes with (Remesher::finish_panels), before the mend.
+  void judge_orientation();
 
   PanelMesh to_panel_mesh(const FaceData& frame) const;
 
@@ -187,6 +202,11 @@ class PanelLayout {
   std::vector<std::vector<int>> groups_of_cluster_;
   std::vector<PanelPolygon> polygons_;
   std::vector<PanelIssues> issues_;
+  // Per cluster: the sum of its faces' area normals. A panel facing away from it is
+  // misoriented (the quality check's test, core/quality/report.cpp), even when its outline
+  // runs counter-clockwise in its own plane (a plane turned across its faces).
+  std::vector<Vec3> faces_normal_;
+  bool judge_orientation_ = false;  // judge_orientation()
   // build_panel()'s working memory, kept between calls (it runs thousands of times a round).
   std::vector<int> scratch_triangles_, scratch_border_;
   struct ScratchEvent {
