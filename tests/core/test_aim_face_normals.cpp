@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "cluster_checks.h"
@@ -138,37 +140,32 @@ TEST(AimFaceNormals, ValidLayoutUnchanged) {
   return ::testing::AssertionSuccess() << q.invalid_panels << " invalid by both";
 }
 
+// A shared mesh remeshed into `panels` at `seed`, otherwise the defaults.
+std::unique_ptr<Remesher> remeshed(const char* file, int panels, std::uint64_t seed) {
+  RemeshParams p;
+  p.panels = panels;
+  p.seed = seed;
+  auto r = std::make_unique<Remesher>(test::load_clean(file), p);
+  r->run();
+  return r;
+}
+
 // face.obj at 574 panels, seed 2: the panel phase called the run valid while the quality
 // report found panel 207 facing away from its faces (its outline counter-clockwise in its
 // own plane, the plane 94 degrees from its faces' normal). Judged at the end, the panel is
 // invalid in both (the mend cannot turn it back without breaking 4 more panels).
 TEST(PanelOrientation, FaceAt574Seed2AgreesWithTheQualityCheck) {
-  RemeshParams p;
-  p.panels = 574;
-  p.seed = 2;
-  Remesher r(test::load_clean("face.obj"), p);
-  r.run();
-  EXPECT_TRUE(agrees_with_quality(r));
+  EXPECT_TRUE(agrees_with_quality(*remeshed("face.obj", 574, 2)));
 }
 
 // cow.off at 100 panels, seed 2: the same (a misoriented panel the panel phase missed).
 TEST(PanelOrientation, CowAt100Seed2AgreesWithTheQualityCheck) {
-  RemeshParams p;
-  p.panels = 100;
-  p.seed = 2;
-  Remesher r(test::load_clean("cow.off"), p);
-  r.run();
-  EXPECT_TRUE(agrees_with_quality(r));
+  EXPECT_TRUE(agrees_with_quality(*remeshed("cow.off", 100, 2)));
 }
 
 // A seed-2 run that ends valid, by the quality check too (bench/sweep_validity.sh --seed 2).
 TEST(PanelOrientation, CowAt122Seed2EndsValid) {
-  RemeshParams p;
-  p.panels = 122;
-  p.seed = 2;
-  Remesher r(test::load_clean("cow.off"), p);
-  r.run();
-  EXPECT_TRUE(test::valid_panels(r, 122, 0.08));
+  EXPECT_TRUE(test::valid_panels(*remeshed("cow.off", 122, 2), 122, 0.08));
 }
 
 }  // namespace

@@ -2,7 +2,9 @@
 // bit for bit, and its refit() gives refit()'s proxies and energy bit for bit.
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <cstring>
+#include <utility>
 #include <vector>
 
 #include "core/cluster/clustering.h"
@@ -35,13 +37,28 @@ bool same_proxy(const Proxy& a, const Proxy& b) {
   return same_bits(a.center, b.center) && same_bits(a.normal, b.normal) && same_bits(a.density, b.density);
 }
 
+// A mesh with its topology, face data and a 30-cluster metric: what every test here starts from.
+struct Prepared {
+  TriMesh mesh;
+  MeshTopology topology;
+  FaceData faces;
+  Metric metric;
+
+  explicit Prepared(TriMesh m)
+      : mesh(std::move(m)),
+        topology(build_topology(mesh)),
+        faces(make_face_data(mesh, {})),
+        metric(faces, MetricWeights{}, 30) {}
+
+  Clustering farthest_point_clusters(std::uint64_t seed) const {
+    return initial_clustering(metric, topology, place_seeds(faces, topology, 30, SeedingMethod::FarthestPoint, seed));
+  }
+};
+
 TEST(MomentsCache, MatchesFullSumsAndRefitBitForBit) {
-  const TriMesh mesh = make_saddle(3000);
-  const MeshTopology topology = build_topology(mesh);
-  const FaceData faces = make_face_data(mesh, {});
-  const Metric metric(faces, MetricWeights{}, 30);
-  Clustering plain =
-      initial_clustering(metric, topology, place_seeds(faces, topology, 30, SeedingMethod::FarthestPoint, 1));
+  const Prepared saddle(make_saddle(3000));
+  const auto& [mesh, topology, faces, metric] = saddle;
+  Clustering plain = saddle.farthest_point_clusters(1);
   Clustering cached = plain;
   ClusterMomentsCache cache;
   SplitMix64 rng(3);
@@ -85,12 +102,9 @@ TEST(MomentsCache, MatchesFullSumsAndRefitBitForBit) {
 // calls: faces moving, a proxy refitted, a cluster turning sticky and back, a seed set by hand
 // (a teleport's split), and no change at all (where the cache must keep every seed).
 TEST(MomentsCache, ChooseSeedsMatchesAFullPass) {
-  const TriMesh mesh = make_saddle(3000);
-  const MeshTopology topology = build_topology(mesh);
-  const FaceData faces = make_face_data(mesh, {});
-  const Metric metric(faces, MetricWeights{}, 30);
-  Clustering plain =
-      initial_clustering(metric, topology, place_seeds(faces, topology, 30, SeedingMethod::FarthestPoint, 4));
+  const Prepared saddle(make_saddle(3000));
+  const auto& [mesh, topology, faces, metric] = saddle;
+  Clustering plain = saddle.farthest_point_clusters(4);
   Clustering cached = plain;
   ClusterMomentsCache cache;
   SplitMix64 rng(5);
@@ -132,10 +146,8 @@ TEST(MomentsCache, ChooseSeedsMatchesAFullPass) {
 // alone (there must be some) are where the cache spares work.
 TEST(MomentsCache, LloydAndTeleportThroughTheCacheAreBitIdentical) {
   // All seeds crowded into one corner of a roof, so the teleports have work to do.
-  const TriMesh mesh = make_roof(60, 40);
-  const MeshTopology topology = build_topology(mesh);
-  const FaceData faces = make_face_data(mesh, {});
-  const Metric metric(faces, MetricWeights{}, 30);
+  const Prepared roof(make_roof(60, 40));
+  const auto& [mesh, topology, faces, metric] = roof;
   std::vector<int> crowded;
   for (int j = 0; j < 6; ++j)
     for (int i = 0; i < 5; ++i) crowded.push_back(2 * (j * 60 + i));
