@@ -152,9 +152,9 @@ PanelAttempt::PanelAttempt(const TriMesh& mesh, const MeshTopology& topology, co
     MasterPlanes masters =
         snap_master_planes(planes, centers, areas, neighbours_, options.master_angle_deg, fixed, alone);
     // With the relaxation the panels are built once, on its planes (not also on these).
-    auto layout = std::make_unique<PanelLayout>(mesh, topology, clustering_.labels, positions, graph_,
-                                                std::move(masters), layout_options,
-                                                std::vector<std::pair<int, int>>{}, !options.relax);
+    auto layout =
+        std::make_unique<PanelLayout>(mesh, topology, clustering_.labels, positions, graph_, std::move(masters),
+                                      layout_options, std::vector<std::pair<int, int>>{}, !options.relax);
     if (options.relax) relax(*layout, moments, fixed, options);
     return layout;
   };

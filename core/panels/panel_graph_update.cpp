@@ -29,8 +29,8 @@ struct Scratch {
 // The clusters around v exactly as build_panel_graph() lists them (a corner's `clusters`
 // when three or more): counter-clockwise, repeats in a row removed, kBoundary last on the
 // boundary. A vertex inside one cluster is that cluster alone.
-void vertex_cycle(const TriMesh& mesh, const MeshTopology& topology, const std::vector<int>& labels, int v,
-                  Scratch& s, bool& on_boundary) {
+void vertex_cycle(const TriMesh& mesh, const MeshTopology& topology, const std::vector<int>& labels, int v, Scratch& s,
+                  bool& on_boundary) {
   s.cycle.clear();
   on_boundary = false;
   const int begin = topology.vertex_face_offsets[static_cast<size_t>(v)];
@@ -237,11 +237,13 @@ const PanelGraph& update_panel_graph(const TriMesh& mesh, const MeshTopology& to
   std::vector<int> affected, touched;
   for (int f : changed) {
     for (int v : mesh.triangles[static_cast<size_t>(f)]) {
-      if (!state.vertex_mark[static_cast<size_t>(v)]) state.vertex_mark[static_cast<size_t>(v)] = 1, affected.push_back(v);
+      if (!state.vertex_mark[static_cast<size_t>(v)])
+        state.vertex_mark[static_cast<size_t>(v)] = 1, affected.push_back(v);
     }
     if (!state.face_mark[static_cast<size_t>(f)]) state.face_mark[static_cast<size_t>(f)] = 1, touched.push_back(f);
     for (int g : topology.face_neighbors[static_cast<size_t>(f)]) {
-      if (g >= 0 && !state.face_mark[static_cast<size_t>(g)]) state.face_mark[static_cast<size_t>(g)] = 1, touched.push_back(g);
+      if (g >= 0 && !state.face_mark[static_cast<size_t>(g)])
+        state.face_mark[static_cast<size_t>(g)] = 1, touched.push_back(g);
     }
   }
   std::sort(affected.begin(), affected.end());
@@ -268,13 +270,15 @@ const PanelGraph& update_panel_graph(const TriMesh& mesh, const MeshTopology& to
     vertex_cycle(mesh, topology, state.labels, v, s, on_boundary);
     count_vertex(s, -1, state);
   }
-  for (int f : touched) state.border[static_cast<size_t>(state.labels[static_cast<size_t>(f)])] -= border_of(topology, state.labels, f);
+  for (int f : touched)
+    state.border[static_cast<size_t>(state.labels[static_cast<size_t>(f)])] -= border_of(topology, state.labels, f);
   for (int f : changed) {
     state.faces[static_cast<size_t>(state.labels[static_cast<size_t>(f)])] -= 1;
     state.faces[static_cast<size_t>(labels[static_cast<size_t>(f)])] += 1;
     state.labels[static_cast<size_t>(f)] = labels[static_cast<size_t>(f)];
   }
-  for (int f : touched) state.border[static_cast<size_t>(labels[static_cast<size_t>(f)])] += border_of(topology, labels, f);
+  for (int f : touched)
+    state.border[static_cast<size_t>(labels[static_cast<size_t>(f)])] += border_of(topology, labels, f);
   update_corners(mesh, topology, labels, affected, state, s);
   redo_loops(mesh, topology, labels, dirty, state);
 

@@ -58,7 +58,8 @@ struct Bunny {
 
   Bunny() {
     const Metric metric(faces, MetricWeights{}, 200);
-    clustering = initial_clustering(metric, topology, place_seeds(faces, topology, 200, SeedingMethod::FarthestPoint, 1));
+    clustering =
+        initial_clustering(metric, topology, place_seeds(faces, topology, 200, SeedingMethod::FarthestPoint, 1));
     for (int it = 0; it < 10; ++it) lloyd_iteration(metric, topology, clustering);
     for (const Vec3& p : mesh.positions) positions.push_back((p - faces.origin) / faces.scale);
     PanelAttemptOptions attempt_options;

@@ -48,7 +48,8 @@ std::vector<int> grown_labels(const MeshTopology& topology, int faces, int n, Sp
       std::vector<int> next;
       for (int f : fronts[static_cast<size_t>(c)]) {
         for (int g : topology.face_neighbors[static_cast<size_t>(f)]) {
-          if (g >= 0 && labels[static_cast<size_t>(g)] < 0) labels[static_cast<size_t>(g)] = c, next.push_back(g), grew = true;
+          if (g >= 0 && labels[static_cast<size_t>(g)] < 0)
+            labels[static_cast<size_t>(g)] = c, next.push_back(g), grew = true;
         }
       }
       fronts[static_cast<size_t>(c)] = std::move(next);
@@ -85,7 +86,8 @@ void flood_patch(const MeshTopology& topology, std::vector<int>& labels, int n, 
     std::vector<int> next;
     for (int f : front) {
       for (int g : topology.face_neighbors[static_cast<size_t>(f)]) {
-        if (g < 0 || labels[static_cast<size_t>(g)] == c || size[static_cast<size_t>(labels[static_cast<size_t>(g)])] <= 1)
+        if (g < 0 || labels[static_cast<size_t>(g)] == c ||
+            size[static_cast<size_t>(labels[static_cast<size_t>(g)])] <= 1)
           continue;
         --size[static_cast<size_t>(labels[static_cast<size_t>(g)])];
         labels[static_cast<size_t>(g)] = c;
@@ -146,8 +148,8 @@ TEST(PanelGraphUpdate, TorusRingsOneFaceAtATime) {
   update_panel_graph(mesh, topology, labels, n, state);
   for (int step = 0; step < 300; ++step) {
     move_faces(topology, labels, n, 1, rng);
-    expect_same_graph(update_panel_graph(mesh, topology, labels, n, state), build_panel_graph(mesh, topology, labels, n),
-                      "step " + std::to_string(step));
+    expect_same_graph(update_panel_graph(mesh, topology, labels, n, state),
+                      build_panel_graph(mesh, topology, labels, n), "step " + std::to_string(step));
   }
 }
 
