@@ -125,8 +125,11 @@ void Remesher::panel_round() {
   locked_limits(options.layout.locked_spike_distance, options.layout.locked_diameter);
   if (!best_) alternates_.clear();  // a new panel phase
   const std::vector<ClusterMoments>& moments = moments_.update(faces_, clustering_.labels, clustering_.num_clusters());
-  auto attempt =
-      std::make_unique<PanelAttempt>(mesh_, topology_, local_positions_, faces_, clustering_, options, &moments);
+  // Between rounds only some faces move: the graph is updated around them (the same graph).
+  const PanelGraph& graph =
+      update_panel_graph(mesh_, topology_, clustering_.labels, clustering_.num_clusters(), graph_state_);
+  auto attempt = std::make_unique<PanelAttempt>(mesh_, topology_, local_positions_, faces_, clustering_, options,
+                                                &moments, &graph);
   const int invalid = attempt->num_invalid();
   ++panel_rounds_done_;
   progress_.iteration = panel_rounds_done_;
