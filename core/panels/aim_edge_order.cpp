@@ -103,22 +103,7 @@ int PanelLayout::aim_edge_order(const std::vector<char>& fixed_masters, double m
       std::stable_sort(turns.begin(), turns.end(), [](const auto& l, const auto& r) { return l.first < r.first; });
       master_reach(q, groups, clusters);
       bool done = false;
-      for (size_t t = 0; t < turns.size() && !done; ++t) {
-        int before = 0;
-        for (int k : clusters) before += issues_[static_cast<size_t>(k)].valid() ? 0 : 1;
-        planes_.planes[static_cast<size_t>(q)] = turns[t].second;
-        for (int g : groups) place_group_nodes(g);
-        rebuild(clusters);
-        int after = 0;
-        for (int k : clusters) after += issues_[static_cast<size_t>(k)].valid() ? 0 : 1;
-        if (after < before) {
-          done = true;
-          continue;
-        }
-        planes_.planes[static_cast<size_t>(q)] = old;
-        for (int g : groups) place_group_nodes(g);
-        rebuild(clusters);
-      }
+      for (size_t t = 0; t < turns.size() && !done; ++t) done = try_master_plane(q, turns[t].second, groups, clusters);
       if (done) ++kept;
     }
   }

@@ -4,12 +4,13 @@
 // build_panel() flags a plane that does so as flipped (the outline runs counter-clockwise in
 // its own plane, so the two tests agree). A plane can end up turned across its faces
 // although its outline still runs counter-clockwise in it (face.obj at 574 panels, seed 2:
-// a panel 94 degrees from its faces' normal, which this cannot mend); no spike, so tilting and aim_node_planes() have nothing to aim at, and
-// aim_edge_order() turns neighbours only. Here such a plane turns about its centre toward
+// a panel 94 degrees from its faces' normal, which this cannot mend); no spike, so tilting
+// and aim_node_planes() have nothing to aim at, and aim_edge_order() turns neighbours only.
+// Here such a plane turns about its centre toward
 // its faces' normal until it is 80, 60, 30 or 0 degrees from it, or is mirrored across the
 // plane normal to it (its tilt kept, now facing the faces: a plane tipped over comes back
 // with its trace near where it was); the one that leaves the fewest panels around it invalid
-// is kept when that is fewer than before (as in aim_node_planes.cpp).
+// is kept when that is fewer than before (PanelLayout::set_master_plane, invalid_among).
 // Runs only in PanelAttempt::mend, so runs that end valid are unchanged.
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -43,8 +44,7 @@ int PanelLayout::aim_face_normals(const std::vector<char>& fixed_masters) {
     axis.normalize();
     const double angle = std::acos(std::max(-1.0, std::min(1.0, old.normal.dot(toward))));
     master_reach(m, groups, clusters);
-    int before = 0;
-    for (int k : clusters) before += issues_[static_cast<size_t>(k)].valid() ? 0 : 1;
+    const int before = invalid_among(clusters);
     const Vec3 centre = old.project(planes_.centers[mi]);
     // Toward the faces until 80, 60, 30 or 0 degrees from their normal, or mirrored across
     // the plane normal to it (the same tilt, facing the faces); smallest turn first.
@@ -59,16 +59,11 @@ int PanelLayout::aim_face_normals(const std::vector<char>& fixed_masters) {
     int best = before;
     Plane chosen = old;
     for (const auto& entry : normals) {
-      planes_.planes[mi] = Plane::through(centre, entry.second);
-      for (int g : groups) place_group_nodes(g);
-      rebuild(clusters);
-      int after = 0;
-      for (int k : clusters) after += issues_[static_cast<size_t>(k)].valid() ? 0 : 1;
+      set_master_plane(m, Plane::through(centre, entry.second), groups, clusters);
+      const int after = invalid_among(clusters);
       if (after < best) best = after, chosen = planes_.planes[mi];
     }
-    planes_.planes[mi] = chosen;
-    for (int g : groups) place_group_nodes(g);
-    rebuild(clusters);
+    set_master_plane(m, chosen, groups, clusters);
     kept += best < before ? 1 : 0;
   }
   return kept;

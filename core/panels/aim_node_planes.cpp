@@ -103,23 +103,10 @@ int PanelLayout::aim_node_planes(const std::vector<char>& fixed_masters, double 
       bool done = false;
       for (size_t k = 0; k < pivots.size() * targets.size() && !done; ++k) {
         const Vec3& target = targets[k % targets.size()];
-        const Plane old = planes_.planes[static_cast<size_t>(m)];
+        const Plane& old = planes_.planes[static_cast<size_t>(m)];
         Plane turned;
         if (!turned_through(old, pivots[k / targets.size()], target, options_.diameter, max_turn_deg, turned)) continue;
-        int before = 0;
-        for (int c : clusters) before += issues_[static_cast<size_t>(c)].valid() ? 0 : 1;
-        planes_.planes[static_cast<size_t>(m)] = turned;
-        for (int g : groups) place_group_nodes(g);
-        rebuild(clusters);
-        int after = 0;
-        for (int c : clusters) after += issues_[static_cast<size_t>(c)].valid() ? 0 : 1;
-        if (after < before) {
-          done = true;
-          continue;
-        }
-        planes_.planes[static_cast<size_t>(m)] = old;
-        for (int g : groups) place_group_nodes(g);
-        rebuild(clusters);
+        done = try_master_plane(m, turned, groups, clusters);
       }
       if (done) {
         ++kept;

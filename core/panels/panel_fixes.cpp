@@ -132,6 +132,29 @@ void PanelLayout::master_reach(int master, std::vector<int>& groups, std::vector
   clusters.erase(std::unique(clusters.begin(), clusters.end()), clusters.end());
 }
 
+int PanelLayout::invalid_among(const std::vector<int>& clusters) const {
+  int invalid = 0;
+  for (int c : clusters) invalid += issues_[static_cast<size_t>(c)].valid() ? 0 : 1;
+  return invalid;
+}
+
+void PanelLayout::set_master_plane(int m, const Plane& plane, const std::vector<int>& groups,
+                                   const std::vector<int>& clusters) {
+  planes_.planes[static_cast<size_t>(m)] = plane;
+  for (int g : groups) place_group_nodes(g);
+  rebuild(clusters);
+}
+
+bool PanelLayout::try_master_plane(int m, const Plane& plane, const std::vector<int>& groups,
+                                   const std::vector<int>& clusters) {
+  const int before = invalid_among(clusters);
+  const Plane old = planes_.planes[static_cast<size_t>(m)];
+  set_master_plane(m, plane, groups, clusters);
+  if (invalid_among(clusters) < before) return true;
+  set_master_plane(m, old, groups, clusters);
+  return false;
+}
+
 int PanelLayout::try_planes(const std::vector<Plane>& candidates, int passes) {
   const size_t masters = planes_.planes.size();
   const std::vector<int> pinned = single_point_masters();  // they must keep their point
@@ -182,8 +205,7 @@ int PanelLayout::try_planes(const std::vector<Plane>& candidates, int passes) {
         for (int c : clusters) moved = moved || changed_at[static_cast<size_t>(c)] > refused_at[m];
         if (!moved) continue;
       }
-      int before = 0;
-      for (int c : clusters) before += issues_[static_cast<size_t>(c)].valid() ? 0 : 1;
+      const int before = invalid_among(clusters);
       // The panels as they are, to put back if the plane is refused (swapped, not copied: the
       // vectors' memory is reused by the rebuild).
       if (saved_polygons.size() < clusters.size()) saved_polygons.resize(clusters.size());

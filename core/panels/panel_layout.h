@@ -168,6 +168,15 @@ class PanelLayout {
   std::vector<int> masters_of_node(size_t node) const;
   // The groups a master's plane places and the panels they (and its own) build, sorted.
   void master_reach(int master, std::vector<int>& groups, std::vector<int>& clusters) const;
+  // How many of these clusters' panels are invalid.
+  int invalid_among(const std::vector<int>& clusters) const;
+  // Master m gets `plane`: its groups' nodes placed again, its reach's panels rebuilt
+  // (groups, clusters: from master_reach).
+  void set_master_plane(int m, const Plane& plane, const std::vector<int>& groups, const std::vector<int>& clusters);
+  // set_master_plane, kept when fewer of the clusters' panels are invalid than before, else
+  // the old plane put back (nodes and panels are functions of the planes: exactly as they
+  // were). Returns whether it was kept.
+  bool try_master_plane(int m, const Plane& plane, const std::vector<int>& groups, const std::vector<int>& clusters);
   // A node's distinct master planes, sorted (at most three: one per cluster of its triangle).
   struct NodeMasters {
     int m[3] = {-1, -1, -1};
