@@ -8,6 +8,7 @@
 #include "core/mesh/topology.h"
 #include "core/mesh/tri_mesh.h"
 #include "core/panels/panel_graph.h"
+#include "synthetic_meshes.h"
 
 namespace ff::test {
 
@@ -27,6 +28,16 @@ LabelledGrid labelled_grid(TriMesh mesh, int clusters, LabelOf label_of) {
   for (int f = 0; f < g.mesh.num_faces(); ++f) g.labels.push_back(label_of(face_centroid(g.mesh, f)));
   g.graph = build_panel_graph(g.mesh, g.topology, g.labels, clusters);
   return g;
+}
+
+// The notch of the aim tests: 12 x 8 cells of 0.5 (chains long enough to be their own nodes)
+// in four clusters, P (0) below y = 2, and above it A (1, x < 2), Q (2, 2 < x < 4) and
+// B (3, x > 4).
+inline LabelledGrid notch_grid() {
+  TriMesh m = grid(12, 8);
+  for (Vec3& p : m.positions) p *= 0.5;
+  return labelled_grid(std::move(m), 4,
+                       [](const Vec3& c) { return c.y() < 2.0 ? 0 : (c.x() < 2.0 ? 1 : (c.x() < 4.0 ? 2 : 3)); });
 }
 
 }  // namespace ff::test

@@ -25,16 +25,7 @@ namespace {
 // wrong way (P not simple, Q flipped), each node still within the spike distance of its
 // corner. Above X (1.2) every panel is valid.
 struct Notch : test::LabelledGrid {
-  static TriMesh half_cells() {  // 12 x 8 cells of 0.5: chains long enough to be their own nodes
-    TriMesh m = test::grid(12, 8);
-    for (Vec3& p : m.positions) p *= 0.5;
-    return m;
-  }
-
-  Notch()
-      : LabelledGrid(test::labelled_grid(half_cells(), 4, [](const Vec3& c) {
-          return c.y() < 2.0 ? 0 : (c.x() < 2.0 ? 1 : (c.x() < 4.0 ? 2 : 3));
-        })) {}
+  Notch() : LabelledGrid(test::notch_grid()) {}
 
   PanelLayout layout(double y0) const {
     const double t = 0.3, s = 0.253, r = std::sqrt(10.0);

@@ -14,6 +14,7 @@
 #include "core/panels/panel_graph.h"
 #include "core/panels/panel_layout.h"
 #include "core/remesher.h"
+#include "labelled_grid.h"
 #include "panel_checks.h"
 #include "synthetic_meshes.h"
 
@@ -24,25 +25,8 @@ namespace {
 // P below y = 2, and above it A (x < 2), Q (2 < x < 4) and B (x > 4). P on z = 0, A and B
 // tilted about their lines with P (y = 2 - x / 3 and y = 2 + (x - 6) / 3), Q on
 // z = s (y - 1.2): every panel valid, every face normal +z.
-struct Flat {
-  TriMesh mesh = half_cells();
-  MeshTopology topology = build_topology(mesh);
-  std::vector<int> labels;
-  PanelGraph graph;
-
-  static TriMesh half_cells() {
-    TriMesh m = test::grid(12, 8);
-    for (Vec3& p : m.positions) p *= 0.5;
-    return m;
-  }
-
-  Flat() {
-    for (int f = 0; f < mesh.num_faces(); ++f) {
-      const Vec3 c = face_centroid(mesh, f);
-      labels.push_back(c.y() < 2.0 ? 0 : (c.x() < 2.0 ? 1 : (c.x() < 4.0 ? 2 : 3)));
-    }
-    graph = build_panel_graph(mesh, topology, labels, 4);
-  }
+struct Flat : test::LabelledGrid {
+  Flat() : LabelledGrid(test::notch_grid()) {}
 
   // Q's plane: z = s (y - y0), or turned to normal `q_normal` about its point above (3, 3).
   PanelLayout layout(double y0, const Vec3& q_normal = Vec3::Zero()) const {
