@@ -112,7 +112,7 @@ void panel_lloyd_iteration(const Metric& metric, const MeshTopology& topology, C
 
 }  // namespace
 
-void Remesher::panel_round() {
+std::unique_ptr<PanelAttempt> Remesher::make_attempt() {
   PanelAttemptOptions options;
   options.layout.diameter = metric_.diameter();
   options.layout.min_corner_angle_deg = params_.min_corner_angle_deg;
@@ -123,10 +123,13 @@ void Remesher::panel_round() {
   options.layout.held_nodes = held_nodes();
   options.hinge_of = hinges();
   locked_limits(options.layout.locked_spike_distance, options.layout.locked_diameter);
-  if (!best_) alternates_.clear();  // a new panel phase
   const std::vector<ClusterMoments>& moments = moments_.update(faces_, clustering_.labels, clustering_.num_clusters());
-  auto attempt =
-      std::make_unique<PanelAttempt>(mesh_, topology_, local_positions_, faces_, clustering_, options, &moments);
+  return std::make_unique<PanelAttempt>(mesh_, topology_, local_positions_, faces_, clustering_, options, &moments);
+}
+
+void Remesher::panel_round() {
+  if (!best_) alternates_.clear();  // a new panel phase
+  std::unique_ptr<PanelAttempt> attempt = make_attempt();
   const int invalid = attempt->num_invalid();
   ++panel_rounds_done_;
   progress_.iteration = panel_rounds_done_;
@@ -250,6 +253,7 @@ void Remesher::finish_panels() {
   clustering_ = best_->clustering();  // before mend_best: held_clusters() reads it
   best_->layout().judge_orientation();  // what the quality report judges (issue 3)
   if (best_->num_invalid() > 0) mend_best();
+  if (best_->num_invalid() > 0) polish_best();  // remesher_polish.cpp
   progress_.energy = clustering_.energy * faces_.area_to_world();
   panels_ = best_->layout().to_panel_mesh(faces_);
   progress_.invalid_panels = panels_.num_invalid();
