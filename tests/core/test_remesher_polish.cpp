@@ -63,5 +63,20 @@ TEST(PolishBest, CowAt100PanelsSeed2EndsValid) {
   EXPECT_TRUE(test::valid_panels(r, 100, 0.12));
 }
 
+// cow.off at 61 panels, seed 2: the best round has two clusters that meet a neighbour in two
+// chains (no panel: on main 59 panels, 2 invalid) and the mend cannot split. The polish cuts
+// both across a chain: every cluster is a disk and gets its panel, at most one is invalid.
+TEST(PolishBest, CowAt61PanelsSeed2EveryClusterGetsItsPanel) {
+  RemeshParams p;
+  p.panels = 61;
+  p.seed = 2;
+  Remesher r(test::load_clean("cow.off"), p);
+  r.run();
+  const PanelMesh& pm = r.panels();
+  EXPECT_EQ(pm.num_panels(), 61);
+  EXPECT_LE(pm.num_invalid(), 1);
+  for (int c = 0; c < pm.num_panels(); ++c) EXPECT_FALSE(pm.issues[static_cast<size_t>(c)].not_disk) << c;
+}
+
 }  // namespace
 }  // namespace ff
