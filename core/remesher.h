@@ -160,7 +160,8 @@ class Remesher {
   void mend_best();  // last fixes on the best attempt when it is still invalid
   std::unique_ptr<PanelAttempt> make_attempt();  // the panel attempt of clustering_ now
   void polish_best();  // remesher_polish.cpp: after mend_best, more attempts from the best
-  void polish_best(int max_geometric);  // one pass of it, split_requests' max_geometric
+  // One pass of it: split_requests' max_geometric, -1 for none (each invalid cluster halved).
+  void polish_best(int max_geometric);
   void keep_alternate(std::unique_ptr<PanelAttempt> attempt);
   void cut_glass();  // glass mode, last: the pieces of concave panels (glass_split.h)
 

@@ -11,12 +11,13 @@
 // (so n stays), the settled planes kept. That attempt is mended like the best, then a few
 // rounds chain from it while it stays close to the best; kept only with fewer invalid
 // panels. Two passes: the splits of clusters that are not disks only, then near every
-// invalid panel too. On cow.off at seed 2: at 100 panels the second pass cuts the last
-// flipped panel and the run ends valid; at 61 the first cuts the two clusters that meet a
-// neighbour twice, 5 panels are invalid after the mend and 1 a round later (was 2). Not
-// enough for face.obj at 574 (a plane 94 degrees from its faces: cut in two, a half is still
-// flipped) or cow.off at 46 and 78. Runs that end valid never get here, so they are
-// unchanged; the others take up to 12 more attempts (face.obj at 574: 1.0 -> 1.7 s).
+// invalid panel too, then (third) each invalid panel's cluster cut in two along its length
+// (split_cluster). At seed 2: cow.off at 100 panels ends valid in the second pass (its last
+// flipped panel cut at its problem corner), face.obj at 574 in the third (a plane 94 degrees
+// from its faces, which aim_face_normals could not turn back); at 61 the first pass cuts
+// the two clusters that meet a neighbour twice, 5 panels are invalid after the mend and 1 a
+// round later (was 2). Not enough for cow.off at 46 and 78. Runs that end valid never get
+// here, so they are unchanged; the others take up to 18 more attempts.
 // Not with locked panels (held clusters are numbered in the clustering of the moment).
 #include <algorithm>
 #include <memory>
@@ -38,9 +39,11 @@ constexpr int kMergeTries = 12;  // candidate merges per pass, at most
 
 void Remesher::polish_best() {
   if (!locks_.empty() || !best_ || best_->num_invalid() == 0) return;
-  // Twice: splitting only the clusters that are not disks, then near every problem too.
+  // Three passes: splitting only the clusters that are not disks, then near every problem
+  // too, then every invalid panel's cluster cut in two along its length.
   polish_best(0);
   polish_best(best_->num_invalid());
+  polish_best(-1);
   clustering_ = best_->clustering();
 }
 
@@ -53,10 +56,12 @@ void Remesher::polish_best(int max_geometric) {
   // every cluster next to a split.
   std::vector<char> keep(settled_.size(), 0);
   for (size_t c = 0; c < settled_.size(); ++c) keep[c] = !settled_[c];
-  std::vector<std::pair<int, int>> requests = split_requests(mesh_, topology_, *best_, max_geometric);
-  // An invalid panel with no problem corner to split at (face.obj at 574 panels, seed 2: a
-  // plane turned 94 degrees from its faces) is cut in two along its length (face -1).
-  for (int c = 0; max_geometric > 0 && c < best_->layout().num_clusters(); ++c) {
+  std::vector<std::pair<int, int>> requests;
+  if (max_geometric >= 0) requests = split_requests(mesh_, topology_, *best_, max_geometric);
+  // An invalid panel with no problem corner to split at is cut in two along its length
+  // (face -1), and in the last pass (max_geometric -1) every invalid panel is: face.obj at
+  // 574 panels, seed 2, a plane turned 94 degrees from its faces, ends valid so.
+  for (int c = 0; max_geometric != 0 && c < best_->layout().num_clusters(); ++c) {
     if (best_->layout().issues()[static_cast<size_t>(c)].valid()) continue;
     const auto has = [c](const std::pair<int, int>& r) { return r.first == c; };
     if (std::none_of(requests.begin(), requests.end(), has)) requests.emplace_back(c, -1);

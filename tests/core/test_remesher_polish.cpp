@@ -63,6 +63,18 @@ TEST(PolishBest, CowAt100PanelsSeed2EndsValid) {
   EXPECT_TRUE(test::valid_panels(r, 100, 0.12));
 }
 
+// face.obj at 574 panels, seed 2: one panel's plane 94 degrees from its faces' normal, which
+// aim_face_normals cannot turn back without breaking 4 more panels (on main, 1 invalid). The
+// third pass cuts its cluster in two along its length and the run ends valid.
+TEST(PolishBest, FaceAt574PanelsSeed2EndsValid) {
+  RemeshParams p;
+  p.panels = 574;
+  p.seed = 2;
+  Remesher r(test::load_clean("face.obj"), p);
+  r.run();
+  EXPECT_TRUE(test::valid_panels(r, 574, 0.08));
+}
+
 // cow.off at 61 panels, seed 2: the best round has two clusters that meet a neighbour in two
 // chains (no panel: on main 59 panels, 2 invalid) and the mend cannot split. The polish cuts
 // both across a chain: every cluster is a disk and gets its panel, at most one is invalid.
