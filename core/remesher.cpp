@@ -124,7 +124,11 @@ std::unique_ptr<PanelAttempt> Remesher::make_attempt() {
   options.hinge_of = hinges();
   locked_limits(options.layout.locked_spike_distance, options.layout.locked_diameter);
   const std::vector<ClusterMoments>& moments = moments_.update(faces_, clustering_.labels, clustering_.num_clusters());
-  return std::make_unique<PanelAttempt>(mesh_, topology_, local_positions_, faces_, clustering_, options, &moments);
+  // Between rounds only some faces move: the graph is updated around them (the same graph).
+  const PanelGraph& graph =
+      update_panel_graph(mesh_, topology_, clustering_.labels, clustering_.num_clusters(), graph_state_);
+  return std::make_unique<PanelAttempt>(mesh_, topology_, local_positions_, faces_, clustering_, options, &moments,
+                                        &graph);
 }
 
 void Remesher::panel_round() {

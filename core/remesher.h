@@ -21,6 +21,7 @@
 #include "core/mesh/topology.h"
 #include "core/mesh/tri_mesh.h"
 #include "core/panels/panel_attempt.h"
+#include "core/panels/panel_graph_update.h"
 #include "core/panels/panel_mesh.h"
 #include "core/panels/plane.h"
 
@@ -215,6 +216,7 @@ class Remesher {
   std::unique_ptr<PanelAttempt> best_;  // the attempt with the fewest invalid panels so far
   std::vector<std::unique_ptr<PanelAttempt>> alternates_;  // close runners-up (keep_alternate)
   ClusterMomentsCache moments_;         // the panel phase's cluster moments (faces_ and clustering_)
+  PanelGraphState graph_state_;         // the last panel round's graph, updated for the next
   PanelMesh panels_;
   int panel_rounds_done_ = 0;
   // Panel rounds since the fewest invalid panels went down or since the last stall split

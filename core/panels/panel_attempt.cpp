@@ -103,9 +103,9 @@ void relax(PanelLayout& layout, const std::vector<ClusterMoments>& moments, cons
 
 PanelAttempt::PanelAttempt(const TriMesh& mesh, const MeshTopology& topology, const std::vector<Vec3>& positions,
                            const FaceData& faces, const Clustering& clustering, const PanelAttemptOptions& options,
-                           const std::vector<ClusterMoments>* known_moments)
+                           const std::vector<ClusterMoments>* known_moments, const PanelGraph* graph)
     : clustering_(clustering),
-      graph_(build_panel_graph(mesh, topology, clustering_.labels, clustering_.num_clusters())) {
+      graph_(graph ? *graph : build_panel_graph(mesh, topology, clustering_.labels, clustering_.num_clusters())) {
   const size_t n = static_cast<size_t>(clustering_.num_clusters());
   // Average cluster diameter, from the cluster boundaries.
   std::vector<double> reach(n, 0.0);
@@ -151,8 +151,10 @@ PanelAttempt::PanelAttempt(const TriMesh& mesh, const MeshTopology& topology, co
   const auto lay_out = [&](const std::vector<char>& alone) {
     MasterPlanes masters =
         snap_master_planes(planes, centers, areas, neighbours_, options.master_angle_deg, fixed, alone);
-    auto layout = std::make_unique<PanelLayout>(mesh, topology, clustering_.labels, positions, graph_,
-                                                std::move(masters), layout_options);
+    // With the relaxation the panels are built once, on its planes (not also on these).
+    auto layout =
+        std::make_unique<PanelLayout>(mesh, topology, clustering_.labels, positions, graph_, std::move(masters),
+                                      layout_options, std::vector<std::pair<int, int>>{}, !options.relax);
     if (options.relax) relax(*layout, moments, fixed, options);
     return layout;
   };

@@ -40,10 +40,11 @@ class PanelAttempt {
  public:
   // positions: mesh vertices in the local frame; must outlive the attempt, like mesh and topology.
   // moments: cluster_moments(faces, clustering.labels, n) when the caller has them (nullptr:
-  // summed here).
+  // summed here). graph: build_panel_graph() of clustering.labels when the caller has it
+  // (update_panel_graph(), panel_graph_update.h), copied; nullptr: built here.
   PanelAttempt(const TriMesh& mesh, const MeshTopology& topology, const std::vector<Vec3>& positions,
                const FaceData& faces, const Clustering& clustering, const PanelAttemptOptions& options,
-               const std::vector<ClusterMoments>* moments = nullptr);
+               const std::vector<ClusterMoments>* moments = nullptr, const PanelGraph* graph = nullptr);
   PanelAttempt(const PanelAttempt&) = delete;
   PanelAttempt& operator=(const PanelAttempt&) = delete;
 

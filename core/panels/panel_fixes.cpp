@@ -263,7 +263,7 @@ std::vector<std::pair<int, int>> PanelLayout::reversed_chains() const {
 
 // Node groups and panels are functions of the planes they use: only those a changed plane
 // reaches are placed and built again (later panel rounds relax a few planes among many).
-void PanelLayout::rebuild_changed(const std::vector<Plane>& old) {
+void PanelLayout::rebuild_changed(const std::vector<Plane>& old, bool all_panels) {
   const std::vector<Plane>& now = planes_.planes;
   if (old.size() != now.size()) return rebuild_all();
   std::vector<char> changed(now.size(), 0);
@@ -273,11 +273,12 @@ void PanelLayout::rebuild_changed(const std::vector<Plane>& old) {
     changed[m] = !(old[m].normal == now[m].normal && old[m].offset == now[m].offset);
     any = any || changed[m];
   }
-  if (!any) return;
-  std::vector<char> group_marked(groups_.groups.size(), 0), cluster_marked(polygons_.size(), 0);
+  if (!any && !all_panels) return;
+  // Nodes placed again only where a plane moved; then the panels there (or all of them).
+  std::vector<char> group_marked(groups_.groups.size(), 0), cluster_marked(polygons_.size(), all_panels ? 1 : 0);
   for (size_t c = 0; c < polygons_.size(); ++c) {
     if (!changed[static_cast<size_t>(planes_.master_of[c])]) continue;
-    cluster_marked[c] = 1;
+    cluster_marked[c] = 1;  // (already, with all_panels)
     for (int g : groups_of_cluster_[c]) group_marked[static_cast<size_t>(g)] = 1;
   }
   for (size_t g = 0; g < group_marked.size(); ++g) {

@@ -29,7 +29,8 @@ int position_of(const std::vector<int>& cycle, int cluster) {
 
 PanelLayout::PanelLayout(const TriMesh& mesh, const MeshTopology& topology, const std::vector<int>& labels,
                          const std::vector<Vec3>& positions, const PanelGraph& graph, MasterPlanes planes,
-                         const LayoutOptions& options, const std::vector<std::pair<int, int>>& forced)
+                         const LayoutOptions& options, const std::vector<std::pair<int, int>>& forced,
+                         bool build_panels)
     : mesh_(mesh),
       topology_(topology),
       labels_(labels),
@@ -99,6 +100,8 @@ PanelLayout::PanelLayout(const TriMesh& mesh, const MeshTopology& topology, cons
   }
   polygons_.resize(clusters);
   issues_.resize(clusters);
+  built_ = build_panels;
+  if (!built_) return;
   for (size_t c = 0; c < clusters; ++c) build_panel(static_cast<int>(c));
 }
 
@@ -400,7 +403,8 @@ void PanelLayout::judge_orientation() {
 void PanelLayout::set_planes(std::vector<Plane> planes) {
   std::vector<Plane> old = std::move(planes_.planes);
   planes_.planes = std::move(planes);
-  rebuild_changed(old);
+  rebuild_changed(old, !built_);
+  built_ = true;
 }
 
 }  // namespace ff

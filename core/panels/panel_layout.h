@@ -54,9 +54,14 @@ class PanelLayout {
  public:
   // positions: mesh vertex positions in the local frame. The references must outlive the layout.
   // forced: corner pairs to treat as one node group (group_corners).
+  // build_panels false: the panels are left unbuilt until the first set_planes(), which builds
+  // them all (for a caller that sets new planes right away, as the relaxation does: the
+  // panels come out the same, each built once); until then only planes(), node_constraints()
+  // and spike_nodes() may be read.
   PanelLayout(const TriMesh& mesh, const MeshTopology& topology, const std::vector<int>& labels,
               const std::vector<Vec3>& positions, const PanelGraph& graph, MasterPlanes planes,
-              const LayoutOptions& options, const std::vector<std::pair<int, int>>& forced = {});
+              const LayoutOptions& options, const std::vector<std::pair<int, int>>& forced = {},
+              bool build_panels = true);
 
   int num_clusters() const { return static_cast<int>(polygons_.size()); }
   const std::vector<PanelIssues>& issues() const { return issues_; }
@@ -156,7 +161,8 @@ class PanelLayout {
   void build_panel(int cluster);
   void rebuild(const std::vector<int>& clusters);
   void rebuild_all();
-  void rebuild_changed(const std::vector<Plane>& old);  // after planes_ changed from `old`
+  // After planes_ changed from `old`; all_panels: every panel built, not only those changed.
+  void rebuild_changed(const std::vector<Plane>& old, bool all_panels = false);
   std::vector<int> clusters_of_group(int group) const;
   std::vector<int> distinct_masters(int group) const;  // the masters of its clusters, in their order
   std::vector<int> masters_of_node(size_t node) const;
@@ -207,6 +213,7 @@ class PanelLayout {
   // runs counter-clockwise in its own plane (a plane turned across its faces).
   std::vector<Vec3> faces_normal_;
   bool judge_orientation_ = false;  // judge_orientation()
+  bool built_ = true;               // false: the panels wait for set_planes() (build_panels)
   // build_panel()'s working memory, kept between calls (it runs thousands of times a round).
   std::vector<int> scratch_triangles_, scratch_border_;
   struct ScratchEvent {

@@ -131,18 +131,23 @@ test('a bad file gives a clear message and the previous design keeps working', (
     assert.equal(await solveAfter(page, () => remesh(page)), 50);
   }));
 
+// "At once" without a stopwatch (a 1 s bound failed CI on a slow machine at 1026 ms): the
+// status after the click's own task, before any message from the worker could arrive. A cancel
+// that waited for the worker's step to end would still show the progress line here.
+async function cancelAtOnce(page) {
+  return page.getByRole('button', { name: 'Cancel' }).evaluate((button) => {
+    button.click();
+    return document.querySelector('[role="status"]')?.textContent?.trim() ?? '';
+  });
+}
+
 test('Cancel answers at once during a solve, and the page keeps working', () =>
   withPage(suite.url, async (page) => {
     await waitForDone(page);
     await setPanels(page, 500);
     await remesh(page);
     await waitForProgress(page);
-    const started = Date.now();
-    await page.getByRole('button', { name: 'Cancel' }).click();
-    const message = await waitForStatus(page, /Cancelled/, 1000);
-    const took = Date.now() - started;
-    assert.ok(took < 1000, `cancelled within 1 s (${took} ms)`);
-    assert.match(message, /Cancelled/);
+    assert.match(await cancelAtOnce(page), /^Cancelled/);
     assert.equal(await page.getByRole('button', { name: 'Cancel' }).isDisabled(), true);
     const afterCancel = await outcomes(page);
     await setPanels(page, 150);
@@ -154,7 +159,7 @@ test('Cancel answers at once during a solve, and the page keeps working', () =>
     await remesh(page);
     await waitForSolving(page);
     await page.keyboard.press('Escape');
-    await waitForStatus(page, /Cancelled/, 1000);
+    await waitForStatus(page, /Cancelled/); // a solve left to run would end in "Done"
   }));
 
 test('a cancel that replaces the worker (as for a long step) leaves the page working and deterministic', async () => {
@@ -167,12 +172,9 @@ test('a cancel that replaces the worker (as for a long step) leaves the page wor
     await setPanels(page, 500);
     await remesh(page);
     await waitForProgress(page);
-    const started = Date.now();
     const replacement = page.waitForEvent('worker', { timeout: 10_000 });
     const closed = new Promise((resolve) => busyWorker.once('close', resolve));
-    await page.getByRole('button', { name: 'Cancel' }).click();
-    await waitForStatus(page, /Cancelled/, 1000);
-    assert.ok(Date.now() - started < 1000);
+    assert.match(await cancelAtOnce(page), /^Cancelled/);
     await Promise.all([replacement, closed]);
     assert.equal(page.workers().length, 1, 'one solver worker');
     assert.notEqual(page.workers()[0], busyWorker, 'the busy worker was replaced by a new one');
