@@ -78,6 +78,7 @@ void Remesher::start_lloyd() {
   lloyd_done_ = 0;
   converged_ = false;
   best_.reset();
+  polish_ = PolishState{};
   settled_.clear();
   settled_planes_.clear();
   panel_rounds_done_ = 0;
@@ -257,7 +258,15 @@ void Remesher::finish_panels() {
   clustering_ = best_->clustering();  // before mend_best: held_clusters() reads it
   best_->layout().judge_orientation();  // what the quality report judges (issue 3)
   if (best_->num_invalid() > 0) mend_best();
-  if (best_->num_invalid() > 0) polish_best();  // remesher_polish.cpp
+  // Still invalid: the polish (remesher_polish.cpp) tries more, one attempt per step.
+  if (best_->num_invalid() > 0 && start_polish()) {
+    progress_.invalid_panels = best_->num_invalid();
+    return;
+  }
+  end_panels();
+}
+
+void Remesher::end_panels() {
   progress_.energy = clustering_.energy * faces_.area_to_world();
   panels_ = best_->layout().to_panel_mesh(faces_);
   progress_.invalid_panels = panels_.num_invalid();
@@ -357,7 +366,10 @@ Progress Remesher::step() {
       break;
     }
     case Stage::Panels:
-      panel_round();
+      if (polish_.active)
+        polish_step();
+      else
+        panel_round();
       break;
     case Stage::Optimize:
       optimize_planes();

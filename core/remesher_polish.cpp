@@ -17,7 +17,9 @@
 // from its faces, which aim_face_normals could not turn back); at 61 the first pass cuts
 // the two clusters that meet a neighbour twice, 5 panels are invalid after the mend and 1 a
 // round later (was 2). Not enough for cow.off at 46 and 78. Runs that end valid never get
-// here, so they are unchanged; the others take up to 18 more attempts.
+// here, so they are unchanged; the others take up to 18 more attempts, one per step() (a
+// panel round and a mend each: the worker stays as responsive as in the rounds), with the
+// progress of the panel stage (its round count stays, the invalid count is the best's).
 // Not with locked panels (held clusters are numbered in the clustering of the moment).
 #include <algorithm>
 #include <memory>
@@ -31,24 +33,67 @@
 namespace ff {
 
 namespace {
-// More attempts at most; each costs about one panel round and its mend.
+// More attempts per pass at most; each costs about one panel round and its mend (a step).
 constexpr int kPolishAttempts = 6;
 constexpr int kPolishMargin = 3;  // on the cow at 61: 5 invalid (best 2), then 1
 constexpr int kMergeTries = 12;  // candidate merges per pass, at most
+constexpr int kPolishPasses = 3;
 }  // namespace
 
-void Remesher::polish_best() {
-  if (!locks_.empty() || !best_ || best_->num_invalid() == 0) return;
-  // Three passes: splitting only the clusters that are not disks, then near every problem
-  // too, then every invalid panel's cluster cut in two along its length.
-  polish_best(0);
-  polish_best(best_->num_invalid());
-  polish_best(-1);
-  clustering_ = best_->clustering();
+bool Remesher::start_polish() {
+  polish_ = PolishState{};
+  if (!locks_.empty() || !best_ || best_->num_invalid() == 0) return false;
+  polish_.active = true;
+  return true;
 }
 
-void Remesher::polish_best(int max_geometric) {
-  if (best_->num_invalid() == 0) return;
+// Three passes: splitting only the clusters that are not disks, then near every problem too,
+// then every invalid panel's cluster cut in two along its length. Each step() mends one
+// attempt (a pass's first, or the next round of its chain); a pass whose splits or merges
+// cannot be made costs no attempt and the next one starts in the same step.
+void Remesher::polish_step() {
+  PolishState& s = polish_;
+  std::unique_ptr<PanelAttempt> attempt;
+  while (!attempt) {
+    if (s.chain) {
+      // A chain of rounds (the boundary term; splits only where clusters are not disks) while
+      // close to the best: far behind, the rounds have walked away from it.
+      const PanelAttempt& from = s.from ? *s.from : *best_;
+      clustering_ = from.clustering();
+      stalled_rounds_ = 0;
+      fix_panels(from);
+      s.chain = false;
+      attempt = make_attempt();
+      s.from.reset();
+    } else if (s.pass < kPolishPasses && best_->num_invalid() > 0) {
+      const int pass = s.pass++;
+      s.attempts = 0;
+      attempt = polish_pass(pass == 0 ? 0 : pass == 1 ? best_->num_invalid() : -1);
+    } else {
+      break;
+    }
+  }
+  if (attempt) {
+    attempt->layout().judge_orientation();
+    attempt->mend(faces_, {}, PanelAttemptOptions{});
+    const bool better = attempt->num_invalid() < best_->num_invalid();
+    if (better) std::swap(best_, attempt);  // attempt: the old best, dropped
+    progress_.invalid_panels = best_->num_invalid();
+    ++s.attempts;
+    const PanelAttempt& from = better ? *best_ : *attempt;
+    s.chain = s.attempts < kPolishAttempts && best_->num_invalid() > 0 &&
+              from.num_invalid() <= best_->num_invalid() + kPolishMargin;
+    if (s.chain && !better) s.from = std::move(attempt);
+    if (!s.chain) clustering_ = best_->clustering();  // the pass ends
+    // More to try: the next step. Otherwise the panel phase ends in this one.
+    if (s.chain || (s.pass < kPolishPasses && best_->num_invalid() > 0)) return;
+  }
+  clustering_ = best_->clustering();
+  polish_ = PolishState{};
+  end_panels();
+}
+
+std::unique_ptr<PanelAttempt> Remesher::polish_pass(int max_geometric) {
   clustering_ = best_->clustering();
   settled_ = best_->settled_clusters();
   settled_planes_ = best_->cluster_planes();
@@ -83,7 +128,7 @@ void Remesher::polish_best(int max_geometric) {
     ++splits;
     settled_[static_cast<size_t>(c)] = 0;
   }
-  if (splits == 0) return;
+  if (splits == 0) return nullptr;
   keep.resize(static_cast<size_t>(clustering_.num_clusters()), 1);
   settled_.resize(keep.size(), 0);
   settled_planes_.resize(keep.size());
@@ -115,25 +160,9 @@ void Remesher::polish_best(int max_geometric) {
   }
   if (merges < splits) {  // no n clusters: leave the best as it is
     clustering_ = best_->clustering();
-    return;
+    return nullptr;
   }
-  std::unique_ptr<PanelAttempt> attempt = make_attempt();
-  for (int k = 0;; ++k) {
-    attempt->layout().judge_orientation();
-    attempt->mend(faces_, {}, PanelAttemptOptions{});
-    const bool better = attempt->num_invalid() < best_->num_invalid();
-    if (better) std::swap(best_, attempt);  // attempt: the old best, dropped below
-    if (k + 1 >= kPolishAttempts || best_->num_invalid() == 0) break;
-    // A chain of rounds (the boundary term; splits only where clusters are not disks) while
-    // close to the best: far behind, the rounds have walked away from it.
-    const PanelAttempt& from = better ? *best_ : *attempt;
-    if (from.num_invalid() > best_->num_invalid() + kPolishMargin) break;
-    clustering_ = from.clustering();
-    stalled_rounds_ = 0;
-    fix_panels(from);
-    attempt = make_attempt();
-  }
-  clustering_ = best_->clustering();
+  return make_attempt();
 }
 
 }  // namespace ff

@@ -1,16 +1,46 @@
-// Remesher::polish_best (core/remesher_polish.cpp): local splits at the best attempt's
-// problems when the rounds and mend_best() leave it invalid (issue 3, seed 2), and the
-// split it is made of, split_cluster_at (core/cluster/cluster_edits.h).
+// Remesher's polish (core/remesher_polish.cpp): local splits at the best attempt's problems
+// when the rounds and mend_best() leave it invalid (issue 3, seed 2), one attempt per step(),
+// and the split it is made of, split_cluster_at (core/cluster/cluster_edits.h).
 #include <gtest/gtest.h>
 
 #include <vector>
 
 #include "cluster_checks.h"
 #include "core/cluster/cluster_edits.h"
+#include "core/quality/report.h"
 #include "panel_checks.h"
 
 namespace ff {
 namespace {
+
+// Steps `r` until it has made `attempts` polish steps (steps of the panel stage that run no
+// panel round: every panel round counts itself in panel_rounds_done()) or is done. Returns
+// the polish steps made.
+int step_into_polish(Remesher& r, int attempts) {
+  int polish = 0;
+  while (!r.done() && polish < attempts) {
+    const bool panels = r.progress().stage == Stage::Panels;
+    const int rounds = r.panel_rounds_done();
+    r.step();
+    if (panels && r.panel_rounds_done() == rounds) ++polish;
+  }
+  return polish;
+}
+
+// Valid, or the invalid panels reported: the progress, the panel mesh and the quality check
+// agree on how many there are.
+void expect_valid_or_reported(const Remesher& r, int panels, double max_hausdorff) {
+  ASSERT_TRUE(r.done());
+  EXPECT_TRUE(test::keeps_invariants(r.topology(), r.clustering(), panels));
+  const PanelMesh& pm = r.panels();
+  EXPECT_EQ(pm.num_panels() + static_cast<int>(pm.unbuilt_clusters.size()), panels);
+  EXPECT_EQ(r.progress().invalid_panels, pm.num_invalid());
+  if (pm.num_invalid() == 0) {
+    EXPECT_TRUE(test::valid_panels(r, panels, max_hausdorff));
+  } else {
+    EXPECT_GT(measure_quality(r.mesh(), r.topology(), pm).invalid_panels, 0);
+  }
+}
 
 // The halves grow from the two faces given, inside the cluster: the cluster keeps its id and
 // face a, the new one gets face b, both contiguous, together exactly the old cluster.
@@ -88,6 +118,93 @@ TEST(PolishBest, CowAt61PanelsSeed2EveryClusterGetsItsPanel) {
   EXPECT_EQ(pm.num_panels(), 61);
   EXPECT_LE(pm.num_invalid(), 1);
   for (int c = 0; c < pm.num_panels(); ++c) EXPECT_FALSE(pm.issues[static_cast<size_t>(c)].not_disk) << c;
+}
+
+// The polish is resumable: each step() mends one attempt, so the worker answers a cancel
+// within one panel round's time. On cow.off at 61 panels, seed 2, it runs all three passes;
+// through them the progress stays the panel stage's (its round count, at most `of`) and its
+// invalid count (the best's) never goes up; the result is the one
+// CowAt61PanelsSeed2EveryClusterGetsItsPanel checks.
+TEST(PolishBest, OneAttemptPerStep) {
+  RemeshParams p;
+  p.panels = 61;
+  p.seed = 2;
+  Remesher r(test::load_clean("cow.off"), p);
+  int polish = 0, rounds = -1, last_invalid = -1;
+  while (!r.done()) {
+    const bool panels = r.progress().stage == Stage::Panels;
+    const int before = r.panel_rounds_done();
+    const Progress progress = r.step();
+    if (!panels || r.panel_rounds_done() != before) continue;
+    ++polish;
+    if (rounds < 0) rounds = before;
+    EXPECT_EQ(r.panel_rounds_done(), rounds);  // no more rounds once it polishes
+    if (progress.stage != Stage::Panels) break;  // the last polish step ends the phase
+    EXPECT_EQ(progress.iteration, rounds);
+    EXPECT_LE(progress.iteration, progress.of);
+    EXPECT_GT(progress.invalid_panels, 0);
+    if (last_invalid >= 0) {
+      EXPECT_LE(progress.invalid_panels, last_invalid);
+    }
+    last_invalid = progress.invalid_panels;
+  }
+  RecordProperty("polish_steps", polish);
+  EXPECT_GE(polish, 3);  // at least one attempt in each of the three passes
+  EXPECT_LE(polish, 18);
+  r.run();
+  EXPECT_EQ(r.panels().num_panels(), 61);
+  EXPECT_LE(r.panels().num_invalid(), 1);
+}
+
+// A new panel count in the middle of the polish: the warm start takes the clustering of the
+// moment (n clusters between steps) and the run finishes, valid or with its invalid panels
+// reported; the count is the new one.
+TEST(PolishBest, NewPanelCountMidPolishFinishes) {
+  RemeshParams p;
+  p.panels = 61;
+  p.seed = 2;
+  Remesher r(test::load_clean("cow.off"), p);
+  ASSERT_EQ(step_into_polish(r, 2), 2);
+  ASSERT_EQ(r.progress().stage, Stage::Panels);  // more polish steps to come
+  p.panels = 70;
+  r.set_params(p);
+  EXPECT_EQ(r.progress().stage, Stage::Lloyd);
+  r.run();
+  expect_valid_or_reported(r, 70, 0.12);
+}
+
+// A new seed in the middle of the polish starts over: nothing of the polish is left, the
+// result is exactly that of a fresh solve with the new seed.
+TEST(PolishBest, NewSeedMidPolishEqualsAFreshSolve) {
+  const TriMesh mesh = test::load_clean("cow.off");
+  RemeshParams p;
+  p.panels = 61;
+  p.seed = 2;
+  Remesher r(mesh, p);
+  ASSERT_EQ(step_into_polish(r, 2), 2);
+  ASSERT_EQ(r.progress().stage, Stage::Panels);  // more polish steps to come
+  p.seed = 1;
+  r.set_params(p);
+  r.run();
+  Remesher fresh(mesh, p);
+  fresh.run();
+  EXPECT_EQ(r.clustering().labels, fresh.clustering().labels);
+  EXPECT_EQ(r.panels().panels, fresh.panels().panels);
+  EXPECT_EQ(r.panels().vertices, fresh.panels().vertices);
+  EXPECT_EQ(r.progress().invalid_panels, fresh.progress().invalid_panels);
+}
+
+// An edit asked for in the middle of the polish: set_edits finishes the solve first, then
+// splits the panel; the design ends valid or reported with one panel more.
+TEST(PolishBest, EditMidPolishFinishesTheSolveFirst) {
+  RemeshParams p;
+  p.panels = 61;
+  p.seed = 2;
+  Remesher r(test::load_clean("cow.off"), p);
+  ASSERT_EQ(step_into_polish(r, 2), 2);
+  ASSERT_EQ(r.progress().stage, Stage::Panels);  // more polish steps to come
+  r.set_edits({PanelEdit{PanelEdit::Op::Split, 0, -1}});
+  expect_valid_or_reported(r, 62, 0.12);
 }
 
 }  // namespace
