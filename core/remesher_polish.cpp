@@ -36,7 +36,7 @@ namespace {
 // More attempts per pass at most; each costs about one panel round and its mend (a step).
 constexpr int kPolishAttempts = 6;
 constexpr int kPolishMargin = 3;  // on the cow at 61: 5 invalid (best 2), then 1
-constexpr int kMergeTries = 12;  // candidate merges per pass, at most
+constexpr int kMergeTries = 12;   // candidate merges per pass, at most
 constexpr int kPolishPasses = 3;
 }  // namespace
 

@@ -138,7 +138,7 @@ TEST(PolishBest, OneAttemptPerStep) {
     if (!panels || r.panel_rounds_done() != before) continue;
     ++polish;
     if (rounds < 0) rounds = before;
-    EXPECT_EQ(r.panel_rounds_done(), rounds);  // no more rounds once it polishes
+    EXPECT_EQ(r.panel_rounds_done(), rounds);    // no more rounds once it polishes
     if (progress.stage != Stage::Panels) break;  // the last polish step ends the phase
     EXPECT_EQ(progress.iteration, rounds);
     EXPECT_LE(progress.iteration, progress.of);
