@@ -78,6 +78,7 @@ void Remesher::start_lloyd() {
   lloyd_done_ = 0;
   converged_ = false;
   best_.reset();
+  polish_ = PolishState{};
   settled_.clear();
   settled_planes_.clear();
   panel_rounds_done_ = 0;
@@ -112,7 +113,7 @@ void panel_lloyd_iteration(const Metric& metric, const MeshTopology& topology, C
 
 }  // namespace
 
-void Remesher::panel_round() {
+std::unique_ptr<PanelAttempt> Remesher::make_attempt() {
   PanelAttemptOptions options;
   options.layout.diameter = metric_.diameter();
   options.layout.min_corner_angle_deg = params_.min_corner_angle_deg;
@@ -123,13 +124,17 @@ void Remesher::panel_round() {
   options.layout.held_nodes = held_nodes();
   options.hinge_of = hinges();
   locked_limits(options.layout.locked_spike_distance, options.layout.locked_diameter);
-  if (!best_) alternates_.clear();  // a new panel phase
   const std::vector<ClusterMoments>& moments = moments_.update(faces_, clustering_.labels, clustering_.num_clusters());
   // Between rounds only some faces move: the graph is updated around them (the same graph).
   const PanelGraph& graph =
       update_panel_graph(mesh_, topology_, clustering_.labels, clustering_.num_clusters(), graph_state_);
-  auto attempt = std::make_unique<PanelAttempt>(mesh_, topology_, local_positions_, faces_, clustering_, options,
-                                                &moments, &graph);
+  return std::make_unique<PanelAttempt>(mesh_, topology_, local_positions_, faces_, clustering_, options, &moments,
+                                        &graph);
+}
+
+void Remesher::panel_round() {
+  if (!best_) alternates_.clear();  // a new panel phase
+  std::unique_ptr<PanelAttempt> attempt = make_attempt();
   const int invalid = attempt->num_invalid();
   ++panel_rounds_done_;
   progress_.iteration = panel_rounds_done_;
@@ -253,6 +258,15 @@ void Remesher::finish_panels() {
   clustering_ = best_->clustering();  // before mend_best: held_clusters() reads it
   best_->layout().judge_orientation();  // what the quality report judges (issue 3)
   if (best_->num_invalid() > 0) mend_best();
+  // Still invalid: the polish (remesher_polish.cpp) tries more, one attempt per step.
+  if (best_->num_invalid() > 0 && start_polish()) {
+    progress_.invalid_panels = best_->num_invalid();
+    return;
+  }
+  end_panels();
+}
+
+void Remesher::end_panels() {
   progress_.energy = clustering_.energy * faces_.area_to_world();
   panels_ = best_->layout().to_panel_mesh(faces_);
   progress_.invalid_panels = panels_.num_invalid();
@@ -352,7 +366,10 @@ Progress Remesher::step() {
       break;
     }
     case Stage::Panels:
-      panel_round();
+      if (polish_.active)
+        polish_step();
+      else
+        panel_round();
       break;
     case Stage::Optimize:
       optimize_planes();

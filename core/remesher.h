@@ -158,7 +158,15 @@ class Remesher {
   void fix_panels(const PanelAttempt& attempt);
   void optimize_planes();
   void finish_panels();
+  void end_panels();  // the panel phase's result: the best attempt's panels, then Optimize or Done
   void mend_best();  // last fixes on the best attempt when it is still invalid
+  std::unique_ptr<PanelAttempt> make_attempt();  // the panel attempt of clustering_ now
+  // remesher_polish.cpp: after mend_best, more attempts from the best, one per step().
+  bool start_polish();  // false: nothing to polish (end_panels now)
+  void polish_step();   // one attempt, or end_panels() when none is left
+  // A pass's local splits and merges on the best attempt: split_requests' max_geometric, -1
+  // for none (each invalid cluster halved). The pass's first attempt, or null (no n clusters).
+  std::unique_ptr<PanelAttempt> polish_pass(int max_geometric);
   void keep_alternate(std::unique_ptr<PanelAttempt> attempt);
   void cut_glass();  // glass mode, last: the pieces of concave panels (glass_split.h)
 
@@ -213,6 +221,18 @@ class Remesher {
   std::vector<std::unique_ptr<PanelAttempt>> alternates_;  // close runners-up (keep_alternate)
   ClusterMomentsCache moments_;         // the panel phase's cluster moments (faces_ and clustering_)
   PanelGraphState graph_state_;         // the last panel round's graph, updated for the next
+  // The polish between steps (remesher_polish.cpp). Reset with best_ (a new panel phase,
+  // a restored design): the attempts it refers to belong to one panel phase.
+  struct PolishState {
+    bool active = false;
+    int pass = 0;      // the next pass to start (three in all)
+    int attempts = 0;  // attempts of the pass so far
+    // The next attempt continues the pass's chain of rounds: from `from`, or from best_
+    // when `from` is null.
+    bool chain = false;
+    std::unique_ptr<PanelAttempt> from;
+  };
+  PolishState polish_;
   PanelMesh panels_;
   int panel_rounds_done_ = 0;
   // Panel rounds since the fewest invalid panels went down or since the last stall split

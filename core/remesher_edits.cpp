@@ -79,6 +79,7 @@ void Remesher::restore(const EditState& s) {
   base_edits_ = s.base_edits;
   base_ = s.base;
   best_.reset();
+  polish_ = PolishState{};
 }
 
 void Remesher::clear_edits() {
@@ -128,6 +129,7 @@ void Remesher::start_edited_panels(const std::vector<int>& edited) {
   settled_planes_.resize(n);
   hold(settled_, settled_planes_);
   best_.reset();
+  polish_ = PolishState{};
   panel_rounds_done_ = 0;
   stalled_rounds_ = 0;
   progress_ = Progress{Stage::Panels, 0, std::max(1, params_.panel_rounds), progress_.energy, 0};

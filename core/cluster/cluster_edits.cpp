@@ -57,6 +57,16 @@ int split_cluster(const Metric& metric, const MeshTopology& topology, Clustering
   };
   const int a = farthest(centre, -1);
   const int b = farthest(data[static_cast<size_t>(a)].centroid, a);
+  return split_cluster_at(metric, topology, c, cluster, a, b, sticky_iterations);
+}
+
+int split_cluster_at(const Metric& metric, const MeshTopology& topology, Clustering& c, int cluster, int a, int b,
+                     int sticky_iterations) {
+  const FaceData& data = metric.faces();
+  const auto in_cluster = [&](int f) {
+    return f >= 0 && static_cast<size_t>(f) < c.labels.size() && c.labels[static_cast<size_t>(f)] == cluster;
+  };
+  if (a == b || !in_cluster(a) || !in_cluster(b)) return -1;
   const int added = c.num_clusters();
   const Vec3 normal = c.proxies[static_cast<size_t>(cluster)].normal;
   Clustering work = c;

@@ -22,6 +22,12 @@ namespace ff {
 int split_cluster(const Metric& metric, const MeshTopology& topology, Clustering& clustering, int cluster,
                   int sticky_iterations = 3);
 
+// split_cluster() with the two halves grown from faces a and b of `cluster` (a keeps its id):
+// where the caller knows where the cut should go. -1 (nothing changed) unless a and b are
+// two distinct faces of the cluster.
+int split_cluster_at(const Metric& metric, const MeshTopology& topology, Clustering& clustering, int cluster, int a,
+                     int b, int sticky_iterations = 3);
+
 // Merges cluster b into cluster a (they must share an edge: see clusters_share_edge): b's
 // faces join a, a keeps its seed, ids above b shift down by one, every proxy is refitted.
 // Returns the merged cluster's id after the renumbering.
