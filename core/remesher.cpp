@@ -46,6 +46,14 @@ constexpr int kPanelPatience = 50;
 // panels asks 5-16 per round and its invalid count jumps around 20-40 for 100 rounds; with 3
 // it goes down). Which 3 rotates with the round, so no request is dropped every round.
 constexpr size_t kMaxSplitsPerRound = 3;
+// A round with this many invalid panels or fewer gets the end's mend at once
+// (PanelAttempt::mend_to_valid), kept only when every panel ends valid. The count falls to a
+// few within 2-4 rounds and then often waits many rounds for the last one or two (bunny.off
+// at 200 panels: 62, 9, 6, 3, 2, 3, 2, 2, 2, 0), which the mend fixes as often as not. A mend
+// that fails leaves the round exactly as it was, so a run it cannot help goes on unchanged.
+// bench/sweep_validity.sh at seed 1: 65 of 65 either way, panel rounds 952 -> 695, Hausdorff
+// ratio geometric mean 1.000 (0.81-1.18).
+constexpr int kMendEarlyAt = 6;
 }  // namespace
 
 Remesher::Remesher(TriMesh mesh, RemeshParams params)
@@ -135,7 +143,14 @@ std::unique_ptr<PanelAttempt> Remesher::make_attempt() {
 void Remesher::panel_round() {
   if (!best_) alternates_.clear();  // a new panel phase
   std::unique_ptr<PanelAttempt> attempt = make_attempt();
-  const int invalid = attempt->num_invalid();
+  int invalid = attempt->num_invalid();
+  if (invalid > 0 && invalid <= kMendEarlyAt) {
+    // The settled planes held, as in the rounds: the mend works around the invalid panels.
+    std::vector<char> held = attempt->settled_clusters();
+    const std::vector<char> locked = held_clusters();
+    for (size_t c = 0; c < locked.size() && c < held.size(); ++c) held[c] = held[c] || locked[c];
+    if (attempt->mend_to_valid(faces_, held, PanelAttemptOptions{})) invalid = 0;
+  }
   ++panel_rounds_done_;
   progress_.iteration = panel_rounds_done_;
   progress_.invalid_panels = invalid;

@@ -203,6 +203,16 @@ PanelAttempt::PanelAttempt(const TriMesh& mesh, const MeshTopology& topology, co
   }
 }
 
+bool PanelAttempt::mend_to_valid(const FaceData& faces, const std::vector<char>& held,
+                                 const PanelAttemptOptions& options) {
+  auto saved = std::make_unique<PanelLayout>(*layout_);
+  layout_->judge_orientation();
+  mend(faces, held, options);
+  if (num_invalid() == 0) return true;
+  layout_ = std::move(saved);
+  return false;
+}
+
 void PanelAttempt::mend(const FaceData& faces, const std::vector<char>& held, const PanelAttemptOptions& options) {
   PanelLayout& layout = *layout_;
   if (layout.num_invalid() == 0) return;

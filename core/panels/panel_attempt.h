@@ -54,6 +54,10 @@ class PanelAttempt {
   // rounds also held the settled ones), the nodes of invalid panels pulled harder each time;
   // then PanelLayout::single_point_fix.
   void mend(const FaceData& faces, const std::vector<char>& held, const PanelAttemptOptions& options);
+  // mend() with the orientation judged as at the end (PanelLayout::judge_orientation), kept
+  // only when every panel ends valid; otherwise the layout is put back exactly as it was, so
+  // the rounds go on as if it had not been tried. Returns whether it was kept.
+  bool mend_to_valid(const FaceData& faces, const std::vector<char>& held, const PanelAttemptOptions& options);
 
   const Clustering& clustering() const { return clustering_; }
   const PanelGraph& graph() const { return graph_; }
