@@ -171,4 +171,16 @@ int euler_characteristic(const TriMesh& mesh, const MeshTopology& topology) {
   return referenced - topology.num_edges() + mesh.num_faces();
 }
 
+bool is_boundary_vertex(const TriMesh& mesh, const MeshTopology& topology, int v) {
+  for (int k = topology.vertex_face_offsets[static_cast<size_t>(v)];
+       k < topology.vertex_face_offsets[static_cast<size_t>(v) + 1]; ++k) {
+    const int f = topology.vertex_faces[static_cast<size_t>(k)];
+    const int i = local_index(mesh.triangles[static_cast<size_t>(f)], v);
+    if (topology.face_neighbors[static_cast<size_t>(f)][static_cast<size_t>(i)] < 0 ||
+        topology.face_neighbors[static_cast<size_t>(f)][static_cast<size_t>((i + 2) % 3)] < 0)
+      return true;
+  }
+  return false;
+}
+
 }  // namespace ff

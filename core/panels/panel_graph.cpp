@@ -4,25 +4,6 @@
 
 namespace ff {
 
-namespace {
-
-int local_index(const Triangle& t, int v) { return t[0] == v ? 0 : (t[1] == v ? 1 : 2); }
-
-// True when an edge at v has one face only.
-bool is_boundary_vertex(const TriMesh& mesh, const MeshTopology& topology, int v) {
-  for (int k = topology.vertex_face_offsets[static_cast<size_t>(v)];
-       k < topology.vertex_face_offsets[static_cast<size_t>(v) + 1]; ++k) {
-    const int f = topology.vertex_faces[static_cast<size_t>(k)];
-    const int i = local_index(mesh.triangles[static_cast<size_t>(f)], v);
-    if (topology.face_neighbors[static_cast<size_t>(f)][static_cast<size_t>(i)] < 0 ||
-        topology.face_neighbors[static_cast<size_t>(f)][static_cast<size_t>((i + 2) % 3)] < 0)
-      return true;
-  }
-  return false;
-}
-
-}  // namespace
-
 std::vector<int> vertex_fan(const TriMesh& mesh, const MeshTopology& topology, int v, bool& on_boundary) {
   std::vector<int> fan;
   vertex_fan(mesh, topology, v, on_boundary, fan);

@@ -1,5 +1,6 @@
 // A first panel attempt on the bunny at 200 panels (Lloyd as in the remesher), with no
-// fixes after the relaxation, so some panels are invalid and the fixes have work to do.
+// fixes after the relaxation, so some panels are invalid and the fixes have work to do; and
+// the bit-for-bit panel comparison the tests on it use.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -24,6 +25,7 @@ struct BunnyAttempt {
   std::vector<Vec3> positions;
   Clustering clustering;
   std::unique_ptr<PanelAttempt> attempt;
+  double diameter = 0.0;  // the metric's expected cluster diameter
 
   BunnyAttempt() {
     const Metric metric(faces, MetricWeights{}, 200);
@@ -32,16 +34,19 @@ struct BunnyAttempt {
     for (int it = 0; it < 10; ++it) lloyd_iteration(metric, topology, clustering);
     for (const Vec3& p : mesh.positions) positions.push_back((p - faces.origin) / faces.scale);
     PanelAttemptOptions options;
-    options.layout.diameter = metric.diameter();
+    diameter = metric.diameter();
+    options.layout.diameter = diameter;
     options.unsnap_rounds = 0;
     options.tilt_rounds = 0;
     attempt = std::make_unique<PanelAttempt>(mesh, topology, positions, faces, clustering, options);
   }
 };
 
-// Every panel of `fresh` equals `layout`'s bit for bit: points, nodes, corners and issues.
+// Every panel of `fresh` equals `layout`'s bit for bit: points, references, nodes, corners
+// and issues.
 inline void expect_same_panels(const PanelLayout& layout, const PanelLayout& fresh) {
   ASSERT_EQ(fresh.num_clusters(), layout.num_clusters());
+  EXPECT_EQ(fresh.num_invalid(), layout.num_invalid());
   for (int c = 0; c < layout.num_clusters(); ++c) {
     const PanelPolygon& a = layout.polygon(c);
     const PanelPolygon& b = fresh.polygon(c);
@@ -51,12 +56,14 @@ inline void expect_same_panels(const PanelLayout& layout, const PanelLayout& fre
       EXPECT_EQ(a.points[i].x(), b.points[i].x()) << "panel " << c;
       EXPECT_EQ(a.points[i].y(), b.points[i].y()) << "panel " << c;
       EXPECT_EQ(a.points[i].z(), b.points[i].z()) << "panel " << c;
+      EXPECT_EQ(a.reference[i], b.reference[i]) << "panel " << c;
     }
     EXPECT_EQ(a.node, b.node) << "panel " << c;
     EXPECT_EQ(a.corner, b.corner) << "panel " << c;
     const PanelIssues& x = layout.issues()[static_cast<size_t>(c)];
     const PanelIssues& y = fresh.issues()[static_cast<size_t>(c)];
     EXPECT_EQ(x.valid(), y.valid()) << "panel " << c;
+    EXPECT_EQ(x.not_disk, y.not_disk) << "panel " << c;
     EXPECT_EQ(x.spike_vertices, y.spike_vertices) << "panel " << c;
     EXPECT_EQ(x.flipped, y.flipped) << "panel " << c;
     EXPECT_EQ(x.not_star, y.not_star) << "panel " << c;

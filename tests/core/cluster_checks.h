@@ -15,8 +15,6 @@
 
 namespace ff::test {
 
-inline TriMesh load_clean(const std::string& file) { return clean_mesh(read_mesh_file(shared_mesh(file)).mesh).mesh; }
-
 // Labels in [0, n), every cluster non-empty and edge-connected, seeds distinct and inside
 // their own cluster, one proxy and one stickiness counter per cluster.
 inline ::testing::AssertionResult keeps_invariants(const MeshTopology& topology, const Clustering& c, int n) {

@@ -5,12 +5,15 @@
 // Checked by the independent quality module, not by the panel phase's own flags alone.
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <functional>
+#include <memory>
 #include <ostream>
 #include <string>
 
 #include "core/quality/report.h"
 #include "core/remesher.h"
+#include "test_meshes.h"
 
 namespace ff::test {
 
@@ -46,6 +49,16 @@ struct ValidRemesh {
 
 inline void PrintTo(const ValidRemesh& c, std::ostream* os) { *os << c.name; }
 inline std::string valid_remesh_name(const ::testing::TestParamInfo<ValidRemesh>& info) { return info.param.name; }
+
+// A shared mesh remeshed into `panels` at `seed`, otherwise the defaults.
+inline std::unique_ptr<Remesher> remeshed(const std::string& file, int panels, std::uint64_t seed) {
+  RemeshParams p;
+  p.panels = panels;
+  p.seed = seed;
+  auto r = std::make_unique<Remesher>(load_clean(file), p);
+  r->run();
+  return r;
+}
 
 // Remeshes c.mesh() with the default parameters but c's panel count and rounds.
 inline ::testing::AssertionResult remeshes_valid(const ValidRemesh& c) {

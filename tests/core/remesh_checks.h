@@ -18,8 +18,6 @@
 
 namespace ff::test {
 
-inline TriMesh load_clean(const std::string& file) { return clean_mesh(read_mesh_file(shared_mesh(file)).mesh).mesh; }
-
 // The edge length whose equilateral triangles tile `mesh` with about `triangles` of them.
 inline double edge_length_for(const TriMesh& mesh, double triangles) {
   return std::sqrt(total_area(mesh) / (triangles * std::sqrt(3.0) / 4.0));

@@ -124,33 +124,23 @@ TEST(AimFaceNormals, ValidLayoutUnchanged) {
   return ::testing::AssertionSuccess() << q.invalid_panels << " invalid by both";
 }
 
-// A shared mesh remeshed into `panels` at `seed`, otherwise the defaults.
-std::unique_ptr<Remesher> remeshed(const char* file, int panels, std::uint64_t seed) {
-  RemeshParams p;
-  p.panels = panels;
-  p.seed = seed;
-  auto r = std::make_unique<Remesher>(test::load_clean(file), p);
-  r->run();
-  return r;
-}
-
 // face.obj at 574 panels, seed 2: the panel phase called the run valid while the quality
 // report found panel 207 facing away from its faces (its outline counter-clockwise in its
 // own plane, the plane 94 degrees from its faces' normal). Judged at the end, the panel is
 // invalid in both (the mend cannot turn it back without breaking 4 more panels); the polish
 // (remesher_polish.cpp) then cuts it in two and the run ends valid by both.
 TEST(PanelOrientation, FaceAt574Seed2AgreesWithTheQualityCheck) {
-  EXPECT_TRUE(agrees_with_quality(*remeshed("face.obj", 574, 2)));
+  EXPECT_TRUE(agrees_with_quality(*test::remeshed("face.obj", 574, 2)));
 }
 
 // cow.off at 100 panels, seed 2: the same (a misoriented panel the panel phase missed).
 TEST(PanelOrientation, CowAt100Seed2AgreesWithTheQualityCheck) {
-  EXPECT_TRUE(agrees_with_quality(*remeshed("cow.off", 100, 2)));
+  EXPECT_TRUE(agrees_with_quality(*test::remeshed("cow.off", 100, 2)));
 }
 
 // A seed-2 run that ends valid, by the quality check too (bench/sweep_validity.sh --seed 2).
 TEST(PanelOrientation, CowAt122Seed2EndsValid) {
-  EXPECT_TRUE(test::valid_panels(*remeshed("cow.off", 122, 2), 122, 0.08));
+  EXPECT_TRUE(test::valid_panels(*test::remeshed("cow.off", 122, 2), 122, 0.08));
 }
 
 }  // namespace

@@ -6,6 +6,9 @@
 #include <string>
 #include <vector>
 
+#include "core/mesh/clean.h"
+#include "core/mesh/mesh_io.h"
+
 namespace ff::test {
 
 inline std::string shared_mesh_dir() {
@@ -14,6 +17,9 @@ inline std::string shared_mesh_dir() {
 }
 
 inline std::string shared_mesh(const std::string& name) { return shared_mesh_dir() + "/" + name; }
+
+// A shared mesh read and cleaned as the CLI and the page do.
+inline TriMesh load_clean(const std::string& file) { return clean_mesh(read_mesh_file(shared_mesh(file)).mesh).mesh; }
 
 // Every mesh in ../shared/meshes/ with what we know about it from its README.
 struct SharedMesh {

@@ -85,36 +85,22 @@ TEST(PolishSplitAt, HalvesGrowFromTheGivenFaces) {
 // non-simple panel that mend() leaves (on main, 1 invalid); the polish cuts it locally and
 // the run ends valid with the 100 panels asked for.
 TEST(PolishBest, CowAt100PanelsSeed2EndsValid) {
-  RemeshParams p;
-  p.panels = 100;
-  p.seed = 2;
-  Remesher r(test::load_clean("cow.off"), p);
-  r.run();
-  EXPECT_TRUE(test::valid_panels(r, 100, 0.12));
+  EXPECT_TRUE(test::valid_panels(*test::remeshed("cow.off", 100, 2), 100, 0.12));
 }
 
 // face.obj at 574 panels, seed 2: one panel's plane 94 degrees from its faces' normal, which
 // aim_face_normals cannot turn back without breaking 4 more panels (on main, 1 invalid). The
 // third pass cuts its cluster in two along its length and the run ends valid.
 TEST(PolishBest, FaceAt574PanelsSeed2EndsValid) {
-  RemeshParams p;
-  p.panels = 574;
-  p.seed = 2;
-  Remesher r(test::load_clean("face.obj"), p);
-  r.run();
-  EXPECT_TRUE(test::valid_panels(r, 574, 0.08));
+  EXPECT_TRUE(test::valid_panels(*test::remeshed("face.obj", 574, 2), 574, 0.08));
 }
 
 // cow.off at 61 panels, seed 2: the best round has two clusters that meet a neighbour in two
 // chains (no panel: on main 59 panels, 2 invalid) and the mend cannot split. The polish cuts
 // both across a chain: every cluster is a disk and gets its panel, at most one is invalid.
 TEST(PolishBest, CowAt61PanelsSeed2EveryClusterGetsItsPanel) {
-  RemeshParams p;
-  p.panels = 61;
-  p.seed = 2;
-  Remesher r(test::load_clean("cow.off"), p);
-  r.run();
-  const PanelMesh& pm = r.panels();
+  const auto r = test::remeshed("cow.off", 61, 2);
+  const PanelMesh& pm = r->panels();
   EXPECT_EQ(pm.num_panels(), 61);
   EXPECT_LE(pm.num_invalid(), 1);
   for (int c = 0; c < pm.num_panels(); ++c) EXPECT_FALSE(pm.issues[static_cast<size_t>(c)].not_disk) << c;
