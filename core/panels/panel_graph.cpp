@@ -37,6 +37,32 @@ void vertex_fan(const TriMesh& mesh, const MeshTopology& topology, int v, bool& 
   } while (f >= 0 && f != start && static_cast<int>(fan.size()) < limit);
 }
 
+void vertex_cycle(const TriMesh& mesh, const MeshTopology& topology, const std::vector<int>& labels, int v,
+                  std::vector<int>& fan, std::vector<int>& cycle, bool& on_boundary) {
+  cycle.clear();
+  on_boundary = false;
+  // Most vertices lie inside one cluster: no fan to walk.
+  const int begin = topology.vertex_face_offsets[static_cast<size_t>(v)];
+  const int end = topology.vertex_face_offsets[static_cast<size_t>(v) + 1];
+  if (begin == end) return;
+  const int first_label = labels[static_cast<size_t>(topology.vertex_faces[static_cast<size_t>(begin)])];
+  bool single = true;
+  for (int k = begin + 1; k < end && single; ++k)
+    single = labels[static_cast<size_t>(topology.vertex_faces[static_cast<size_t>(k)])] == first_label;
+  if (single && !is_boundary_vertex(mesh, topology, v)) {
+    cycle.push_back(first_label);
+    return;
+  }
+  vertex_fan(mesh, topology, v, on_boundary, fan);
+  if (fan.empty()) return;
+  for (int f : fan) {
+    const int c = labels[static_cast<size_t>(f)];
+    if (cycle.empty() || cycle.back() != c) cycle.push_back(c);
+  }
+  if (!on_boundary && cycle.size() > 1 && cycle.front() == cycle.back()) cycle.pop_back();
+  if (on_boundary) cycle.push_back(kBoundary);
+}
+
 PanelGraph build_panel_graph(const TriMesh& mesh, const MeshTopology& topology, const std::vector<int>& labels,
                              int num_clusters) {
   const size_t n = static_cast<size_t>(num_clusters);
@@ -49,28 +75,13 @@ PanelGraph build_panel_graph(const TriMesh& mesh, const MeshTopology& topology, 
   std::vector<long long> euler(n, 0);
   std::vector<int> cycle, fan, sorted;  // per vertex, reused
   for (int v = 0; v < mesh.num_vertices(); ++v) {
-    // Most vertices lie inside one cluster: count them without walking their fan.
-    const int begin = topology.vertex_face_offsets[static_cast<size_t>(v)];
-    const int end = topology.vertex_face_offsets[static_cast<size_t>(v) + 1];
-    if (begin == end) continue;
-    const int first_label = labels[static_cast<size_t>(topology.vertex_faces[static_cast<size_t>(begin)])];
-    bool single = true;
-    for (int k = begin + 1; k < end && single; ++k)
-      single = labels[static_cast<size_t>(topology.vertex_faces[static_cast<size_t>(k)])] == first_label;
-    if (single && !is_boundary_vertex(mesh, topology, v)) {
-      euler[static_cast<size_t>(first_label)] += 1;
+    bool on_boundary = false;
+    vertex_cycle(mesh, topology, labels, v, fan, cycle, on_boundary);
+    if (cycle.empty()) continue;
+    if (cycle.size() == 1 && !on_boundary) {  // inside one cluster
+      euler[static_cast<size_t>(cycle[0])] += 1;
       continue;
     }
-    bool on_boundary = false;
-    vertex_fan(mesh, topology, v, on_boundary, fan);
-    if (fan.empty()) continue;
-    cycle.clear();
-    for (int f : fan) {
-      const int c = labels[static_cast<size_t>(f)];
-      if (cycle.empty() || cycle.back() != c) cycle.push_back(c);
-    }
-    if (!on_boundary && cycle.size() > 1 && cycle.front() == cycle.back()) cycle.pop_back();
-    if (on_boundary) cycle.push_back(kBoundary);
     sorted.assign(cycle.begin(), cycle.end());
     std::sort(sorted.begin(), sorted.end());
     for (size_t k = 0; k < sorted.size(); ++k) {

@@ -56,4 +56,11 @@ std::vector<int> vertex_fan(const TriMesh& mesh, const MeshTopology& topology, i
 // of every vertex where clusters meet, every panel round.
 void vertex_fan(const TriMesh& mesh, const MeshTopology& topology, int v, bool& on_boundary, std::vector<int>& fan);
 
+// The clusters around vertex v into `cycle` (cleared first), as a corner lists them:
+// counter-clockwise, repeats in a row removed, kBoundary last on the boundary. A vertex
+// inside one cluster is that cluster alone (its fan is not walked); an isolated vertex gives
+// none. `fan`: working memory. Sets `on_boundary` (false for a vertex inside one cluster).
+void vertex_cycle(const TriMesh& mesh, const MeshTopology& topology, const std::vector<int>& labels, int v,
+                  std::vector<int>& fan, std::vector<int>& cycle, bool& on_boundary);
+
 }  // namespace ff

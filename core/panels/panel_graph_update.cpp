@@ -11,34 +11,6 @@ struct Scratch {
   std::vector<int> fan, cycle, sorted;
 };
 
-// The clusters around v exactly as build_panel_graph() lists them (a corner's `clusters`
-// when three or more): counter-clockwise, repeats in a row removed, kBoundary last on the
-// boundary. A vertex inside one cluster is that cluster alone.
-void vertex_cycle(const TriMesh& mesh, const MeshTopology& topology, const std::vector<int>& labels, int v, Scratch& s,
-                  bool& on_boundary) {
-  s.cycle.clear();
-  on_boundary = false;
-  const int begin = topology.vertex_face_offsets[static_cast<size_t>(v)];
-  const int end = topology.vertex_face_offsets[static_cast<size_t>(v) + 1];
-  if (begin == end) return;
-  const int first_label = labels[static_cast<size_t>(topology.vertex_faces[static_cast<size_t>(begin)])];
-  bool single = true;
-  for (int k = begin + 1; k < end && single; ++k)
-    single = labels[static_cast<size_t>(topology.vertex_faces[static_cast<size_t>(k)])] == first_label;
-  if (single && !is_boundary_vertex(mesh, topology, v)) {
-    s.cycle.push_back(first_label);
-    return;
-  }
-  vertex_fan(mesh, topology, v, on_boundary, s.fan);
-  if (s.fan.empty()) return;
-  for (int f : s.fan) {
-    const int c = labels[static_cast<size_t>(f)];
-    if (s.cycle.empty() || s.cycle.back() != c) s.cycle.push_back(c);
-  }
-  if (!on_boundary && s.cycle.size() > 1 && s.cycle.front() == s.cycle.back()) s.cycle.pop_back();
-  if (on_boundary) s.cycle.push_back(kBoundary);
-}
-
 // Adds `sign` times the vertex's share (s.cycle) to the counts: one vertex for each cluster
 // there, one pinch for each repeat of a cluster.
 void count_vertex(Scratch& s, long long sign, PanelGraphState& state) {
@@ -75,7 +47,7 @@ void count_all(const TriMesh& mesh, const MeshTopology& topology, size_t n, Pane
   state.pinches.assign(n, 0);
   for (int v = 0; v < mesh.num_vertices(); ++v) {
     bool on_boundary = false;
-    vertex_cycle(mesh, topology, state.labels, v, s, on_boundary);
+    vertex_cycle(mesh, topology, state.labels, v, s.fan, s.cycle, on_boundary);
     count_vertex(s, 1, state);
   }
   for (int f = 0; f < mesh.num_faces(); ++f) {
@@ -103,7 +75,7 @@ void update_corners(const TriMesh& mesh, const MeshTopology& topology, const std
     for (; k < g.corners.size() && g.corners[k].vertex < v; ++k) corners.push_back(std::move(g.corners[k]));
     if (k < g.corners.size() && g.corners[k].vertex == v) ++k;  // redone below
     bool on_boundary = false;
-    vertex_cycle(mesh, topology, labels, v, s, on_boundary);
+    vertex_cycle(mesh, topology, labels, v, s.fan, s.cycle, on_boundary);
     count_vertex(s, 1, state);
     g.corner_of_vertex[static_cast<size_t>(v)] = -1;
     if (s.cycle.size() >= 3) corners.push_back(Corner{v, on_boundary, s.cycle});
@@ -252,7 +224,7 @@ const PanelGraph& update_panel_graph(const TriMesh& mesh, const MeshTopology& to
   // Out with the old shares, in with the new.
   for (int v : affected) {
     bool on_boundary = false;
-    vertex_cycle(mesh, topology, state.labels, v, s, on_boundary);
+    vertex_cycle(mesh, topology, state.labels, v, s.fan, s.cycle, on_boundary);
     count_vertex(s, -1, state);
   }
   for (int f : touched)
