@@ -63,6 +63,59 @@ void vertex_cycle(const TriMesh& mesh, const MeshTopology& topology, const std::
   if (on_boundary) cycle.push_back(kBoundary);
 }
 
+int next_border_half_edge(const TriMesh& mesh, const MeshTopology& topology, const std::vector<int>& labels, int h) {
+  const int c = labels[static_cast<size_t>(h / 3)];
+  int f = h / 3;
+  const int v = mesh.triangles[static_cast<size_t>(f)][static_cast<size_t>((h % 3 + 1) % 3)];
+  for (;;) {
+    const int j = local_index(mesh.triangles[static_cast<size_t>(f)], v);
+    const int across = topology.face_neighbors[static_cast<size_t>(f)][static_cast<size_t>(j)];
+    if (across < 0 || labels[static_cast<size_t>(across)] != c) return 3 * f + j;
+    f = across;
+  }
+}
+
+void trace_border_loops(const std::vector<int>& half_edges, const std::vector<int>& next,
+                        const std::vector<int>& labels, std::vector<char>& seen, std::vector<std::vector<int>>& loops,
+                        std::vector<int>& loop_count) {
+  for (int h0 : half_edges) {
+    if (seen[static_cast<size_t>(h0)]) continue;
+    const int c = labels[static_cast<size_t>(h0 / 3)];
+    std::vector<int> loop;
+    for (int h = h0; !seen[static_cast<size_t>(h)]; h = next[static_cast<size_t>(h)]) {
+      seen[static_cast<size_t>(h)] = 1;
+      loop.push_back(h);
+    }
+    if (++loop_count[static_cast<size_t>(c)] == 1) loops[static_cast<size_t>(c)] = std::move(loop);
+  }
+}
+
+unsigned start_loop_after_corner(const TriMesh& mesh, const MeshTopology& topology, const std::vector<int>& labels,
+                                 const std::vector<int>& corner_of_vertex, std::vector<int>& loop,
+                                 std::vector<int>& chain_neighbours) {
+  const auto ends_chain = [&](int h) {
+    const int head = mesh.triangles[static_cast<size_t>(h / 3)][static_cast<size_t>((h % 3 + 1) % 3)];
+    return corner_of_vertex[static_cast<size_t>(head)] >= 0;
+  };
+  const auto it = std::find_if(loop.begin(), loop.end(), ends_chain);
+  if (it == loop.end()) {
+    // A whole open component as one panel is all border; otherwise the cluster is enclosed.
+    if (PanelGraph::other_side(topology, labels, loop.front()) == kBoundary) return 0u;
+    loop.clear();
+    return kEnclosed;
+  }
+  std::rotate(loop.begin(), it + 1, loop.end());
+  chain_neighbours.clear();
+  for (int h : loop) {
+    if (!ends_chain(h)) continue;
+    const int other = PanelGraph::other_side(topology, labels, h);
+    if (other != kBoundary) chain_neighbours.push_back(other);
+  }
+  std::sort(chain_neighbours.begin(), chain_neighbours.end());
+  return std::adjacent_find(chain_neighbours.begin(), chain_neighbours.end()) != chain_neighbours.end() ? kTwoChains
+                                                                                                        : 0u;
+}
+
 PanelGraph build_panel_graph(const TriMesh& mesh, const MeshTopology& topology, const std::vector<int>& labels,
                              int num_clusters) {
   const size_t n = static_cast<size_t>(num_clusters);
@@ -115,35 +168,14 @@ PanelGraph build_panel_graph(const TriMesh& mesh, const MeshTopology& topology, 
   std::vector<long long> twice_edges(n, 0);
   for (int f = 0; f < faces; ++f) twice_edges[static_cast<size_t>(labels[static_cast<size_t>(f)])] += 3;
   for (int h : boundary_half_edges) twice_edges[static_cast<size_t>(labels[static_cast<size_t>(h / 3)])] += 1;
-  for (int h : boundary_half_edges) {
-    const int c = labels[static_cast<size_t>(h / 3)];
-    int f = h / 3;
-    const int v = mesh.triangles[static_cast<size_t>(f)][static_cast<size_t>((h % 3 + 1) % 3)];
-    for (;;) {
-      const int j = local_index(mesh.triangles[static_cast<size_t>(f)], v);
-      const int across = topology.face_neighbors[static_cast<size_t>(f)][static_cast<size_t>(j)];
-      if (across < 0 || labels[static_cast<size_t>(across)] != c) {
-        next[static_cast<size_t>(h)] = 3 * f + j;
-        break;
-      }
-      f = across;
-    }
-  }
+  for (int h : boundary_half_edges) next[static_cast<size_t>(h)] = next_border_half_edge(mesh, topology, labels, h);
 
   // Loops per cluster.
   std::vector<char> seen(next.size(), 0);
   std::vector<int> loop_count(n, 0);
-  for (int h0 : boundary_half_edges) {
-    if (seen[static_cast<size_t>(h0)]) continue;
-    const int c = labels[static_cast<size_t>(h0 / 3)];
-    std::vector<int> loop;
-    for (int h = h0; !seen[static_cast<size_t>(h)]; h = next[static_cast<size_t>(h)]) {
-      seen[static_cast<size_t>(h)] = 1;
-      loop.push_back(h);
-    }
-    if (++loop_count[static_cast<size_t>(c)] == 1) g.loops[static_cast<size_t>(c)] = std::move(loop);
-  }
+  trace_border_loops(boundary_half_edges, next, labels, seen, g.loops, loop_count);
 
+  std::vector<int> chain_neighbours;
   for (size_t c = 0; c < n; ++c) {
     if (loop_count[c] > 1) g.problems[c] |= kHole;
     if (2 * euler[c] - twice_edges[c] != 2) g.problems[c] |= kHandle;
@@ -152,31 +184,7 @@ PanelGraph build_panel_graph(const TriMesh& mesh, const MeshTopology& topology, 
       if (g.problems[c] != 0) loop.clear();
       continue;
     }
-    // Rotate the loop to start right after a corner, then count chains per neighbour.
-    const auto head = [&](int h) {
-      return mesh.triangles[static_cast<size_t>(h / 3)][static_cast<size_t>((h % 3 + 1) % 3)];
-    };
-    const auto it = std::find_if(loop.begin(), loop.end(),
-                                 [&](int h) { return g.corner_of_vertex[static_cast<size_t>(head(h))] >= 0; });
-    if (it == loop.end()) {
-      if (PanelGraph::other_side(topology, labels, loop.front()) != kBoundary) {
-        g.problems[c] |= kEnclosed;
-        loop.clear();
-      }
-      continue;  // a whole open component as one panel: all border
-    }
-    std::rotate(loop.begin(), it + 1, loop.end());
-    std::vector<int> chain_neighbours;
-    for (size_t k = 0; k < loop.size(); ++k) {
-      const bool ends_chain = g.corner_of_vertex[static_cast<size_t>(head(loop[k]))] >= 0;
-      if (ends_chain) {
-        const int other = PanelGraph::other_side(topology, labels, loop[k]);
-        if (other != kBoundary) chain_neighbours.push_back(other);
-      }
-    }
-    std::sort(chain_neighbours.begin(), chain_neighbours.end());
-    if (std::adjacent_find(chain_neighbours.begin(), chain_neighbours.end()) != chain_neighbours.end())
-      g.problems[c] |= kTwoChains;
+    g.problems[c] |= start_loop_after_corner(mesh, topology, labels, g.corner_of_vertex, loop, chain_neighbours);
   }
   return g;
 }

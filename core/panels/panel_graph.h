@@ -45,6 +45,24 @@ struct PanelGraph {
   }
 };
 
+// The half-edge after border half-edge h along its cluster's border: about h's head vertex
+// through the cluster's own faces until an edge leaves the cluster.
+int next_border_half_edge(const TriMesh& mesh, const MeshTopology& topology, const std::vector<int>& labels, int h);
+
+// Follows `next` (next_border_half_edge) from each of `half_edges` not yet `seen`, marking
+// them: the first loop of a cluster c goes to loops[c], and loop_count[c] counts its loops.
+void trace_border_loops(const std::vector<int>& half_edges, const std::vector<int>& next,
+                        const std::vector<int>& labels, std::vector<char>& seen, std::vector<std::vector<int>>& loops,
+                        std::vector<int>& loop_count);
+
+// The border loop of a cluster with no other problem, rotated to start just after a corner.
+// Returns kEnclosed (the loop cleared) when it has no corner and does not run along the mesh
+// boundary, kTwoChains when it meets a neighbour in two chains, else 0. corner_of_vertex: as
+// PanelGraph's; chain_neighbours: working memory.
+unsigned start_loop_after_corner(const TriMesh& mesh, const MeshTopology& topology, const std::vector<int>& labels,
+                                 const std::vector<int>& corner_of_vertex, std::vector<int>& loop,
+                                 std::vector<int>& chain_neighbours);
+
 // O(m). labels in [0, num_clusters), every cluster non-empty.
 PanelGraph build_panel_graph(const TriMesh& mesh, const MeshTopology& topology, const std::vector<int>& labels,
                              int num_clusters);

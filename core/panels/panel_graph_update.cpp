@@ -99,37 +99,12 @@ void redo_loops(const TriMesh& mesh, const MeshTopology& topology, const std::ve
       if (PanelGraph::other_side(topology, labels, 3 * f + i) != c) half_edges.push_back(3 * f + i);
     }
   }
-  for (int h : half_edges) {
-    const int c = labels[static_cast<size_t>(h / 3)];
-    int f = h / 3;
-    const int v = mesh.triangles[static_cast<size_t>(f)][static_cast<size_t>((h % 3 + 1) % 3)];
-    for (;;) {
-      const int j = local_index(mesh.triangles[static_cast<size_t>(f)], v);
-      const int across = topology.face_neighbors[static_cast<size_t>(f)][static_cast<size_t>(j)];
-      if (across < 0 || labels[static_cast<size_t>(across)] != c) {
-        state.next[static_cast<size_t>(h)] = 3 * f + j;
-        break;
-      }
-      f = across;
-    }
-  }
+  for (int h : half_edges) state.next[static_cast<size_t>(h)] = next_border_half_edge(mesh, topology, labels, h);
   std::vector<int> loop_count(g.problems.size(), 0);  // only the dirty ones are read
   for (int c : dirty) g.loops[static_cast<size_t>(c)].clear();
-  for (int h0 : half_edges) {
-    if (state.seen[static_cast<size_t>(h0)]) continue;
-    const int c = labels[static_cast<size_t>(h0 / 3)];
-    std::vector<int> loop;
-    for (int h = h0; !state.seen[static_cast<size_t>(h)]; h = state.next[static_cast<size_t>(h)]) {
-      state.seen[static_cast<size_t>(h)] = 1;
-      loop.push_back(h);
-    }
-    if (++loop_count[static_cast<size_t>(c)] == 1) g.loops[static_cast<size_t>(c)] = std::move(loop);
-  }
+  trace_border_loops(half_edges, state.next, labels, state.seen, g.loops, loop_count);
   for (int h : half_edges) state.seen[static_cast<size_t>(h)] = 0, state.next[static_cast<size_t>(h)] = -1;
 
-  const auto head = [&](int h) {
-    return mesh.triangles[static_cast<size_t>(h / 3)][static_cast<size_t>((h % 3 + 1) % 3)];
-  };
   std::vector<int> chain_neighbours;
   for (int ci : dirty) {
     const size_t c = static_cast<size_t>(ci);
@@ -144,26 +119,7 @@ void redo_loops(const TriMesh& mesh, const MeshTopology& topology, const std::ve
       if (problems != 0) loop.clear();
       continue;
     }
-    // The rest as in build_panel_graph(): start after a corner, count chains per neighbour.
-    const auto it = std::find_if(loop.begin(), loop.end(),
-                                 [&](int h) { return g.corner_of_vertex[static_cast<size_t>(head(h))] >= 0; });
-    if (it == loop.end()) {
-      if (PanelGraph::other_side(topology, labels, loop.front()) != kBoundary) {
-        g.problems[c] |= kEnclosed;
-        loop.clear();
-      }
-      continue;
-    }
-    std::rotate(loop.begin(), it + 1, loop.end());
-    chain_neighbours.clear();
-    for (int h : loop) {
-      if (g.corner_of_vertex[static_cast<size_t>(head(h))] < 0) continue;
-      const int other = PanelGraph::other_side(topology, labels, h);
-      if (other != kBoundary) chain_neighbours.push_back(other);
-    }
-    std::sort(chain_neighbours.begin(), chain_neighbours.end());
-    if (std::adjacent_find(chain_neighbours.begin(), chain_neighbours.end()) != chain_neighbours.end())
-      g.problems[c] |= kTwoChains;
+    g.problems[c] |= start_loop_after_corner(mesh, topology, labels, g.corner_of_vertex, loop, chain_neighbours);
   }
 }
 
