@@ -27,6 +27,22 @@ int step_into_polish(Remesher& r, int attempts) {
   return polish;
 }
 
+// cow.off at 61 panels, seed 2: its rounds end invalid, so the polish runs all three passes.
+RemeshParams cow61_seed2() {
+  RemeshParams p;
+  p.panels = 61;
+  p.seed = 2;
+  return p;
+}
+
+// `r` two polish steps in, with more to come (still in the panel stage).
+::testing::AssertionResult two_steps_into_polish(Remesher& r) {
+  const int made = step_into_polish(r, 2);
+  if (made != 2) return ::testing::AssertionFailure() << made << " polish steps, not 2";
+  if (r.progress().stage != Stage::Panels) return ::testing::AssertionFailure() << "the polish ended after 2 steps";
+  return ::testing::AssertionSuccess();
+}
+
 // Valid, or the invalid panels reported: the progress, the panel mesh and the quality check
 // agree on how many there are.
 void expect_valid_or_reported(const Remesher& r, int panels, double max_hausdorff) {
@@ -112,10 +128,7 @@ TEST(PolishBest, CowAt61PanelsSeed2EveryClusterGetsItsPanel) {
 // invalid count (the best's) never goes up; the result is the one
 // CowAt61PanelsSeed2EveryClusterGetsItsPanel checks.
 TEST(PolishBest, OneAttemptPerStep) {
-  RemeshParams p;
-  p.panels = 61;
-  p.seed = 2;
-  Remesher r(test::load_clean("cow.off"), p);
+  Remesher r(test::load_clean("cow.off"), cow61_seed2());
   int polish = 0, rounds = -1, last_invalid = -1;
   while (!r.done()) {
     const bool panels = r.progress().stage == Stage::Panels;
@@ -146,12 +159,9 @@ TEST(PolishBest, OneAttemptPerStep) {
 // moment (n clusters between steps) and the run finishes, valid or with its invalid panels
 // reported; the count is the new one.
 TEST(PolishBest, NewPanelCountMidPolishFinishes) {
-  RemeshParams p;
-  p.panels = 61;
-  p.seed = 2;
+  RemeshParams p = cow61_seed2();
   Remesher r(test::load_clean("cow.off"), p);
-  ASSERT_EQ(step_into_polish(r, 2), 2);
-  ASSERT_EQ(r.progress().stage, Stage::Panels);  // more polish steps to come
+  ASSERT_TRUE(two_steps_into_polish(r));
   p.panels = 70;
   r.set_params(p);
   EXPECT_EQ(r.progress().stage, Stage::Lloyd);
@@ -163,12 +173,9 @@ TEST(PolishBest, NewPanelCountMidPolishFinishes) {
 // result is exactly that of a fresh solve with the new seed.
 TEST(PolishBest, NewSeedMidPolishEqualsAFreshSolve) {
   const TriMesh mesh = test::load_clean("cow.off");
-  RemeshParams p;
-  p.panels = 61;
-  p.seed = 2;
+  RemeshParams p = cow61_seed2();
   Remesher r(mesh, p);
-  ASSERT_EQ(step_into_polish(r, 2), 2);
-  ASSERT_EQ(r.progress().stage, Stage::Panels);  // more polish steps to come
+  ASSERT_TRUE(two_steps_into_polish(r));
   p.seed = 1;
   r.set_params(p);
   r.run();
@@ -183,12 +190,9 @@ TEST(PolishBest, NewSeedMidPolishEqualsAFreshSolve) {
 // An edit asked for in the middle of the polish: set_edits finishes the solve first, then
 // splits the panel; the design ends valid or reported with one panel more.
 TEST(PolishBest, EditMidPolishFinishesTheSolveFirst) {
-  RemeshParams p;
-  p.panels = 61;
-  p.seed = 2;
+  RemeshParams p = cow61_seed2();
   Remesher r(test::load_clean("cow.off"), p);
-  ASSERT_EQ(step_into_polish(r, 2), 2);
-  ASSERT_EQ(r.progress().stage, Stage::Panels);  // more polish steps to come
+  ASSERT_TRUE(two_steps_into_polish(r));
   r.set_edits({PanelEdit{PanelEdit::Op::Split, 0, -1}});
   expect_valid_or_reported(r, 62, 0.12);
 }
