@@ -148,9 +148,10 @@ class PanelLayout {
   // From now on a panel whose plane faces away from its faces (the sum of their area
   // normals) is flipped too, as the quality report (core/quality/report.cpp) calls it
   // misoriented although its outline may run counter-clockwise in its own plane (a plane
-  // turned across its faces); rebuilds every panel. The panel rounds leave it off, so their
-  // choices (and every run that ends valid without it) stay as they were; the remesher turns
-  // it on for the attempts it finishes with (Remesher::finish_panels), before the mend.
+  // turned across its faces); rebuilds every panel. The panel rounds leave it off while
+  // panels are invalid, so their choices stay as they were; the remesher turns it on for a
+  // round that looks valid (Remesher::panel_round: a misoriented panel then keeps the rounds
+  // going) and for the attempts it finishes with (Remesher::finish_panels), before the mend.
   void judge_orientation();
 
   PanelMesh to_panel_mesh(const FaceData& frame) const;

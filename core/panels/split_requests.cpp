@@ -80,6 +80,23 @@ std::vector<int> enclosed_clusters(const PanelAttempt& attempt) {
   return out;
 }
 
+std::vector<int> tiny_invalid_clusters(const PanelAttempt& attempt, int share) {
+  const Clustering& c = attempt.clustering();
+  const PanelLayout& layout = attempt.layout();
+  std::vector<int> size(static_cast<size_t>(c.num_clusters()), 0);
+  for (int l : c.labels) size[static_cast<size_t>(l)] += 1;
+  const size_t faces = c.labels.size();
+  std::vector<int> out;
+  for (int cluster = 0; cluster < layout.num_clusters() && cluster < c.num_clusters(); ++cluster) {
+    const size_t i = static_cast<size_t>(cluster);
+    if (layout.issues()[i].valid() || attempt.graph().problems[i] == kEnclosed) continue;
+    // size < mean / share, in integers: size * share * n < faces.
+    if (static_cast<size_t>(size[i]) * static_cast<size_t>(share) * size.size() >= faces) continue;
+    out.push_back(cluster);
+  }
+  return out;
+}
+
 std::vector<std::pair<int, int>> split_requests(const TriMesh& mesh, const MeshTopology& topology,
                                                 const PanelAttempt& attempt, int max_geometric,
                                                 const std::vector<char>& keep) {

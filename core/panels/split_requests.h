@@ -14,6 +14,12 @@ class PanelAttempt;
 // Clusters enclosed by a single neighbour: to be moved elsewhere (relocate_clusters).
 std::vector<int> enclosed_clusters(const PanelAttempt& attempt);
 
+// Invalid panels whose clusters are too small to split near their problem (fewer faces than
+// the mean cluster's / `share`), not enclosed: to be moved elsewhere like enclosed ones. A
+// one-face cluster between three others is a triangle that the planes around it can flip,
+// and no split can fix.
+std::vector<int> tiny_invalid_clusters(const PanelAttempt& attempt, int share);
+
 // Where to split after a failed attempt: (cluster, face) requests for split_near(). A cluster
 // that meets one neighbour in two separate chains splits at the middle of its chain with
 // that neighbour farthest from its seed (cut off it, the halves meet the neighbour once

@@ -126,9 +126,9 @@ TEST(AimFaceNormals, ValidLayoutUnchanged) {
 
 // face.obj at 574 panels, seed 2: the panel phase called the run valid while the quality
 // report found panel 207 facing away from its faces (its outline counter-clockwise in its
-// own plane, the plane 94 degrees from its faces' normal). Judged at the end, the panel is
-// invalid in both (the mend cannot turn it back without breaking 4 more panels); the polish
-// (remesher_polish.cpp) then cuts it in two and the run ends valid by both.
+// own plane, the plane 94 degrees from its faces' normal). Judged as the end judges it, the
+// panel is invalid in both; now the round that looked valid (round 5) judges it, and the run
+// ends valid by both at round 6 (before, the polish cut it in two after the rounds).
 TEST(PanelOrientation, FaceAt574Seed2AgreesWithTheQualityCheck) {
   EXPECT_TRUE(agrees_with_quality(*test::remeshed("face.obj", 574, 2)));
 }
