@@ -90,7 +90,7 @@ struct Options {
 Options parse_options(const std::vector<std::string>& argv) {
   std::set<std::string> with_value = {"panels", "seed",   "weights", "density",  "iterations",
                                       "out",    "report", "seeding", "min-angle", "edits", "prepare",
-                                      "edge-length", "density-expr", "anisotropy"};
+                                      "edge-length", "density-expr", "anisotropy", "retries"};
   with_value.insert(fabrication_option_names().begin(), fabrication_option_names().end());
   with_value.insert(subdivision_option_names().begin(), subdivision_option_names().end());
   with_value.insert(repair_option_names().begin(), repair_option_names().end());
@@ -105,6 +105,7 @@ Options parse_options(const std::vector<std::string>& argv) {
   p.panels = static_cast<int>(args.get_int("panels", 0, 1, 10'000'000));
   p.seed = args.get_u64("seed", 1);
   if (args.has("iterations")) std::tie(p.lloyd_iterations, p.panel_rounds) = parse_iterations(args.get("iterations"));
+  p.retries = static_cast<int>(args.get_int("retries", p.retries, 0, 10));
   if (args.has("weights")) p.weights = parse_weights(args.get("weights"));
   o.seeding = args.get("seeding", "farthest");
   if (o.seeding == "random")

@@ -110,6 +110,9 @@ std::string remesh_report_json(const RemeshRun& run) {
   j.begin_object("iterations");
   j.value("lloyd", r.lloyd_iterations_done()).value("panel_rounds", r.panel_rounds_done());
   j.value("lloyd_limit", p.lloyd_iterations).value("panel_rounds_limit", p.panel_rounds);
+  // Solves from a new seeding made after the first (RemeshParams::retries); the counts above
+  // are the kept solve's.
+  j.value("retries", r.retries_done()).value("retries_limit", p.retries);
   j.end_object();
   j.value("converged", r.converged());
   j.value("teleports", r.teleports_done());

@@ -161,6 +161,8 @@ RemeshParams remesh_params_from_json(std::string_view json, const RemeshParams& 
     } else if (name == "panelRounds") {
       // At least one round: without one there are no panels.
       p.panel_rounds = static_cast<int>(number(value, name, 1, kMaxIterations, true));
+    } else if (name == "retries") {
+      p.retries = static_cast<int>(number(value, name, 0, 10, true));
     } else if (name == "seeding") {
       if (value.type != JsonValue::Type::String || (value.string != "farthest" && value.string != "random"))
         throw InputError("parameter 'seeding' must be \"farthest\" or \"random\"");

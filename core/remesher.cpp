@@ -15,6 +15,7 @@
 #include "core/panels/plane_fit.h"
 #include "core/panels/split_requests.h"
 #include "core/util/error.h"
+#include "core/util/random.h"
 
 namespace ff {
 
@@ -36,6 +37,7 @@ const char* stage_name(Stage stage) {
 
 namespace {
 constexpr int kMaxIterations = 100000;
+constexpr int kMaxRetries = 10;
 // Panel rounds without a new fewest-invalid count before the panel phase gives up (k2 bounds
 // it). The count jumps about from round to round, and progress comes late: on cow.off the
 // fewest went 7 -> 6 after 45 rounds at 61 panels (valid at round 65) and 4 -> 3 after 36 at
@@ -82,6 +84,8 @@ void Remesher::validate(const RemeshParams& p) const {
   if (p.teleport_interval < 0 || p.teleport_moves < 0) throw InputError("teleport interval and moves must be >= 0");
   if (p.panel_rounds < 0 || p.panel_rounds > kMaxIterations)
     throw InputError("panel rounds must be between 0 and " + std::to_string(kMaxIterations));
+  if (p.retries < 0 || p.retries > kMaxRetries)
+    throw InputError("retries must be between 0 and " + std::to_string(kMaxRetries));
   if (!(p.min_corner_angle_deg >= 0.0 && p.min_corner_angle_deg <= 60.0))
     throw InputError("the minimum corner angle must be between 0 and 60 degrees");
   seeds_per_component(faces_, topology_, p.panels);  // throws on too many / too few panels
@@ -298,7 +302,48 @@ void Remesher::finish_panels() {
   end_panels();
 }
 
+std::uint64_t Remesher::solve_seed() const {
+  if (retries_done_ == 0) return params_.seed;
+  SplitMix64 mix(params_.seed);  // retry k: the k-th number of the seed's own sequence
+  std::uint64_t seed = 0;
+  for (int k = 0; k < retries_done_; ++k) seed = mix.next();
+  return seed;
+}
+
+bool Remesher::retry_if_invalid() {
+  EarlierSolve& e = earlier_;
+  if (e.best && e.best->num_invalid() <= best_->num_invalid()) {  // the earlier is as good: back to it
+    std::swap(best_, e.best);
+    std::swap(lloyd_done_, e.lloyd_done);
+    std::swap(teleports_, e.teleports);
+    std::swap(panel_rounds_done_, e.panel_rounds);
+    std::swap(converged_, e.converged);
+    clustering_ = best_->clustering();
+  }
+  // Only a solve a new seeding can stand in for: no locked panels, no edits made part of the
+  // design by a later parameter change, the count of the parameters.
+  const bool plain = locks_.empty() && base_edits_ == 0 && clustering_.num_clusters() == params_.panels;
+  if (best_->num_invalid() == 0 || retries_done_ >= params_.retries || !plain) {
+    earlier_ = EarlierSolve{};
+    return false;
+  }
+  earlier_ = EarlierSolve{std::move(best_), lloyd_done_, teleports_, panel_rounds_done_, converged_};
+  ++retries_done_;
+  alternates_.clear();
+  start_over();  // from the retry's seed (solve_seed)
+  return true;
+}
+
+void Remesher::start_over() {
+  clustering_ = Clustering{};
+  teleports_ = 0;
+  lloyd_done_ = 0;
+  converged_ = false;
+  progress_ = Progress{Stage::Seeding, 0, 1, 0.0, 0};
+}
+
 void Remesher::end_panels() {
+  if (retry_if_invalid()) return;
   progress_.energy = clustering_.energy * faces_.area_to_world();
   panels_ = best_->layout().to_panel_mesh(faces_);
   progress_.invalid_panels = panels_.num_invalid();
@@ -367,7 +412,7 @@ Progress Remesher::step() {
   switch (progress_.stage) {
     case Stage::Seeding: {
       const std::vector<int> seeds =
-          place_seeds(faces_, topology_, params_.panels, params_.seeding, params_.seed, params_.weights.density);
+          place_seeds(faces_, topology_, params_.panels, params_.seeding, solve_seed(), params_.weights.density);
       clustering_ = initial_clustering(metric_, topology_, seeds);
       start_lloyd();
       break;
@@ -448,16 +493,14 @@ void Remesher::set_params(RemeshParams params) {
   }
   const int target = keep_count ? old_panels : params.panels;
   params_ = std::move(params);
+  earlier_ = EarlierSolve{};  // a new solve: its own retries
+  retries_done_ = 0;
   if (faces) faces_ = std::move(*faces);
   moments_.clear();
   metric_ = Metric(faces_, params_.weights, params_.panels);
   if (restart) {
-    clustering_ = Clustering{};
-    teleports_ = 0;
-    lloyd_done_ = 0;
-    converged_ = false;
     clear_edits();
-    progress_ = Progress{Stage::Seeding, 0, 1, 0.0, 0};
+    start_over();
     return;
   }
   // The edits so far are part of the design now: undo replays from the next solve.

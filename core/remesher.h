@@ -63,6 +63,13 @@ struct RemeshParams {
   // k2: an upper bound; stops at the first valid panel mesh, or after 50 rounds in which the
   // fewest invalid panels did not go down.
   int panel_rounds = 100;
+  // Solves again from a new seeding, at most this many times, when the panels end invalid
+  // (0: never): the panel phase is chaotic, and where one clustering leaves a panel or two
+  // invalid, another of the same count often has none (cow.off at 46-78 panels). The result
+  // with the fewest invalid panels is kept, the earlier on ties; a run valid at once never
+  // retries, so it is unchanged. Each retry's seed is derived from `seed` (deterministic).
+  // Not with edits (their panels are named in the first solve's clustering).
+  int retries = 2;
   // Where four or more planes meet: false (default) splits the node into valence-3 nodes
   // joined by short edges; true makes all of them pass through one point (paper 2.2).
   bool single_point_nodes = false;
@@ -148,6 +155,9 @@ class Remesher {
   int lloyd_iterations_done() const { return lloyd_done_; }
   int teleports_done() const { return teleports_; }
   bool converged() const { return converged_; }
+  // Retries made so far in this solve (RemeshParams::retries); the solve in progress is
+  // retry number retries_done() (0: the first).
+  int retries_done() const { return retries_done_; }
 
  private:
   void validate(const RemeshParams& params) const;
@@ -159,6 +169,11 @@ class Remesher {
   void optimize_planes();
   void finish_panels();
   void end_panels();  // the panel phase's result: the best attempt's panels, then Optimize or Done
+  // At the end of a panel phase: keeps the better of this solve and the earlier ones, and
+  // starts a retry from a new seeding when panels are invalid and retries are left (true).
+  bool retry_if_invalid();
+  std::uint64_t solve_seed() const;  // params().seed, or the retry's seed derived from it
+  void start_over();                 // a fresh solve from the Seeding stage (the clustering dropped)
   void mend_best();  // last fixes on the best attempt when it is still invalid
   std::unique_ptr<PanelAttempt> make_attempt();  // the panel attempt of clustering_ now
   // remesher_polish.cpp: after mend_best, more attempts from the best, one per step().
@@ -233,6 +248,15 @@ class Remesher {
     std::unique_ptr<PanelAttempt> from;
   };
   PolishState polish_;
+  // The best solve before the current retry (retry_if_invalid), with what the report says
+  // about it. Empty outside a retry.
+  struct EarlierSolve {
+    std::unique_ptr<PanelAttempt> best;
+    int lloyd_done = 0, teleports = 0, panel_rounds = 0;
+    bool converged = false;
+  };
+  EarlierSolve earlier_;
+  int retries_done_ = 0;
   PanelMesh panels_;
   int panel_rounds_done_ = 0;
   // Panel rounds since the fewest invalid panels went down or since the last stall split

@@ -42,7 +42,7 @@ struct Remesher::EditState {
   Clustering clustering;
   Progress progress;
   PanelMesh panels;
-  int panel_rounds_done = 0, stalled_rounds = 0, lloyd_done = 0, teleports = 0;
+  int panel_rounds_done = 0, stalled_rounds = 0, lloyd_done = 0, teleports = 0, retries_done = 0;
   bool converged = false;
   std::vector<char> settled;
   std::vector<Plane> settled_planes, cluster_planes;
@@ -53,10 +53,10 @@ struct Remesher::EditState {
 };
 
 Remesher::EditState Remesher::save() const {
-  return EditState{params_,      clustering_, progress_,       panels_,         panel_rounds_done_,
-                   stalled_rounds_, lloyd_done_, teleports_,    converged_,      settled_,
-                   settled_planes_, cluster_planes_, cluster_nodes_, locks_, next_edit_, base_edits_,
-                   base_};
+  return EditState{params_,         clustering_,    progress_,       panels_,  panel_rounds_done_,
+                   stalled_rounds_, lloyd_done_,    teleports_,      retries_done_, converged_,
+                   settled_,        settled_planes_, cluster_planes_, cluster_nodes_, locks_,
+                   next_edit_,      base_edits_,    base_};
 }
 
 // Only ever called with a finished design (stage Done), which needs no panel attempt.
@@ -69,6 +69,8 @@ void Remesher::restore(const EditState& s) {
   stalled_rounds_ = s.stalled_rounds;
   lloyd_done_ = s.lloyd_done;
   teleports_ = s.teleports;
+  retries_done_ = s.retries_done;
+  earlier_ = EarlierSolve{};
   converged_ = s.converged;
   settled_ = s.settled;
   settled_planes_ = s.settled_planes;
@@ -240,7 +242,7 @@ bool Remesher::same_solve(const RemeshParams& a, const RemeshParams& b) {
          a.teleport_interval == b.teleport_interval && a.teleport_moves == b.teleport_moves &&
          a.make_panels == b.make_panels && a.panel_rounds == b.panel_rounds &&
          a.single_point_nodes == b.single_point_nodes && a.optimize_planes == b.optimize_planes &&
-         a.glass == b.glass && a.min_corner_angle_deg == b.min_corner_angle_deg;
+         a.glass == b.glass && a.min_corner_angle_deg == b.min_corner_angle_deg && a.retries == b.retries;
 }
 
 // The count after edits is the target plus splits minus merges (or what a new count reached):
@@ -268,13 +270,11 @@ void Remesher::set_edits(std::vector<PanelEdit> edits) {
       const std::shared_ptr<const EditState> base = base_;
       restore(*base);  // undo / redo: from the design before the first edit
       base_ = base;
-    } else {
-      clustering_ = Clustering{};
-      teleports_ = 0;
-      lloyd_done_ = 0;
-      converged_ = false;
+    } else {  // a fresh solve, as the first (its retries too), then every edit
       clear_edits();
-      progress_ = Progress{Stage::Seeding, 0, 1, 0.0, 0};
+      earlier_ = EarlierSolve{};
+      retries_done_ = 0;
+      start_over();
     }
     params_.edits = std::move(edits);
     run();

@@ -49,6 +49,7 @@ export interface RemeshParams {
   weights?: { euclidean?: number; l2?: number; l21?: number; density?: number; boundary?: number };
   lloydIterations?: number; // k1, default 20
   panelRounds?: number; // k2, default 100 (stops at the first valid round, or after 50 rounds without fewer invalid panels)
+  retries?: number; // 0..10, default 2: solves from a new seeding when panels end invalid (the fewest invalid kept)
   seeding?: 'farthest' | 'random';
   teleport?: boolean; // default true
   singlePointNodes?: boolean; // default false
@@ -150,6 +151,8 @@ export interface Progress extends Status {
   invalidPanels: number;
   done: boolean;
   panelRounds: number; // panel rounds done so far
+  attempt: number; // the solve in progress: 1, or 2.. for a retry from a new seeding (RemeshParams.retries)
+  attempts: number; // 1 + RemeshParams.retries: the most there can be
 }
 
 export interface Problems extends Status {

@@ -120,7 +120,8 @@ missing = [k for k in design + more if k not in r]
 assert not missing, missing
 for k in ("prepare", "cluster", "panels", "total"):
     assert isinstance(r["timings_s"][k], (int, float)) and r["timings_s"][k] >= 0, k
-assert set(r["iterations"]) >= {"lloyd", "panel_rounds"}, r["iterations"]
+assert set(r["iterations"]) >= {"lloyd", "panel_rounds", "retries", "retries_limit"}, r["iterations"]
+assert 0 <= r["iterations"]["retries"] <= r["iterations"]["retries_limit"], r["iterations"]
 assert set(r["weights"]) == {"euclidean", "l2", "l21", "density", "boundary"}, r["weights"]
 assert all(k.isdigit() and isinstance(v, int) for k, v in r["interior_valence"].items()), r["interior_valence"]
 assert r["requested_panels"] == requested, r["requested_panels"]
@@ -186,6 +187,23 @@ import json, sys
 a, b = (json.load(open(p)) for p in sys.argv[1:])
 a.pop('timings_s'); b.pop('timings_s')
 assert a == b" "$tmp/r1.json" "$tmp/r2.json" && ok || bad "remesh: same seed gave different reports"
+
+# Retries: cow.off at 78 panels, seed 2 ends with invalid panels (exit 3) without them, and
+# valid after one retry from a new seeding with the default --retries 2.
+"$bin" remesh "$meshes/cow.off" --panels 78 --seed 2 --retries 0 --out "$tmp/cow0.obj" --report "$tmp/cow0.json" 2>"$tmp/err.txt"
+code0=$?
+"$bin" remesh "$meshes/cow.off" --panels 78 --seed 2 --out "$tmp/cow2.obj" --report "$tmp/cow2.json" 2>"$tmp/err.txt"
+code2=$?
+if [ "$code0" = 3 ] && [ "$code2" = 0 ] &&
+  check_remesh 3 "$tmp/cow0.obj" "$tmp/cow0.json" 78 && check_remesh 0 "$tmp/cow2.obj" "$tmp/cow2.json" 78 &&
+  python3 -c "
+import json, sys
+a, b = (json.load(open(p))['iterations'] for p in sys.argv[1:])
+assert (a['retries'], a['retries_limit'], b['retries'], b['retries_limit']) == (0, 0, 1, 2), (a, b)" "$tmp/cow0.json" "$tmp/cow2.json"; then
+  ok
+else
+  bad "remesh --retries: cow 78 seed 2 exits $code0 without retries and $code2 with them"
+fi
 
 # More shapes: closed (epcot), genus 3 (3holes), three boundary loops of quads (YasIsland),
 # with the other switches; each checked like the first.
@@ -356,6 +374,8 @@ expect_error 2 "iterations.*'a'.*whole number" remesh "$e" --panels 10 --iterati
 expect_error 2 "iterations.*-1.*range" remesh "$e" --panels 10 --iterations -1,2 "${o[@]}"
 expect_error 2 "iterations.*K1,K2" remesh "$e" --panels 10 --iterations 1,2,3 "${o[@]}"
 expect_error 2 "unknown option --frobnicate" remesh "$e" --panels 10 --frobnicate "${o[@]}"
+expect_error 2 "retries" remesh "$e" --panels 10 --retries 11 "${o[@]}"
+expect_error 2 "retries" remesh "$e" --panels 10 --retries -1 "${o[@]}"
 expect_error 2 "thickness.*positive" remesh "$e" --panels 10 --thickness 0 --parts "$tmp/never.csv"
 expect_error 2 "thickness.*finite" remesh "$e" --panels 10 --thickness abc --parts "$tmp/never.csv"
 expect_error 2 "thickness.*nothing to use" remesh "$e" --panels 10 --thickness 0.02 "${o[@]}"

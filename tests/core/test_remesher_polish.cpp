@@ -187,14 +187,16 @@ TEST(PolishBest, NewSeedMidPolishEqualsAFreshSolve) {
   EXPECT_EQ(r.progress().invalid_panels, fresh.progress().invalid_panels);
 }
 
-// An edit asked for in the middle of the polish: set_edits finishes the solve first, then
-// splits the panel; the design ends valid or reported with one panel more.
+// An edit asked for in the middle of the polish: set_edits finishes the solve first (its
+// retry from a new seeding too), then splits the panel; the design ends valid or reported
+// with one panel more. The bound is the cow's at 61 panels (test_panel_rounds.cpp): a thin
+// tip 0.14 of the diagonal from its panels.
 TEST(PolishBest, EditMidPolishFinishesTheSolveFirst) {
   RemeshParams p = cow61_seed2();
   Remesher r(test::load_clean("cow.off"), p);
   ASSERT_TRUE(two_steps_into_polish(r));
   r.set_edits({PanelEdit{PanelEdit::Op::Split, 0, -1}});
-  expect_valid_or_reported(r, 62, 0.12);
+  expect_valid_or_reported(r, 62, 0.15);
 }
 
 }  // namespace
