@@ -283,6 +283,7 @@ std::string Session::report_json() {
     j.begin_object("iterations");
     j.value("lloyd", r.lloyd_iterations_done()).value("panel_rounds", r.panel_rounds_done());
     j.value("lloyd_limit", p.lloyd_iterations).value("panel_rounds_limit", p.panel_rounds);
+    j.value("retries", r.retries_done()).value("retries_limit", p.retries);  // as the CLI's report
     j.end_object();
     j.value("expected_cluster_diameter", r.metric().diameter());
     j.begin_object("timings_s");

@@ -10,6 +10,7 @@ import {
   distinctColours,
   download,
   errorAfter,
+  exampleLink,
   maxPlanarity,
   outcomes,
   openPage,
@@ -297,3 +298,31 @@ test('screenshots of the page after a solve, in each view', () =>
     const distinct = await distinctColours(page, '#viewport canvas');
     assert.ok(distinct > 30, `the viewport shows the panels (${distinct} distinct colours)`);
   }));
+
+// A closed sphere (epcot.off) into 4 panels at seed 1: the first solve's panels stay invalid;
+// the retry from a new seeding (RemeshParams.retries, default 2) makes a valid tetrahedron.
+// The progress line says so while it retries, so the progress bar going back to the start
+// does not look like a fault.
+test('a solve whose panels stay invalid retries from a new seeding and says so', async () => {
+  const params = { panels: 5, seed: 2, weights: { euclidean: 1, l2: 1, l21: 1, boundary: 1 }, lloydIterations: 20, panelRounds: 100, seeding: 'farthest', teleport: true, singlePointNodes: false, optimizePlanes: true };
+  await suite.withPage(exampleLink(suite.url, 'epcot', params), async (page) => {
+    assert.equal(await waitForDone(page), 5);
+    assert.ok(!/invalid|could not/.test(await statusText(page)), 'no retry note or problem after a valid solve');
+    await page.evaluate(() => {
+      window.statusTexts = [];
+      const status = document.querySelector('[role="status"]');
+      new MutationObserver(() => window.statusTexts.push(status.textContent ?? '')).observe(status, { childList: true, characterData: true, subtree: true });
+    });
+    await page.locator('#solver-options > summary').click();  // "Metric and solver" opens
+    await page.getByLabel('Seed', { exact: true }).fill('1');
+    await setPanels(page, 4);
+    assert.equal(await solveAfter(page, () => remesh(page)), 4);
+    assert.equal(await statusText(page), 'Done: 4 panels', 'valid after the retry');
+    const texts = await page.evaluate(() => window.statusTexts);
+    assert.ok(
+      texts.some((text) => /^Solving: .* · panels stayed invalid: new seeding, try 2 of 3 · /.test(text)),
+      `the retry is named in the progress line (${texts.length} texts)`,
+    );
+    await screenshot(page, 'epcot-4-after-retry');
+  });
+});

@@ -153,6 +153,29 @@ test('bad parameters are refused by name and change nothing', () => {
   s.delete();
 });
 
+// A torus cannot be 6 planar panels: the solve retries from a new seeding (RemeshParams
+// retries) and each step's progress says which try it is, for the page's progress line; the
+// report says how many retries were made.
+test('a retry from a new seeding is in the progress and the report', () => {
+  const s = session();
+  assert.equal(json(s.loadShape('torus', 1200)).ok, true);
+  assert.equal(json(s.setParams(JSON.stringify({ panels: 6, panelRounds: 2, retries: 1 }))).ok, true);
+  const attempts = new Set();
+  let last;
+  for (let i = 0; i < 10000 && !(last && last.done); ++i) {
+    last = json(s.step());
+    assert.equal(last.ok, true, last.message);
+    assert.equal(last.attempts, 2);
+    attempts.add(last.attempt);
+  }
+  assert.deepEqual([...attempts].sort(), [1, 2]);
+  assert.ok(last.invalidPanels > 0);
+  const report = json(s.reportJson());
+  assert.deepEqual([report.iterations.retries, report.iterations.retries_limit], [1, 1]);
+  expectError(s.setParams(JSON.stringify({ panels: 6, retries: 11 })), /retries/);
+  s.delete();
+});
+
 test('a shared mesh read from bytes gives the same panels as the native CLI', async (t) => {
   const { execFileSync } = await import('node:child_process');
   const { existsSync, mkdtempSync } = await import('node:fs');

@@ -8,8 +8,8 @@ import { retryNote, solvedSummary } from '../../build/web-tests/statusView.js';
 // says why, so the bar going back does not look like a fault. The first solve says nothing.
 test('a retry is named in the progress line, the first solve is not', () => {
   assert.equal(retryNote({ attempt: 1, attempts: 3 }), '');
-  assert.equal(retryNote({ attempt: 2, attempts: 3 }), ' (panels stayed invalid: new seeding, try 2 of 3)');
-  assert.equal(retryNote({ attempt: 3, attempts: 3 }), ' (panels stayed invalid: new seeding, try 3 of 3)');
+  assert.equal(retryNote({ attempt: 2, attempts: 3 }), ' · panels stayed invalid: new seeding, try 2 of 3');
+  assert.equal(retryNote({ attempt: 3, attempts: 3 }), ' · panels stayed invalid: new seeding, try 3 of 3');
 });
 
 test('the summary ends with "Done: N panels", the problems in front', () => {

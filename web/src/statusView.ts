@@ -21,7 +21,7 @@ export function solvedSummary(result: SolveResult): { text: string; warning: boo
 // A retry starts the stages over (RemeshParams.retries): say so, or the bar going back looks
 // like a fault.
 export function retryNote(progress: Pick<Progress, 'attempt' | 'attempts'>): string {
-  return progress.attempt > 1 ? ` (panels stayed invalid: new seeding, try ${progress.attempt} of ${progress.attempts})` : '';
+  return progress.attempt > 1 ? ` · panels stayed invalid: new seeding, try ${progress.attempt} of ${progress.attempts}` : '';
 }
 
 export type StatusTone = 'info' | 'done' | 'error';
@@ -69,7 +69,7 @@ export class StatusView {
     this.progress.value = progress.done ? 1 : value;
     this.label.textContent = progress.done ? 'done' : `${progress.stage} ${progress.iteration}/${progress.of}`;
     const invalid = progress.invalidPanels > 0 ? ` · ${progress.invalidPanels} invalid` : '';
-    this.show(`Solving${retryNote(progress)}: ${progress.stage.toLowerCase()} ${progress.iteration} of ${progress.of}${invalid} · ${elapsedSeconds.toFixed(1)} s`);
+    this.show(`Solving: ${progress.stage.toLowerCase()} ${progress.iteration} of ${progress.of}${invalid}${retryNote(progress)} · ${elapsedSeconds.toFixed(1)} s`);
   }
 
   resetProgress(label = 'idle'): void {
