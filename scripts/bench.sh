@@ -32,6 +32,16 @@ if ! grep -q "FF_HAVE_CGAL" build/release/bench/CMakeFiles/bench_cluster.dir/fla
   echo "bench.sh: CGAL not found at configure time; the tables will have no CGAL side (install libcgal-dev, scripts/setup.sh)" >&2
 fi
 
+# Times on a busy machine mislead, and not evenly: CGAL's extraction slowed 3-8x under load
+# where ours slowed about 2x (bench/README.md), so a loaded run flatters us. Warn above a
+# 1-minute load average of 0.5 (the tables record the load at start and end);
+# FF_BENCH_STRICT=1 refuses to run instead.
+load=$(cut -d' ' -f1 /proc/loadavg 2>/dev/null || echo 0)
+if awk -v l="$load" 'BEGIN { exit !(l > 0.5) }'; then
+  echo "bench.sh: load average $load > 0.5: other work will distort the times (run on an idle machine)" >&2
+  if [[ ${FF_BENCH_STRICT:-0} == 1 ]]; then exit 1; fi
+fi
+
 # run NAME RESULTS_FILE ARGS...: the table to stdout and to RESULTS_FILE. A failed measurement
 # is a row of the table (FAILED), so the table is kept; the exit status is the benchmark's.
 status=0
