@@ -88,9 +88,9 @@ struct Options {
 };
 
 Options parse_options(const std::vector<std::string>& argv) {
-  std::set<std::string> with_value = {"panels", "seed",   "weights", "density",  "iterations",
-                                      "out",    "report", "seeding", "min-angle", "edits", "prepare",
-                                      "edge-length", "density-expr", "anisotropy", "retries"};
+  std::set<std::string> with_value = {"panels",  "seed",        "weights",      "density",    "iterations",
+                                      "out",     "report",      "seeding",      "min-angle",  "edits",
+                                      "prepare", "edge-length", "density-expr", "anisotropy", "retries"};
   with_value.insert(fabrication_option_names().begin(), fabrication_option_names().end());
   with_value.insert(subdivision_option_names().begin(), subdivision_option_names().end());
   with_value.insert(repair_option_names().begin(), repair_option_names().end());

@@ -172,8 +172,10 @@ class Remesher {
   // At the end of a panel phase: keeps the better of this solve and the earlier ones, and
   // starts a retry from a new seeding when panels are invalid and retries are left (true).
   bool retry_if_invalid();
-  std::uint64_t solve_seed() const;  // params().seed, or the retry's seed derived from it
-  void start_over();                 // a fresh solve from the Seeding stage (the clustering dropped)
+  // params().seed, or the retry's seed derived from it.
+  std::uint64_t solve_seed() const;
+  // A fresh solve from the Seeding stage (the clustering dropped).
+  void start_over();
   void mend_best();  // last fixes on the best attempt when it is still invalid
   std::unique_ptr<PanelAttempt> make_attempt();  // the panel attempt of clustering_ now
   // remesher_polish.cpp: after mend_best, more attempts from the best, one per step().

@@ -51,14 +51,20 @@ TEST(Retries, Deterministic) {
   EXPECT_EQ(a->panels().panels, b->panels().panels);
 }
 
-// A torus cannot be 5 planar panels: every retry is made, each within the rounds asked,
-// and the result is still reported invalid.
-TEST(Retries, HopelessInputMakesEveryRetryAndStaysInvalid) {
+// A torus cannot be 5 planar panels (a polyhedral torus needs 7 faces): every solve of it
+// ends invalid.
+TriMesh torus() { return test::torus(40, 16); }
+RemeshParams five_panels(int panel_rounds, int retries) {
   RemeshParams p;
   p.panels = 5;
-  p.panel_rounds = 7;
-  p.retries = 3;
-  Remesher r(test::torus(40, 16), p);
+  p.panel_rounds = panel_rounds;
+  p.retries = retries;
+  return p;
+}
+
+// Every retry is made, each within the rounds asked, and the result is still reported invalid.
+TEST(Retries, HopelessInputMakesEveryRetryAndStaysInvalid) {
+  Remesher r(torus(), five_panels(7, 3));
   r.run();
   EXPECT_EQ(r.retries_done(), 3);
   EXPECT_EQ(r.panel_rounds_done(), 7);
@@ -69,11 +75,8 @@ TEST(Retries, HopelessInputMakesEveryRetryAndStaysInvalid) {
 // A retry starts the stages over: the progress goes back to seeding, and a new seed in the
 // middle of it is a fresh solve with its own retries.
 TEST(Retries, ProgressStartsOverAndANewSeedStartsFresh) {
-  RemeshParams p;
-  p.panels = 5;
-  p.panel_rounds = 3;
-  p.retries = 1;
-  Remesher r(test::torus(40, 16), p);
+  RemeshParams p = five_panels(3, 1);
+  Remesher r(torus(), p);
   bool saw_retry_seeding = false;
   while (!r.done()) {
     const Progress before = r.progress();
@@ -87,20 +90,15 @@ TEST(Retries, ProgressStartsOverAndANewSeedStartsFresh) {
   r.set_params(p);
   EXPECT_EQ(r.retries_done(), 0);
   r.run();
-  RemeshParams fresh_params = p;
-  Remesher fresh(test::torus(40, 16), fresh_params);
+  Remesher fresh(torus(), p);
   fresh.run();
   EXPECT_EQ(r.retries_done(), fresh.retries_done());
   EXPECT_EQ(r.panels().vertices, fresh.panels().vertices);
 }
 
 TEST(Retries, OutOfRangeIsAnInputError) {
-  RemeshParams p;
-  p.panels = 5;
-  p.retries = -1;
-  EXPECT_THROW(Remesher(test::torus(40, 16), p), InputError);
-  p.retries = 11;
-  EXPECT_THROW(Remesher(test::torus(40, 16), p), InputError);
+  EXPECT_THROW(Remesher(torus(), five_panels(100, -1)), InputError);
+  EXPECT_THROW(Remesher(torus(), five_panels(100, 11)), InputError);
 }
 
 }  // namespace
