@@ -35,7 +35,7 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-constexpr long long kMaxIterations = 100000;  // the Remesher's own limit for k1
+constexpr long long kMaxIterations = RemeshParams::kMaxIterations;  // k1 and k2
 
 // "K1,K2": at most K1 Lloyd iterations, at most K2 panel rounds.
 std::pair<int, int> parse_iterations(const std::string& text) {
@@ -105,7 +105,7 @@ Options parse_options(const std::vector<std::string>& argv) {
   p.panels = static_cast<int>(args.get_int("panels", 0, 1, 10'000'000));
   p.seed = args.get_u64("seed", 1);
   if (args.has("iterations")) std::tie(p.lloyd_iterations, p.panel_rounds) = parse_iterations(args.get("iterations"));
-  p.retries = static_cast<int>(args.get_int("retries", p.retries, 0, 10));
+  p.retries = static_cast<int>(args.get_int("retries", p.retries, 0, RemeshParams::kMaxRetries));
   if (args.has("weights")) p.weights = parse_weights(args.get("weights"));
   o.seeding = args.get("seeding", "farthest");
   if (o.seeding == "random")

@@ -13,7 +13,7 @@ namespace ff {
 namespace {
 
 constexpr double kMaxCount = 10'000'000;       // panels
-constexpr double kMaxIterations = 100'000;     // k1, k2 (the Remesher's own limit)
+constexpr double kMaxIterations = RemeshParams::kMaxIterations;  // k1, k2
 constexpr double kMaxSeed = 9007199254740991;  // 2^53 - 1: exact in a JS number
 constexpr double kMaxWeight = 1e6;
 
@@ -162,7 +162,7 @@ RemeshParams remesh_params_from_json(std::string_view json, const RemeshParams& 
       // At least one round: without one there are no panels.
       p.panel_rounds = static_cast<int>(number(value, name, 1, kMaxIterations, true));
     } else if (name == "retries") {
-      p.retries = static_cast<int>(number(value, name, 0, 10, true));
+      p.retries = static_cast<int>(number(value, name, 0, RemeshParams::kMaxRetries, true));
     } else if (name == "seeding") {
       if (value.type != JsonValue::Type::String || (value.string != "farthest" && value.string != "random"))
         throw InputError("parameter 'seeding' must be \"farthest\" or \"random\"");

@@ -36,8 +36,8 @@ const char* stage_name(Stage stage) {
 }
 
 namespace {
-constexpr int kMaxIterations = 100000;
-constexpr int kMaxRetries = 10;
+constexpr int kMaxIterations = RemeshParams::kMaxIterations;
+constexpr int kMaxRetries = RemeshParams::kMaxRetries;
 // Panel rounds without a new fewest-invalid count before the panel phase gives up (k2 bounds
 // it). The count jumps about from round to round, and progress comes late: on cow.off the
 // fewest went 7 -> 6 after 45 rounds at 61 panels (valid at round 65) and 4 -> 3 after 36 at

@@ -42,6 +42,10 @@ struct PanelEdit {
 const char* edit_name(PanelEdit::Op op);
 
 struct RemeshParams {
+  // The largest lloyd_iterations and panel_rounds, and the largest retries (Remesher throws
+  // above them; the CLI and the page's JSON parameters check the same).
+  static constexpr int kMaxIterations = 100000;
+  static constexpr int kMaxRetries = 10;
   // The count the solve targets. With edits the design has this many panels plus splits minus
   // merges (Remesher::num_panels()); set_params with the same edits and either this target or
   // that current count changes nothing about the count (Remesher::kept_count).
@@ -68,7 +72,8 @@ struct RemeshParams {
   // invalid, another of the same count often has none (cow.off at 46-78 panels). The result
   // with the fewest invalid panels is kept, the earlier on ties; a run valid at once never
   // retries, so it is unchanged. Each retry's seed is derived from `seed` (deterministic).
-  // Not with edits (their panels are named in the first solve's clustering).
+  // Not with locked panels, nor once a parameter change made edits part of the design; a
+  // fresh solve that replays edits retries as the first solve did, before the edits.
   int retries = 2;
   // Where four or more planes meet: false (default) splits the node into valence-3 nodes
   // joined by short edges; true makes all of them pass through one point (paper 2.2).

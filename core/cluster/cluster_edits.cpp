@@ -137,8 +137,7 @@ bool kept(const std::vector<char>& keep, int cluster) {
 
 int worst_free_cluster(const Metric& metric, const Clustering& c, const std::vector<char>& keep) {
   const std::vector<ClusterMoments> moments = cluster_moments(metric.faces(), c.labels, c.num_clusters());
-  std::vector<int> size(static_cast<size_t>(c.num_clusters()), 0);
-  for (int l : c.labels) ++size[static_cast<size_t>(l)];
+  const std::vector<int> size = cluster_sizes(c);
   int worst = -1;
   double energy = -1.0;
   for (int i = 0; i < c.num_clusters(); ++i) {

@@ -41,6 +41,12 @@ EnergyTerms clustering_energy(const Metric& metric, const std::vector<ClusterMom
   return total;
 }
 
+std::vector<int> cluster_sizes(const Clustering& clustering) {
+  std::vector<int> size(static_cast<size_t>(clustering.num_clusters()), 0);
+  for (int l : clustering.labels) ++size[static_cast<size_t>(l)];
+  return size;
+}
+
 void choose_seeds(const Metric& metric, Clustering& clustering) {
   const int n = clustering.num_clusters();
   const std::vector<Metric::Terms> terms = metric.terms(clustering.proxies);

@@ -25,6 +25,9 @@ Proxy single_face_proxy(const FaceData& faces, int face, const Vec3& fallback_no
 
 std::vector<ClusterMoments> cluster_moments(const FaceData& faces, const std::vector<int>& labels, int num_clusters);
 
+// Per cluster, its number of faces.
+std::vector<int> cluster_sizes(const Clustering& clustering);
+
 // Refits every proxy to its cluster (Metric::fit), sets clustering.energy and returns the
 // energy by term. Call it whenever labels or the metric changed.
 EnergyTerms refit(const Metric& metric, Clustering& clustering);

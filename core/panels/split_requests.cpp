@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <deque>
 
+#include "core/cluster/clustering.h"
 #include "core/panels/panel_attempt.h"
 
 namespace ff {
@@ -83,8 +84,7 @@ std::vector<int> enclosed_clusters(const PanelAttempt& attempt) {
 std::vector<int> tiny_invalid_clusters(const PanelAttempt& attempt, int share) {
   const Clustering& c = attempt.clustering();
   const PanelLayout& layout = attempt.layout();
-  std::vector<int> size(static_cast<size_t>(c.num_clusters()), 0);
-  for (int l : c.labels) size[static_cast<size_t>(l)] += 1;
+  const std::vector<int> size = cluster_sizes(c);
   const size_t faces = c.labels.size();
   std::vector<int> out;
   for (int cluster = 0; cluster < layout.num_clusters() && cluster < c.num_clusters(); ++cluster) {
@@ -120,8 +120,7 @@ std::vector<std::pair<int, int>> split_requests(const TriMesh& mesh, const MeshT
     if (!layout->issues()[static_cast<size_t>(cluster)].valid())
       (kept(cluster) ? kept_invalid : invalid).push_back(cluster);
   }
-  std::vector<int> size(static_cast<size_t>(c.num_clusters()), 0);
-  for (int l : c.labels) size[static_cast<size_t>(l)] += 1;
+  const std::vector<int> size = cluster_sizes(c);
   std::stable_sort(invalid.begin(), invalid.end(),
                    [&](int a, int b) { return size[static_cast<size_t>(a)] > size[static_cast<size_t>(b)]; });
   // A kept panel's problem, last: a free cluster at its problem corner splits instead.
