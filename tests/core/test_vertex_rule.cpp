@@ -108,6 +108,31 @@ TEST(VertexRule, TwoPlanesGiveTheNearestPointOnTheirLine) {
   }
 }
 
+// Two planes at a small angle still have their line (a boundary vertex between two nearly
+// coplanar panels): exact down to an angle of about 1e-6 rad, where 1 - cos^2 reaches the
+// 1e-12 floor; below it (and for parallel planes) there is no usable line, the vertex is not
+// exact and falls back to the projection onto the first plane, never a point far away.
+TEST(VertexRule, TwoNearlyParallelPlanes) {
+  const Vec3 corner(0.4, -0.3, 0.2);
+  for (double angle : {1e-2, 1e-4, 2e-6}) {
+    // Both planes contain the x axis; the second is turned by `angle` about it.
+    const std::vector<Plane> planes = {Plane{Vec3(0, 0, 1), 0.0},
+                                       Plane{Vec3(0, -std::sin(angle), std::cos(angle)), 0.0}};
+    const VertexRuleResult r = closest_point_on_planes(planes, corner);
+    EXPECT_TRUE(r.exact) << angle;
+    EXPECT_LT(max_residual(planes, r.point), 1e-12) << angle;
+    EXPECT_LT((r.point - Vec3(corner.x(), 0.0, 0.0)).norm(), 1e-9) << angle;  // the nearest point of the x axis
+  }
+  for (double angle : {1e-7, 0.0}) {
+    const std::vector<Plane> planes = {Plane{Vec3(0, 0, 1), 0.0},
+                                       Plane{Vec3(0, -std::sin(angle), std::cos(angle)), 0.5}};
+    const VertexRuleResult r = closest_point_on_planes(planes, corner);
+    EXPECT_FALSE(r.exact) << angle;
+    ASSERT_TRUE(r.point.allFinite()) << angle;
+    EXPECT_LT((r.point - planes[0].project(corner)).norm(), 1e-15) << angle;
+  }
+}
+
 TEST(VertexRule, OnePlaneProjectsAndNoPlaneKeepsTheCorner) {
   const Plane plane{Vec3(1, 2, 2) / 3.0, 4.0};
   const Vec3 corner(10, -3, 7);
