@@ -1,0 +1,65 @@
+// The final plane fit (Remesher::optimize_planes, plane_fit.h; beyond the paper): once the
+// panel rounds end valid, each plane is refitted to its faces (and border) and kept only
+// where the panels stay valid. So it never makes a panel invalid, and the panels come closer
+// to the surface. It lowers a least-squares distance, not the largest one, so the two-sided
+// Hausdorff distance may stay or rise a little where the panels already hug the surface
+// (saddle 120: 0.00287 -> 0.00288) and falls where they do not (bunny, inspired, bump: by
+// 21-26%; geometric mean over the set 0.85).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "core/quality/report.h"
+#include "core/remesher.h"
+#include "core/shapes/hard_cases.h"
+#include "panel_checks.h"
+#include "test_meshes.h"
+
+namespace ff {
+namespace {
+
+struct FitCase {
+  std::string name;
+  std::function<TriMesh()> mesh;
+  int panels;
+};
+
+double hausdorff(const TriMesh& mesh, int panels, bool optimize) {
+  RemeshParams p;
+  p.panels = panels;
+  p.optimize_planes = optimize;
+  Remesher r(mesh, p);
+  r.run();
+  EXPECT_TRUE(test::valid_panels(r, panels, 0.1)) << (optimize ? "with" : "without") << " the fit";
+  return measure_quality(r.mesh(), r.topology(), r.panels()).hausdorff;
+}
+
+TEST(OptimizePlanes, PanelsComeCloserToTheSurface) {
+  const std::vector<FitCase> cases = {
+      {"bunny 200", [] { return test::load_clean("bunny.off"); }, 200},
+      {"inspired 100", [] { return test::load_clean("inspired_mesh.obj"); }, 100},
+      {"saddle 120", [] { return make_saddle(8000); }, 120},
+      {"bump 120", [] { return make_bump(8000); }, 120},
+      {"roof with hole 120", [] { return make_roof_with_hole(8000); }, 120},
+  };
+  double log_ratio = 0.0;
+  for (const FitCase& c : cases) {
+    const TriMesh mesh = c.mesh();
+    const double without = hausdorff(mesh, c.panels, false);
+    const double with = hausdorff(mesh, c.panels, true);
+    std::printf("%s: hausdorff %.5f without the fit, %.5f with it (%.2f)\n", c.name.c_str(), without, with,
+                with / without);
+    EXPECT_LE(with, without * 1.02) << c.name;
+    log_ratio += std::log(with / without);
+  }
+  const double mean_ratio = std::exp(log_ratio / static_cast<double>(cases.size()));
+  std::printf("geometric mean ratio %.3f\n", mean_ratio);
+  EXPECT_LT(mean_ratio, 0.9);
+}
+
+}  // namespace
+}  // namespace ff
