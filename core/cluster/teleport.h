@@ -28,19 +28,22 @@ void add_clusters(const Metric& metric, const MeshTopology& topology, Clustering
                   int sticky_iterations = 3);
 
 // Seeds a new cluster at each (cluster, face) request (the face must belong to that cluster
-// and not be its seed; others are skipped): near a problem, "split a plane near the problem
-// area and merge two planes elsewhere" (paper 2.3). For each split the cheapest adjacent pair
-// of clusters not in `protect` and not split here is merged, so n stays; when no such pair
-// is left, the remaining requests are dropped. New clusters are sticky. Refloods when `reflood_after` (else
-// the caller floods next, e.g. with an extra cost). Returns the splits made.
+// and not be its seed; others are skipped, as are later requests for a cluster already split
+// here): near a problem, "split a plane near the problem area and merge two planes elsewhere"
+// (paper 2.3). For each split the cheapest adjacent pair of clusters not in `protect` and not
+// named by any request is merged, so n stays; when no such pair is left, the remaining
+// requests are dropped. The new clusters and the split ones are sticky. Refloods when
+// `reflood_after` (else the caller floods next, e.g. with an extra cost). Returns the splits
+// made.
 int split_near(const Metric& metric, const MeshTopology& topology, Clustering& clustering,
                const std::vector<std::pair<int, int>>& requests, const std::vector<char>& protect,
                int sticky_iterations = 3, bool reflood_after = true);
 
 // Moves each given cluster to the worst face of the worst cluster (by energy; a different
 // one per move): its old faces go to its neighbours at the next flood. For clusters that
-// cannot be panels where they are (enclosed by one neighbour). Sticky; no reflood (the
-// caller floods next). Returns the moves made.
+// cannot be panels where they are (enclosed by one neighbour). The moved clusters and the
+// ones that gave up a face are sticky; no reflood (the caller floods next). Returns the moves
+// made (list each cluster once: a repeated one moves again).
 // Clusters marked in `keep` (e.g. settled ones) are never the worst cluster that receives one.
 int relocate_clusters(const Metric& metric, Clustering& clustering, const std::vector<int>& clusters,
                       const std::vector<char>& keep = {}, int sticky_iterations = 3);
