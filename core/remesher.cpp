@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <limits>
 #include <optional>
+#include <string>
 
 #include "core/cluster/cluster_edits.h"
 #include "core/cluster/flood.h"
@@ -63,6 +64,28 @@ constexpr int kMendEarlyAt = 6;
 // for 50 rounds; now valid within 7. Only when no split is asked: relocating tiny clusters
 // at every stall reshuffled cow.off's chaotic runs (at seeds 1-6, 379 -> 377 valid).
 constexpr int kTinyClusterShare = 20;
+// The fewest panels a valid result can have: a panel has three sides or more, and on a
+// closed part each side is shared with a different panel (one chain per neighbour), so each
+// closed part needs at least four (a tetrahedron; a torus needs more, seven, but four holds
+// for every closed part); an open part needs one. Fewer is refused at once rather than solved
+// three times (retries) into panels that must stay invalid.
+void check_enough_panels(const MeshTopology& topology, int panels) {
+  const std::vector<char> closed = closed_components(topology);
+  const int closed_parts = static_cast<int>(std::count(closed.begin(), closed.end(), 1));
+  const int open_parts = topology.num_components - closed_parts;
+  const int fewest = 4 * closed_parts + open_parts;
+  if (panels >= fewest) return;
+  const auto parts = [](int count, const char* kind) {
+    return std::to_string(count) + " " + kind + (count == 1 ? " part" : " parts");
+  };
+  const std::string asked = "; asked for " + std::to_string(panels);
+  if (topology.num_components == 1)
+    throw InputError("a closed surface needs at least 4 planar panels (each meets at least three others)" + asked);
+  const std::string open = open_parts > 0 ? " and " + parts(open_parts, "open") + " (at least 1 each)" : "";
+  throw InputError("the mesh has " + parts(closed_parts, "closed") + " (at least 4 panels each)" + open +
+                   ": it needs at least " + std::to_string(fewest) + " panels" + asked);
+}
+
 }  // namespace
 
 Remesher::Remesher(TriMesh mesh, RemeshParams params)
@@ -88,6 +111,7 @@ void Remesher::validate(const RemeshParams& p) const {
     throw InputError("retries must be between 0 and " + std::to_string(kMaxRetries));
   if (!(p.min_corner_angle_deg >= 0.0 && p.min_corner_angle_deg <= 60.0))
     throw InputError("the minimum corner angle must be between 0 and 60 degrees");
+  if (p.make_panels) check_enough_panels(topology_, p.panels);
   seeds_per_component(faces_, topology_, p.panels);  // throws on too many / too few panels
   validate_edits(p.edits);
   if (!p.make_panels && !p.edits.empty()) throw InputError("edits need panels (the panel phase is off)");
@@ -291,7 +315,7 @@ void Remesher::fix_panels(const PanelAttempt& attempt) {
 }
 
 void Remesher::finish_panels() {
-  clustering_ = best_->clustering();  // before mend_best: held_clusters() reads it
+  clustering_ = best_->clustering();    // before mend_best: held_clusters() reads it
   best_->layout().judge_orientation();  // what the quality report judges (issue 3)
   if (best_->num_invalid() > 0) mend_best();
   // Still invalid: the polish (remesher_polish.cpp) tries more, one attempt per step.
@@ -481,8 +505,8 @@ void Remesher::set_params(RemeshParams params) {
     faces = make_shaped_face_data(mesh_, topology_, params.density, params.density_expression, params.anisotropy);
   Metric(faces ? *faces : faces_, params.weights, params.panels);  // throws on bad weights
   // A changed edit list replays on a fresh solve (set_edits is the incremental way).
-  const bool restart = clustering_.labels.empty() || params.seed != params_.seed ||
-                       params.seeding != params_.seeding || !(params.edits == params_.edits);
+  const bool restart = clustering_.labels.empty() || params.seed != params_.seed || params.seeding != params_.seeding ||
+                       !(params.edits == params_.edits);
   // After edits the clustering has its own count: the new one is reached from there, unless
   // the count asked for is no change (kept_count): then params().panels stays the target.
   const int old_panels = next_edit_ > 0 ? clustering_.num_clusters() : params_.panels;

@@ -171,6 +171,16 @@ int euler_characteristic(const TriMesh& mesh, const MeshTopology& topology) {
   return referenced - topology.num_edges() + mesh.num_faces();
 }
 
+std::vector<char> closed_components(const MeshTopology& topology) {
+  std::vector<char> closed(static_cast<size_t>(topology.num_components), 1);
+  for (int e = 0; e < topology.num_edges(); ++e) {
+    if (!topology.is_boundary_edge(e)) continue;
+    const int f = topology.edge_faces[static_cast<size_t>(e)][0];
+    closed[static_cast<size_t>(topology.face_component[static_cast<size_t>(f)])] = 0;
+  }
+  return closed;
+}
+
 bool is_boundary_vertex(const TriMesh& mesh, const MeshTopology& topology, int v) {
   for (int k = topology.vertex_face_offsets[static_cast<size_t>(v)];
        k < topology.vertex_face_offsets[static_cast<size_t>(v) + 1]; ++k) {

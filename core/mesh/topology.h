@@ -45,6 +45,9 @@ int euler_characteristic(const TriMesh& mesh, const MeshTopology& topology);
 // Which corner of t (0, 1 or 2) is vertex v; 2 when v is none of the first two.
 inline int local_index(const Triangle& t, int v) { return t[0] == v ? 0 : (t[1] == v ? 1 : 2); }
 
+// Per connected component (face_component's numbering): 1 when it has no boundary edge.
+std::vector<char> closed_components(const MeshTopology& topology);
+
 // True when an edge at v has one face only.
 bool is_boundary_vertex(const TriMesh& mesh, const MeshTopology& topology, int v);
 

@@ -7,7 +7,9 @@
 
 #include "cluster_checks.h"
 #include "core/remesher.h"
+#include "core/shapes/hard_cases.h"
 #include "core/shapes/shapes.h"
+#include "input_error_message.h"
 
 namespace ff {
 namespace {
@@ -224,6 +226,60 @@ TEST_P(SharedMeshClustering, ContiguousWithTheRequestedCountAndDeterministic) {
 
 INSTANTIATE_TEST_SUITE_P(All, SharedMeshClustering, ::testing::ValuesIn(test::shared_meshes()),
                          [](const auto& info) { return test::test_name(info.param.file); });
+
+}  // namespace
+}  // namespace ff
+
+namespace ff {
+namespace {
+
+// A closed part cannot be fewer than four planar panels (each panel meets at least three
+// others): asking for fewer is refused at once with the reason, and the Remesher keeps its
+// last design; an open part can be one panel. The Lloyd phase alone has no such limit.
+TEST(Remesher, TooFewPanelsForAClosedSurfaceAreRefused) {
+  const TriMesh closed = make_torus(800);
+  RemeshParams p;
+  p.panels = 3;
+  EXPECT_EQ(test::input_error_message([&] { Remesher r(closed, p); }),
+            "a closed surface needs at least 4 planar panels (each meets at least three others); asked for 3");
+  p.make_panels = false;
+  EXPECT_EQ(test::input_error_message([&] { Remesher r(closed, p); }), "");
+  p.make_panels = true;
+  p.panels = 8;
+  p.lloyd_iterations = 2;
+  Remesher r(closed, p);
+  r.run();
+  const int panels = r.panels().num_panels();
+  RemeshParams fewer = p;
+  fewer.panels = 2;
+  EXPECT_NE(test::input_error_message([&] { r.set_params(fewer); }), "");
+  EXPECT_EQ(r.params().panels, 8);
+  EXPECT_EQ(r.panels().num_panels(), panels);
+
+  RemeshParams one;
+  one.panels = 1;
+  one.lloyd_iterations = 2;
+  Remesher flat(make_plane(6, 6), one);  // open: one panel is a valid answer
+  flat.run();
+  EXPECT_EQ(flat.panels().num_panels(), 1);
+  EXPECT_EQ(flat.panels().num_invalid(), 0);
+}
+
+// With several parts the count is the sum: four per closed part, one per open part.
+TEST(Remesher, TooFewPanelsCountEveryPart) {
+  TriMesh mesh = make_torus(800);
+  TriMesh plane = make_plane(4, 4);
+  const int offset = static_cast<int>(mesh.positions.size());
+  for (const Vec3& v : plane.positions) mesh.positions.push_back(v + Vec3(100, 0, 0));
+  for (Triangle t : plane.triangles) mesh.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  RemeshParams p;
+  p.panels = 4;
+  EXPECT_EQ(test::input_error_message([&] { Remesher r(mesh, p); }),
+            "the mesh has 1 closed part (at least 4 panels each) and 1 open part (at least 1 each): it needs at least "
+            "5 panels; asked for 4");
+  p.panels = 5;
+  EXPECT_EQ(test::input_error_message([&] { Remesher r(mesh, p); }), "");
+}
 
 }  // namespace
 }  // namespace ff

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <string>
+#include <vector>
 
 #include "core/mesh/topology.h"
 #include "core/util/error.h"
@@ -130,6 +131,19 @@ TEST(Topology, TorusHasEulerZero) {
   EXPECT_EQ(euler_characteristic(m, t), 0);
   EXPECT_TRUE(t.boundary_loops.empty());
   EXPECT_EQ(t.num_edges(), 3 * 60);
+}
+
+// Closed parts (no boundary edge) per component: what the panel count's lower bound reads.
+TEST(Topology, ClosedComponents) {
+  EXPECT_EQ(closed_components(build_topology(tetrahedron())), std::vector<char>{1});
+  EXPECT_EQ(closed_components(build_topology(torus(10, 6))), std::vector<char>{1});
+  EXPECT_EQ(closed_components(build_topology(grid(4, 3))), std::vector<char>{0});
+  TriMesh two = grid(2, 2);  // component 0: open (lowest faces); component 1: a tetrahedron
+  const TriMesh tet = tetrahedron();
+  const int offset = static_cast<int>(two.positions.size());
+  for (const Vec3& p : tet.positions) two.positions.push_back(p + Vec3(10, 0, 0));
+  for (const Triangle& f : tet.triangles) two.triangles.push_back({f[0] + offset, f[1] + offset, f[2] + offset});
+  EXPECT_EQ(closed_components(build_topology(two)), (std::vector<char>{0, 1}));
 }
 
 TEST(Topology, BowtieHasTwoLoopsAndTwoComponents) {

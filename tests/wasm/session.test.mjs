@@ -153,6 +153,14 @@ test('bad parameters are refused by name and change nothing', () => {
   s.delete();
 });
 
+test('a closed surface asked for fewer than four panels is refused with the reason', () => {
+  const s = session();
+  s.loadShape('torus', 1200);
+  expectError(s.setParams(JSON.stringify({ panels: 3 })), /a closed surface needs at least 4 planar panels.*asked for 3/);
+  assert.equal(json(s.setParams(JSON.stringify({ panels: 12 }))).ok, true);
+  s.delete();
+});
+
 // A torus cannot be 6 planar panels: the solve retries from a new seeding (RemeshParams
 // retries) and each step's progress says which try it is, for the page's progress line; the
 // report says how many retries were made.
