@@ -8,9 +8,11 @@ import {
   browserSuite,
   download,
   errorAfter,
+  exampleLink,
   openPage,
   outcomes,
   remesh,
+  screenshot,
   selectExample,
   setPanels,
   solveAfter,
@@ -304,3 +306,15 @@ test('without the shared example meshes the page starts on a generated example',
     assert.equal(await page.locator('#example option[value="hyperboloid_s4"]').evaluate((option) => option.hidden), true);
     assert.equal(await page.locator('#example option[value="saddle"]').evaluate((option) => option.hidden), false);
   }, { allowed: [/404/] }));
+
+test('a closed surface asked for three panels says why not and keeps the design', () =>
+  withPage(exampleLink(suite.url, 'epcot', { panels: 30, seed: 1, weights: { euclidean: 1, l2: 1, l21: 1, boundary: 1 }, lloydIterations: 20, panelRounds: 100, seeding: 'farthest', teleport: true, singlePointNodes: false, optimizePlanes: true }), async (page) => {
+    assert.equal(await waitForDone(page), 30);
+    await setPanels(page, 3);
+    const message = await errorAfter(page, () => remesh(page));
+    assert.match(message, /^Error: a closed surface needs at least 4 planar panels \(each meets at least three others\); asked for 3$/);
+    assert.match(await page.locator('#stats').textContent(), /Panels\s*30/, 'the last design stays');
+    await screenshot(page, 'epcot-3-refused');
+    await setPanels(page, 4);
+    assert.equal(await solveAfter(page, () => remesh(page)), 4, 'four panels (a tetrahedron) solve');
+  }));
