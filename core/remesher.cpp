@@ -37,8 +37,6 @@ const char* stage_name(Stage stage) {
 }
 
 namespace {
-constexpr int kMaxIterations = RemeshParams::kMaxIterations;
-constexpr int kMaxRetries = RemeshParams::kMaxRetries;
 // Panel rounds without a new fewest-invalid count before the panel phase gives up (k2 bounds
 // it). The count jumps about from round to round, and progress comes late: on cow.off the
 // fewest went 7 -> 6 after 45 rounds at 61 panels (valid at round 65) and 4 -> 3 after 36 at
@@ -102,13 +100,13 @@ Remesher::Remesher(TriMesh mesh, RemeshParams params)
 
 void Remesher::validate(const RemeshParams& p) const {
   if (p.panels < 1) throw InputError("the number of panels must be at least 1");
-  if (p.lloyd_iterations < 0 || p.lloyd_iterations > kMaxIterations)
-    throw InputError("iterations must be between 0 and " + std::to_string(kMaxIterations));
+  if (p.lloyd_iterations < 0 || p.lloyd_iterations > RemeshParams::kMaxIterations)
+    throw InputError("iterations must be between 0 and " + std::to_string(RemeshParams::kMaxIterations));
   if (p.teleport_interval < 0 || p.teleport_moves < 0) throw InputError("teleport interval and moves must be >= 0");
-  if (p.panel_rounds < 0 || p.panel_rounds > kMaxIterations)
-    throw InputError("panel rounds must be between 0 and " + std::to_string(kMaxIterations));
-  if (p.retries < 0 || p.retries > kMaxRetries)
-    throw InputError("retries must be between 0 and " + std::to_string(kMaxRetries));
+  if (p.panel_rounds < 0 || p.panel_rounds > RemeshParams::kMaxIterations)
+    throw InputError("panel rounds must be between 0 and " + std::to_string(RemeshParams::kMaxIterations));
+  if (p.retries < 0 || p.retries > RemeshParams::kMaxRetries)
+    throw InputError("retries must be between 0 and " + std::to_string(RemeshParams::kMaxRetries));
   if (!(p.min_corner_angle_deg >= 0.0 && p.min_corner_angle_deg <= 60.0))
     throw InputError("the minimum corner angle must be between 0 and 60 degrees");
   if (p.make_panels) check_enough_panels(topology_, p.panels);

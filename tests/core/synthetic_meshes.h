@@ -11,6 +11,13 @@ namespace ff::test {
 
 inline constexpr double kPi = 3.14159265358979323846;
 
+// Appends `part`, moved by `shift`, to `mesh` as a separate component.
+inline void append_shifted(TriMesh& mesh, const TriMesh& part, const Vec3& shift) {
+  const int offset = static_cast<int>(mesh.positions.size());
+  for (const Vec3& v : part.positions) mesh.positions.push_back(v + shift);
+  for (const Triangle& t : part.triangles) mesh.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+}
+
 // Regular tetrahedron, outward (positive signed volume).
 inline TriMesh tetrahedron() {
   TriMesh m;

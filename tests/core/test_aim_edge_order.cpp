@@ -68,10 +68,7 @@ TEST(AimEdgeOrder, SwappedNodesComeBackInOrder) {
   EXPECT_GE(layout.aim_edge_order(), 1);
   EXPECT_EQ(layout.num_invalid(), 0);
   EXPECT_LT(node_x(layout, 2), node_x(layout, 4));
-  for (int c = 0; c < 4; ++c) {  // the vertex rule still holds: exactly planar
-    const Plane& plane = layout.planes().plane_of(c);
-    for (const Vec3& v : layout.polygon(c).points) EXPECT_LT(std::abs(plane.distance(v)), 1e-9) << c;
-  }
+  test::expect_planar(layout, 1e-9);  // the vertex rule still holds: exactly planar
   // Only Q moved (its trace lies along x, so holding both spots is a shift, no turn).
   EXPECT_NEAR(layout.planes().planes[2].normal.dot(old_q), 1.0, 1e-9);
   EXPECT_EQ(layout.planes().planes[0].offset, 0.0);

@@ -87,10 +87,7 @@ TEST(AimFaceNormals, PlaneTurnsBackToItsFaces) {
   EXPECT_GE(layout.aim_face_normals(), 1);
   EXPECT_EQ(layout.num_invalid(), 0);
   EXPECT_NEAR(layout.planes().plane_of(2).normal.dot(Vec3(0, -0.253, 1).normalized()), 1.0, 1e-9);
-  for (int c = 0; c < 4; ++c) {  // still exactly planar
-    const Plane& plane = layout.planes().plane_of(c);
-    for (const Vec3& v : layout.polygon(c).points) EXPECT_LT(std::abs(plane.distance(v)), 1e-9) << c;
-  }
+  test::expect_planar(layout, 1e-9);  // still exactly planar
   for (int c : {0, 1, 3}) EXPECT_FALSE(layout.issues()[static_cast<size_t>(c)].flipped) << c;
 }
 

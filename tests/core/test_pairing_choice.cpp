@@ -32,15 +32,9 @@ struct FourQuadrants : test::LabelledGrid {
   static constexpr double a = e / (2 * s);
 
   FourQuadrants()
-      : LabelledGrid(test::labelled_grid(scaled_grid(), 4, [](const Vec3& c) {
+      : LabelledGrid(test::labelled_grid(test::half_grid(8, 8), 4, [](const Vec3& c) {
           return c.y() < 2.0 ? (c.x() < 2.0 ? 0 : 1) : (c.x() < 2.0 ? 3 : 2);
         })) {}
-
-  static TriMesh scaled_grid() {
-    TriMesh m = test::grid(8, 8);
-    for (Vec3& p : m.positions) p *= 0.5;
-    return m;
-  }
 
   static Vec3 p() { return Vec3(2.0 + delta, 2.0 + delta, 0.0); }
 
@@ -78,13 +72,6 @@ bool near_xy(const Vec3& u, const Vec3& v, double tolerance = 1e-9) {
   return std::hypot(u.x() - v.x(), u.y() - v.y()) < tolerance;
 }
 
-void expect_planar(const PanelLayout& layout) {
-  for (int c = 0; c < layout.num_clusters(); ++c) {
-    const Plane& plane = layout.planes().plane_of(c);
-    for (const Vec3& v : layout.polygon(c).points) EXPECT_LT(std::abs(plane.distance(v)), 1e-12) << c;
-  }
-}
-
 TEST(PairingChoice, NearestPairingFlipsAndTheSwitchFindsTheOneThatDoesNot) {
   const FourQuadrants q;
   PanelLayout layout = q.layout();
@@ -113,7 +100,7 @@ TEST(PairingChoice, NearestPairingFlipsAndTheSwitchFindsTheOneThatDoesNot) {
   EXPECT_TRUE(near_xy(centre_nodes(layout, 1)[0], q.p() + across));
   ASSERT_EQ(centre_nodes(layout, 3).size(), 1u);
   EXPECT_TRUE(near_xy(centre_nodes(layout, 3)[0], q.p() - across));
-  expect_planar(layout);
+  test::expect_planar(layout, 1e-12);
   // A second pass has nothing left to switch.
   EXPECT_EQ(layout.switch_pairings(), 0);
 }
@@ -133,7 +120,7 @@ TEST(PairingChoice, SinglePointNodeJoinsAllFourPanelsAtOnePoint) {
   for (const Vec3& v : points) EXPECT_LT((v - points[0]).norm(), 1e-12);
   EXPECT_LT((points[0] - q.p()).head<2>().norm(), 0.1);
   EXPECT_EQ(layout.num_invalid(), 0);
-  expect_planar(layout);
+  test::expect_planar(layout, 1e-12);
 }
 
 }  // namespace

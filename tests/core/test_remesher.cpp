@@ -10,6 +10,7 @@
 #include "core/shapes/hard_cases.h"
 #include "core/shapes/shapes.h"
 #include "input_error_message.h"
+#include "synthetic_meshes.h"
 
 namespace ff {
 namespace {
@@ -268,10 +269,7 @@ TEST(Remesher, TooFewPanelsForAClosedSurfaceAreRefused) {
 // With several parts the count is the sum: four per closed part, one per open part.
 TEST(Remesher, TooFewPanelsCountEveryPart) {
   TriMesh mesh = make_torus(800);
-  TriMesh plane = make_plane(4, 4);
-  const int offset = static_cast<int>(mesh.positions.size());
-  for (const Vec3& v : plane.positions) mesh.positions.push_back(v + Vec3(100, 0, 0));
-  for (Triangle t : plane.triangles) mesh.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  test::append_shifted(mesh, make_plane(4, 4), Vec3(100, 0, 0));
   RemeshParams p;
   p.panels = 4;
   EXPECT_EQ(test::input_error_message([&] { Remesher r(mesh, p); }),

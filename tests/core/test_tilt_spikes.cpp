@@ -24,14 +24,8 @@ namespace {
 // stays within 0.25 of its corner.
 struct NearlySharedLine : test::LabelledGrid {
   NearlySharedLine()
-      : LabelledGrid(test::labelled_grid(scaled_grid(), 3,
+      : LabelledGrid(test::labelled_grid(test::half_grid(8, 8), 3,
                                          [](const Vec3& c) { return c.y() < 2.0 ? 0 : (c.x() < 2.0 ? 1 : 2); })) {}
-
-  static TriMesh scaled_grid() {
-    TriMesh m = test::grid(8, 8);
-    for (Vec3& p : m.positions) p *= 0.5;
-    return m;
-  }
 
   PanelLayout layout(double h) const {
     // z = a x + b y + c: normal (-a, -b, 1), through (2, 2, c + 2a + 2b) shifted to C.
@@ -78,10 +72,7 @@ TEST(TiltSpikes, TiltingBringsTheNodesBackToTheirCorners) {
     EXPECT_LT((layout.planes().planes[static_cast<size_t>(m)].normal - before[static_cast<size_t>(m)].normal).norm(),
               1e-12);
   }
-  for (int c = 0; c < 3; ++c) {  // the vertex rule holds: exactly planar
-    const Plane& plane = layout.planes().plane_of(c);
-    for (const Vec3& v : layout.polygon(c).points) EXPECT_LT(std::abs(plane.distance(v)), 1e-12) << c;
-  }
+  test::expect_planar(layout, 1e-12);  // the vertex rule holds: exactly planar
 }
 
 // Nothing is a spike: no tilt, the planes stay.

@@ -139,10 +139,7 @@ TEST(Topology, ClosedComponents) {
   EXPECT_EQ(closed_components(build_topology(torus(10, 6))), std::vector<char>{1});
   EXPECT_EQ(closed_components(build_topology(grid(4, 3))), std::vector<char>{0});
   TriMesh two = grid(2, 2);  // component 0: open (lowest faces); component 1: a tetrahedron
-  const TriMesh tet = tetrahedron();
-  const int offset = static_cast<int>(two.positions.size());
-  for (const Vec3& p : tet.positions) two.positions.push_back(p + Vec3(10, 0, 0));
-  for (const Triangle& f : tet.triangles) two.triangles.push_back({f[0] + offset, f[1] + offset, f[2] + offset});
+  test::append_shifted(two, tetrahedron(), Vec3(10, 0, 0));
   EXPECT_EQ(closed_components(build_topology(two)), (std::vector<char>{0, 1}));
 }
 
