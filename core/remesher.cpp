@@ -62,14 +62,11 @@ constexpr int kMendEarlyAt = 6;
 // for 50 rounds; now valid within 7. Only when no split is asked: relocating tiny clusters
 // at every stall reshuffled cow.off's chaotic runs (at seeds 1-6, 379 -> 377 valid).
 constexpr int kTinyClusterShare = 20;
-// The fewest panels a valid result can have: a panel has three sides or more, and on a
-// closed part each side is shared with a different panel (one chain per neighbour), so each
-// closed part needs at least four (a tetrahedron; a torus needs more, seven, but four holds
-// for every closed part); an open part needs one. Fewer is refused at once rather than solved
-// three times (retries) into panels that must stay invalid.
+// The fewest panels a valid result can have (fewest_panels(), topology.h): fewer is refused at
+// once rather than solved three times (retries) into panels that must stay invalid.
 void check_enough_panels(const MeshTopology& topology, int panels) {
-  const std::vector<char> closed = closed_components(topology);
-  const int closed_parts = static_cast<int>(std::count(closed.begin(), closed.end(), 1));
+  const std::vector<int> per_part = fewest_panels(topology);
+  const int closed_parts = static_cast<int>(std::count(per_part.begin(), per_part.end(), 4));
   const int open_parts = topology.num_components - closed_parts;
   const int fewest = 4 * closed_parts + open_parts;
   if (panels >= fewest) return;

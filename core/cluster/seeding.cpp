@@ -211,8 +211,10 @@ std::vector<int> apportion(const std::vector<double>& weight, const MeshTopology
     area[c] += weight[static_cast<size_t>(f)];
     ++capacity[c];
   }
-  // Hamilton's method on the area quotas, with at least one seed per part and at most one
-  // per face; ties go to the lower component index.
+  // Hamilton's method on the area quotas, with at least the part's floor (cluster_floors: four
+  // on a closed part when n allows, so a small closed part can still become valid panels; one
+  // on an open part) and at most one seed per face; ties go to the lower component index.
+  const std::vector<int> floors = cluster_floors(topology, n);
   double total = 0.0;
   for (double a : area) total += a;
   if (!(total > 0.0)) total = 1.0;
@@ -221,7 +223,7 @@ std::vector<int> apportion(const std::vector<double>& weight, const MeshTopology
   int assigned = 0;
   for (size_t c = 0; c < quota.size(); ++c) {
     quota[c] = n * area[c] / total;
-    count[c] = std::min(capacity[c], std::max(1, static_cast<int>(quota[c])));
+    count[c] = std::min(capacity[c], std::max(floors[c], static_cast<int>(quota[c])));
     assigned += count[c];
   }
   // One sort by remainder, then whole passes in that order: linear in the number of parts,
@@ -240,15 +242,15 @@ std::vector<int> apportion(const std::vector<double>& weight, const MeshTopology
     }
     if (assigned == before) break;  // cannot happen for n <= faces
   }
-  while (assigned > n) {  // over (every part has one): the smallest remainders give one back
+  while (assigned > n) {  // over (parts at their floors): the smallest remainders give one back
     const int before = assigned;
     for (size_t k = order.size(); k-- > 0 && assigned > n;) {
-      if (count[order[k]] > 1) {
+      if (count[order[k]] > std::max(1, floors[order[k]])) {
         --count[order[k]];
         --assigned;
       }
     }
-    if (assigned == before) break;  // cannot happen for n >= parts
+    if (assigned == before) break;  // cannot happen: the floors sum to n or less
   }
   return count;
 }

@@ -1,6 +1,7 @@
 #pragma once
 // Initial seeds (paper 2: "place n seeds"). Every connected component gets seeds in
-// proportion to its area and at least one, so flooding reaches every face. With a density
+// proportion to its area and at least one, so flooding reaches every face (four on a closed
+// part when n allows: fewer cannot become valid panels). With a density
 // field (density_weight = the metric's density weight w), area counts as area * density^w
 // and distances as length * sqrt(density^w): dense regions start with as many seeds as the
 // panel sizes they ask for, instead of waiting for Lloyd to move seeds across.
@@ -19,7 +20,8 @@ namespace ff {
 
 enum class SeedingMethod { Random, FarthestPoint };
 
-// Seeds per component: largest-remainder split of n by area, at least one each. Throws
+// Seeds per component: largest-remainder split of n by area, at least each part's floor
+// (cluster_floors, topology.h: four on a closed part when n allows, else one). Throws
 // InputError when n < number of components or n > number of faces.
 std::vector<int> seeds_per_component(const FaceData& faces, const MeshTopology& topology, int n,
                                      double density_weight = 0.0);

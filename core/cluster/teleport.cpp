@@ -60,6 +60,41 @@ std::vector<MergeCandidate> merge_candidates(const Metric& metric, const MeshTop
   return out;
 }
 
+// Clusters per connected part against the part's floor (cluster_floors): a merge must not
+// leave a part fewer clusters than it needs to become valid panels (a small closed part below
+// four), unless the split it pays for lands in the same part. On one part every move is
+// allowed, as before.
+class PartCounts {
+ public:
+  PartCounts(const MeshTopology& topology, const Clustering& c, int target)
+      : topology_(topology), floors_(cluster_floors(topology, target)), counts_(floors_.size(), 0) {
+    for (int i = 0; i < c.num_clusters(); ++i) {
+      const int p = part_of(c, i);
+      if (p >= 0) ++counts_[static_cast<size_t>(p)];
+    }
+  }
+  int part_of(const Clustering& c, int cluster) const {
+    const int seed = c.seeds[static_cast<size_t>(cluster)];
+    return seed >= 0 ? topology_.face_component[static_cast<size_t>(seed)] : -1;
+  }
+  // Whether cluster a (of a merged pair) may go from its part when the split is in `to` (-1:
+  // nowhere, a plain merge).
+  bool may_merge(const Clustering& c, int a, int to) const {
+    const int p = part_of(c, a);
+    return p < 0 || p == to || counts_[static_cast<size_t>(p)] > floors_[static_cast<size_t>(p)];
+  }
+  void merged(const Clustering& c, int a, int to) {
+    const int p = part_of(c, a);
+    if (p >= 0) --counts_[static_cast<size_t>(p)];
+    if (to >= 0) ++counts_[static_cast<size_t>(to)];
+  }
+
+ private:
+  const MeshTopology& topology_;
+  std::vector<int> floors_;
+  std::vector<int> counts_;
+};
+
 // Clusters by decreasing energy (ties by id).
 std::vector<int> worst_first(const std::vector<double>& energy) {
   std::vector<int> order(energy.size());
@@ -96,6 +131,7 @@ int teleport(const Metric& metric, const MeshTopology& topology, Clustering& c, 
   const std::vector<int> worst = worst_first(s.energy);
   std::vector<char> used(static_cast<size_t>(c.num_clusters()), 0);
   for (int i = 0; i < c.num_clusters(); ++i) used[static_cast<size_t>(i)] = c.sticky[static_cast<size_t>(i)] > 0;
+  PartCounts parts(topology, c, c.num_clusters());
 
   int moves = 0;
   size_t next_merge = 0, next_worst = 0;
@@ -110,10 +146,15 @@ int teleport(const Metric& metric, const MeshTopology& topology, Clustering& c, 
       return !used[static_cast<size_t>(m.a)] && !used[static_cast<size_t>(m.b)] && m.a != w && m.b != w;
     };
     while (next_merge < merges.size() && !free_pair(merges[next_merge])) ++next_merge;
-    if (next_merge == merges.size()) break;
-    const MergeCandidate& m = merges[next_merge];
+    // The cheapest free pair whose part can give a cluster to w's (on one part: that pair).
+    const int to = parts.part_of(c, w);
+    size_t k = next_merge;
+    while (k < merges.size() && !(free_pair(merges[k]) && parts.may_merge(c, merges[k].a, to))) ++k;
+    if (k == merges.size()) break;
+    const MergeCandidate& m = merges[k];
     if (!(m.cost < 0.5 * s.energy[static_cast<size_t>(w)])) break;
     used[static_cast<size_t>(w)] = used[static_cast<size_t>(m.a)] = used[static_cast<size_t>(m.b)] = 1;
+    parts.merged(c, m.a, to);
     merge_into(metric, c, s, m.a, m.b);
     split_into(metric, c, s, w, m.b, options.sticky_iterations);  // slot b now seeds the new cluster
     ++moves;
@@ -133,6 +174,7 @@ int split_near(const Metric& metric, const MeshTopology& topology, Clustering& c
   for (const auto& [w, face] : requests) {
     if (w >= 0 && w < c.num_clusters()) used[static_cast<size_t>(w)] = 1;
   }
+  PartCounts parts(topology, c, c.num_clusters());
   size_t next_merge = 0;
   int splits = 0;
   for (const auto& [w, face] : requests) {
@@ -140,13 +182,19 @@ int split_near(const Metric& metric, const MeshTopology& topology, Clustering& c
     if (c.labels[static_cast<size_t>(face)] != w || c.seeds[static_cast<size_t>(w)] == face) continue;
     if (split[static_cast<size_t>(w)]) continue;
     split[static_cast<size_t>(w)] = 1;
-    while (next_merge < merges.size() &&
-           (used[static_cast<size_t>(merges[next_merge].a)] || used[static_cast<size_t>(merges[next_merge].b)])) {
-      ++next_merge;
-    }
+    const auto free_pair = [&](const MergeCandidate& m) {
+      return !used[static_cast<size_t>(m.a)] && !used[static_cast<size_t>(m.b)];
+    };
+    while (next_merge < merges.size() && !free_pair(merges[next_merge])) ++next_merge;
     if (next_merge == merges.size()) break;  // nothing left to merge: n stays as asked
-    const MergeCandidate& m = merges[next_merge];
+    // The cheapest free pair whose part can give a cluster to w's (on one part: that pair).
+    const int to = parts.part_of(c, w);
+    size_t k = next_merge;
+    while (k < merges.size() && !(free_pair(merges[k]) && parts.may_merge(c, merges[k].a, to))) ++k;
+    if (k == merges.size()) continue;  // no part can spare one for this request
+    const MergeCandidate& m = merges[k];
     used[static_cast<size_t>(m.a)] = used[static_cast<size_t>(m.b)] = 1;
+    parts.merged(c, m.a, to);
     merge_into(metric, c, s, m.a, m.b);
     const int id = m.b;
     c.proxies[static_cast<size_t>(id)] =
@@ -217,17 +265,21 @@ void remove_clusters(const Metric& metric, const MeshTopology& topology, Cluster
     const std::vector<MergeCandidate> merges = merge_candidates(metric, topology, c, s);
     const int n = c.num_clusters();
     std::vector<char> used(static_cast<size_t>(n), 0), gone(static_cast<size_t>(n), 0);
+    PartCounts parts(topology, c, n - count);
     int merged = 0;
-    // Cheapest disjoint pairs first, at most half of what is left per pass.
+    // Cheapest disjoint pairs first, at most half of what is left per pass; none that takes
+    // its part below its floor.
     for (const MergeCandidate& m : merges) {
       if (merged == count) break;
       if (used[static_cast<size_t>(m.a)] || used[static_cast<size_t>(m.b)]) continue;
+      if (!parts.may_merge(c, m.a, -1)) continue;
+      parts.merged(c, m.a, -1);
       used[static_cast<size_t>(m.a)] = used[static_cast<size_t>(m.b)] = 1;
       merge_into(metric, c, s, m.a, m.b);
       gone[static_cast<size_t>(m.b)] = 1;
       ++merged;
     }
-    if (merged == 0) break;  // every cluster is a component of its own
+    if (merged == 0) break;  // every part is at its floor (or every cluster a part of its own)
     // Compact ids: survivors keep their order; the reflood relabels every face.
     Clustering kept;
     for (int i = 0; i < n; ++i) {

@@ -4,6 +4,8 @@
 // union costs least and splitting the worst cluster at its worst face. The new cluster is
 // sticky for a few iterations so it does not drift straight back. The same two moves
 // change the cluster count when a designer asks for more or fewer panels (warm start).
+// On a mesh of several parts, no merge takes a part below its floor (cluster_floors,
+// topology.h: four clusters on a closed part) unless the split it pays for is in that part.
 #include <vector>
 
 #include "core/cluster/clustering.h"

@@ -181,6 +181,21 @@ std::vector<char> closed_components(const MeshTopology& topology) {
   return closed;
 }
 
+std::vector<int> fewest_panels(const MeshTopology& topology) {
+  const std::vector<char> closed = closed_components(topology);
+  std::vector<int> fewest(closed.size());
+  for (size_t c = 0; c < closed.size(); ++c) fewest[c] = closed[c] ? 4 : 1;
+  return fewest;
+}
+
+std::vector<int> cluster_floors(const MeshTopology& topology, int n) {
+  std::vector<int> floors = fewest_panels(topology);
+  long long sum = 0;
+  for (int f : floors) sum += f;
+  if (n < sum) std::fill(floors.begin(), floors.end(), 1);
+  return floors;
+}
+
 bool is_boundary_vertex(const TriMesh& mesh, const MeshTopology& topology, int v) {
   for (int k = topology.vertex_face_offsets[static_cast<size_t>(v)];
        k < topology.vertex_face_offsets[static_cast<size_t>(v) + 1]; ++k) {

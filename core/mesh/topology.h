@@ -48,6 +48,16 @@ inline int local_index(const Triangle& t, int v) { return t[0] == v ? 0 : (t[1] 
 // Per connected component (face_component's numbering): 1 when it has no boundary edge.
 std::vector<char> closed_components(const MeshTopology& topology);
 
+// Per component: the fewest planar panels it can become. A panel has three sides or more, and
+// on a closed part each side is shared with a different panel (one chain per neighbour), so a
+// closed part needs four (a tetrahedron; a torus needs seven, but four holds for every closed
+// part); an open part needs one.
+std::vector<int> fewest_panels(const MeshTopology& topology);
+
+// Per component: the fewest of n clusters it should keep, so that every part can become valid
+// panels: fewest_panels() when n covers their sum, else one each (a clustering of fewer).
+std::vector<int> cluster_floors(const MeshTopology& topology, int n);
+
 // True when an edge at v has one face only.
 bool is_boundary_vertex(const TriMesh& mesh, const MeshTopology& topology, int v);
 

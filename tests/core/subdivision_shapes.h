@@ -10,6 +10,7 @@
 
 #include "core/mesh/poly_mesh.h"
 #include "core/mesh/tri_mesh.h"
+#include "synthetic_meshes.h"  // signed_volume
 
 namespace ff::test {
 
@@ -101,15 +102,6 @@ inline PolyMesh quad_torus(int n, int m, double major = 3.0, double minor = 1.0)
   for (int j = 0; j < m; ++j)
     for (int i = 0; i < n; ++i) t.add_face({id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
   return t;
-}
-
-// Signed volume enclosed by a closed triangle mesh (positive: normals outward).
-inline double signed_volume(const TriMesh& m) {
-  double v = 0.0;
-  for (const Triangle& t : m.triangles)
-    v += m.positions[static_cast<size_t>(t[0])].dot(
-        m.positions[static_cast<size_t>(t[1])].cross(m.positions[static_cast<size_t>(t[2])]));
-  return v / 6.0;
 }
 
 // Every directed edge used once: faces agree on the orientation of each shared edge.
