@@ -277,7 +277,7 @@ void Remesher::fix_panels(const PanelAttempt& attempt) {
     enclosed.insert(enclosed.end(), tiny.begin(), tiny.end());
   }
   enclosed.erase(std::remove_if(enclosed.begin(), enclosed.end(), is_held), enclosed.end());
-  relocate_clusters(metric_, clustering_, enclosed, settled_);
+  relocate_clusters(metric_, topology_, clustering_, enclosed, settled_);
   settled_.resize(static_cast<size_t>(clustering_.num_clusters()), 0);
   settled_planes_.resize(settled_.size());
   // Then a Lloyd iteration with the boundary term of this attempt's panels; clusters the

@@ -208,8 +208,8 @@ int split_near(const Metric& metric, const MeshTopology& topology, Clustering& c
   return splits;
 }
 
-int relocate_clusters(const Metric& metric, Clustering& c, const std::vector<int>& clusters,
-                      const std::vector<char>& keep, int sticky_iterations) {
+int relocate_clusters(const Metric& metric, const MeshTopology& topology, Clustering& c,
+                      const std::vector<int>& clusters, const std::vector<char>& keep, int sticky_iterations) {
   if (clusters.empty()) return 0;
   const ClusterStats s = cluster_stats(metric, c);
   std::vector<char> moving(static_cast<size_t>(c.num_clusters()), 0);
@@ -217,17 +217,25 @@ int relocate_clusters(const Metric& metric, Clustering& c, const std::vector<int
     if (e >= 0 && e < c.num_clusters()) moving[static_cast<size_t>(e)] = 1;
   }
   const std::vector<int> worst = worst_first(s.energy);
-  size_t next = 0;
+  const auto kept = [&](int w) { return static_cast<size_t>(w) < keep.size() && keep[static_cast<size_t>(w)]; };
+  // Which clusters can receive one (fixed for the call), and which have.
+  std::vector<char> open(worst.size(), 0);
+  for (size_t k = 0; k < worst.size(); ++k) {
+    const int w = worst[k];
+    open[k] = !moving[static_cast<size_t>(w)] && s.worst_face[static_cast<size_t>(w)] >= 0 && !kept(w);
+  }
+  PartCounts parts(topology, c, c.num_clusters());
   int moves = 0;
   for (int e : clusters) {
     if (e < 0 || e >= c.num_clusters()) continue;
-    const auto kept = [&](int w) { return static_cast<size_t>(w) < keep.size() && keep[static_cast<size_t>(w)]; };
-    while (next < worst.size() && (moving[static_cast<size_t>(worst[next])] ||
-                                   s.worst_face[static_cast<size_t>(worst[next])] < 0 || kept(worst[next]))) {
-      ++next;
-    }
-    if (next == worst.size()) break;
-    const int w = worst[next++];
+    // The worst open cluster; in e's own part when that part cannot spare e (on one part:
+    // simply the next worst).
+    size_t k = 0;
+    while (k < worst.size() && !(open[k] && parts.may_merge(c, e, parts.part_of(c, worst[k])))) ++k;
+    if (k == worst.size()) continue;
+    const int w = worst[k];
+    open[k] = 0;
+    parts.merged(c, e, parts.part_of(c, w));
     split_into(metric, c, s, w, e, sticky_iterations);
     c.sticky[static_cast<size_t>(w)] = std::max(c.sticky[static_cast<size_t>(w)], sticky_iterations);
     ++moves;

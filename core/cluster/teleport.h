@@ -47,8 +47,9 @@ int split_near(const Metric& metric, const MeshTopology& topology, Clustering& c
 // ones that gave up a face are sticky; no reflood (the caller floods next). Returns the moves
 // made (list each cluster once: a repeated one moves again).
 // Clusters marked in `keep` (e.g. settled ones) are never the worst cluster that receives one.
-int relocate_clusters(const Metric& metric, Clustering& clustering, const std::vector<int>& clusters,
-                      const std::vector<char>& keep = {}, int sticky_iterations = 3);
+// On a mesh of several parts, a cluster whose part is at its floor moves within its part.
+int relocate_clusters(const Metric& metric, const MeshTopology& topology, Clustering& clustering,
+                      const std::vector<int>& clusters, const std::vector<char>& keep = {}, int sticky_iterations = 3);
 
 // Removes `count` clusters by merging the cheapest adjacent pairs, renumbers labels to stay
 // in [0, n - count), then refloods.

@@ -1,7 +1,8 @@
 // Every part keeps enough clusters to become valid panels (cluster_floors, topology.h): four on
 // a closed part, one on an open part. A small closed part next to a large one used to get its
-// clusters by area alone (one or two), and the teleports and the panel phase's split-and-merge
-// took its cheap clusters away; three clusters on a closed part cannot all be planar panels.
+// clusters by area alone (one or two), and the teleports, the panel phase's split-and-merge and
+// its relocations took its cheap clusters away; three clusters on a closed part cannot all be
+// planar panels.
 #include <gtest/gtest.h>
 
 #include <set>
@@ -100,6 +101,21 @@ TEST(PartFloors, SplitNearTakesNoMergeFromAPartAtItsFloor) {
   ASSERT_EQ(requests.size(), 3u);
   EXPECT_EQ(split_near(s.metric, s.topo, s.c, requests, {}), 3);
   EXPECT_EQ(clusters_per_part(s.topo, s.c), (std::vector<int>{16, 4}));
+}
+
+TEST(PartFloors, RelocationStaysInAPartAtItsFloor) {
+  PlateAndPebble s;
+  // A pebble cluster to move (as an enclosed one would): the worst clusters are on the plate,
+  // but the pebble cannot spare it, so it goes to the pebble's worst; a plate cluster still
+  // goes to the plate's worst.
+  int pebble = -1, plate = -1;
+  for (int i = 0; i < s.c.num_clusters(); ++i) {
+    const int part = s.topo.face_component[static_cast<size_t>(s.c.seeds[static_cast<size_t>(i)])];
+    (part == 1 ? pebble : plate) = i;
+  }
+  EXPECT_EQ(relocate_clusters(s.metric, s.topo, s.c, {pebble, plate}), 2);
+  EXPECT_EQ(clusters_per_part(s.topo, s.c), (std::vector<int>{16, 4}));
+  EXPECT_EQ(s.topo.face_component[static_cast<size_t>(s.c.seeds[static_cast<size_t>(pebble)])], 1);
 }
 
 TEST(PartFloors, FewerPanelsKeepTheFloor) {

@@ -177,7 +177,7 @@ TEST(RelocateClusters, MovesEachToTheWorstFaceOfADifferentWorstCluster) {
   const Clustering before = r.c;
   const std::vector<int> order = r.by_energy(before);
   const int m1 = order[kN - 1], m2 = order[kN - 2];  // the two cheapest clusters move; bad ids are skipped
-  EXPECT_EQ(relocate_clusters(r.metric, r.c, {-1, m1, kN, m2}, {}, kSticky), 2);
+  EXPECT_EQ(relocate_clusters(r.metric, r.topo, r.c, {-1, m1, kN, m2}, {}, kSticky), 2);
   EXPECT_EQ(r.c.seeds[static_cast<size_t>(m1)], r.worst_face(before, order[0]));
   EXPECT_EQ(r.c.seeds[static_cast<size_t>(m2)], r.worst_face(before, order[1]));
   EXPECT_EQ(r.c.sticky[static_cast<size_t>(m1)], kSticky);
@@ -194,11 +194,11 @@ TEST(RelocateClusters, KeptClustersNeverReceiveOne) {
   const int m = order[kN - 1];
   std::vector<char> keep(kN, 0);
   keep[static_cast<size_t>(order[0])] = keep[static_cast<size_t>(order[1])] = 1;
-  EXPECT_EQ(relocate_clusters(r.metric, r.c, {m}, keep, kSticky), 1);
+  EXPECT_EQ(relocate_clusters(r.metric, r.topo, r.c, {m}, keep, kSticky), 1);
   EXPECT_EQ(r.c.seeds[static_cast<size_t>(m)], r.worst_face(before, order[2]));
   // Every other cluster kept: nowhere to go.
   Clustering c = before;
-  EXPECT_EQ(relocate_clusters(r.metric, c, {m}, std::vector<char>(kN, 1), kSticky), 0);
+  EXPECT_EQ(relocate_clusters(r.metric, r.topo, c, {m}, std::vector<char>(kN, 1), kSticky), 0);
   EXPECT_EQ(c.seeds, before.seeds);
 }
 
