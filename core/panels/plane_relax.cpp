@@ -200,7 +200,13 @@ std::vector<Plane> relax_planes(const std::vector<NodeConstraint>& nodes, const 
       for (int j = free_offset[a]; j < free_offset[a + 1]; ++j) {
         const size_t i = static_cast<size_t>(free_plane[static_cast<size_t>(j)]);
         const Vec3 d = xk - center[i];
-        scatter[i] += pull[i] * d * d.transpose();
+        // scatter += (pull d) d^T entry by entry, the same products as Eigen's outer product:
+        // its temporary on the stack, written in halves and read whole, stalled every load.
+        const double pd[3] = {pull[i] * d.x(), pull[i] * d.y(), pull[i] * d.z()};
+        Eigen::Matrix3d& sc = scatter[i];
+        for (int col = 0; col < 3; ++col) {
+          for (int row = 0; row < 3; ++row) sc(row, col) += pd[row] * d(col);
+        }
       }
     }
     for (size_t i : fitted) {
