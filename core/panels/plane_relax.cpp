@@ -16,56 +16,62 @@ namespace {
 // in the same order (so the same bits, which the chaotic panel phase needs to stay as it
 // was), without the generic machinery around them: the node solve runs once per node and
 // iteration, 80 times per relaxation. Eigen 3.4, LDLT.h: ldlt_inplace<Lower>::unblocked
-// and _solve_impl_transposed (unrolled triangular solves).
-// m: A's lower triangle on entry (overwritten: L below the diagonal, D on it); y: b on entry.
-Vec3 ldlt_solve3(double (&m)[3][3], double (&y)[3]) {
-  int t[3] = {0, 1, 2};
-  for (int k = 0; k < 3; ++k) {
-    int p = k;  // the largest diagonal entry left (the first on ties)
-    double best = std::abs(m[k][k]);
-    for (int j = k + 1; j < 3; ++j) {
-      if (std::abs(m[j][j]) > best) best = std::abs(m[j][j]), p = j;
-    }
-    t[k] = p;
-    if (p != k) {
-      for (int j = 0; j < k; ++j) std::swap(m[k][j], m[p][j]);
-      for (int i = p + 1; i < 3; ++i) std::swap(m[i][k], m[i][p]);
-      std::swap(m[k][k], m[p][p]);
-      for (int i = k + 1; i < p; ++i) std::swap(m[i][k], m[p][i]);
-    }
-    if (k > 0) {
-      double temp[2];
-      for (int j = 0; j < k; ++j) temp[j] = m[j][j] * m[k][j];
-      m[k][k] -= k == 1 ? m[k][0] * temp[0] : m[k][0] * temp[0] + m[k][1] * temp[1];
-      if (k == 1) m[2][1] -= m[2][0] * temp[0];
-    }
-    const double pivot = m[k][k];
-    const bool valid = std::abs(pivot) > 0.0;
-    if (k == 0 && !valid) {  // a zero diagonal: Eigen stops here with no transpositions
-      t[0] = 0, t[1] = 1, t[2] = 2;
-      break;
-    }
-    if (valid) {
-      for (int i = k + 1; i < 3; ++i) m[i][k] /= pivot;
-    }
+// and _solve_impl_transposed (unrolled triangular solves). The six entries of A's lower
+// triangle are plain variables and the pivoting swaps them by name, so they stay in
+// registers (an array indexed by the pivot lived on the stack, and its mixed-width loads and
+// stores stalled).
+struct Lower3 {
+  double d0, d1, d2;     // diagonal (D after factorisation)
+  double l10, l20, l21;  // below it (L after factorisation)
+};
+
+Vec3 ldlt_solve3(Lower3 m, double y0, double y1, double y2) {
+  int t0 = 0, t1 = 1;  // the transpositions of steps 0 and 1 (step 2 has none)
+  // Step 0: the largest diagonal entry (the first on ties) to the front.
+  double best = std::abs(m.d0);
+  if (std::abs(m.d1) > best) best = std::abs(m.d1), t0 = 1;
+  if (std::abs(m.d2) > best) t0 = 2;
+  if (t0 == 1) {
+    std::swap(m.d0, m.d1);
+    std::swap(m.l20, m.l21);
+  } else if (t0 == 2) {
+    std::swap(m.d0, m.d2);
+    std::swap(m.l10, m.l21);
   }
-  for (int k = 0; k < 3; ++k) {
-    if (t[k] != k) std::swap(y[k], y[t[k]]);
+  if (std::abs(m.d0) > 0.0) {  // a zero first pivot: Eigen stops here with no transpositions
+    m.l10 /= m.d0;
+    m.l20 /= m.d0;
+    // Step 1.
+    if (std::abs(m.d2) > std::abs(m.d1)) {
+      t1 = 2;
+      std::swap(m.l10, m.l20);
+      std::swap(m.d1, m.d2);
+    }
+    const double temp0 = m.d0 * m.l10;
+    m.d1 -= m.l10 * temp0;
+    m.l21 -= m.l20 * temp0;
+    if (std::abs(m.d1) > 0.0) m.l21 /= m.d1;
+    // Step 2.
+    const double u0 = m.d0 * m.l20, u1 = m.d1 * m.l21;
+    m.d2 -= m.l20 * u0 + m.l21 * u1;
+  } else {
+    t0 = 0;
   }
-  y[1] -= m[1][0] * y[0];
-  y[2] -= m[2][0] * y[0] + m[2][1] * y[1];
-  for (int i = 0; i < 3; ++i) {
-    if (std::abs(m[i][i]) > std::numeric_limits<double>::min())
-      y[i] /= m[i][i];
-    else
-      y[i] = 0.0;
-  }
-  y[1] -= m[2][1] * y[2];
-  y[0] -= m[1][0] * y[1] + m[2][0] * y[2];
-  for (int k = 2; k >= 0; --k) {
-    if (t[k] != k) std::swap(y[k], y[t[k]]);
-  }
-  return Vec3(y[0], y[1], y[2]);
+  if (t0 == 1) std::swap(y0, y1);
+  if (t0 == 2) std::swap(y0, y2);
+  if (t1 == 2) std::swap(y1, y2);
+  y1 -= m.l10 * y0;
+  y2 -= m.l20 * y0 + m.l21 * y1;
+  constexpr double kTiny = std::numeric_limits<double>::min();
+  y0 = std::abs(m.d0) > kTiny ? y0 / m.d0 : 0.0;
+  y1 = std::abs(m.d1) > kTiny ? y1 / m.d1 : 0.0;
+  y2 = std::abs(m.d2) > kTiny ? y2 / m.d2 : 0.0;
+  y1 -= m.l21 * y2;
+  y0 -= m.l10 * y1 + m.l20 * y2;
+  if (t1 == 2) std::swap(y1, y2);
+  if (t0 == 2) std::swap(y0, y2);
+  if (t0 == 1) std::swap(y0, y1);
+  return Vec3(y0, y1, y2);
 }
 
 // A plane's part of its nodes' solves at the current W: W n n^T (lower triangle, row by
@@ -165,16 +171,16 @@ std::vector<Plane> relax_planes(const std::vector<NodeConstraint>& nodes, const 
     }
     for (size_t k : active) {
       const NodeConstraint& node = nodes[k];
-      double a[3][3] = {{node.weight, 0.0, 0.0}, {0.0, node.weight, 0.0}, {0.0, 0.0, node.weight}};
-      double b[3] = {node.weight * node.corner.x(), node.weight * node.corner.y(), node.weight * node.corner.z()};
+      Lower3 a{node.weight, node.weight, node.weight, 0.0, 0.0, 0.0};
+      double b0 = node.weight * node.corner.x(), b1 = node.weight * node.corner.y(), b2 = node.weight * node.corner.z();
       for (int j = 0; j < node.count; ++j) {
         const PlaneTerms& pt = terms[static_cast<size_t>(node.planes[static_cast<size_t>(j)])];
-        a[0][0] += pt.a[0];
-        a[1][0] += pt.a[1], a[1][1] += pt.a[2];
-        a[2][0] += pt.a[3], a[2][1] += pt.a[4], a[2][2] += pt.a[5];
-        b[0] += pt.b[0], b[1] += pt.b[1], b[2] += pt.b[2];
+        a.d0 += pt.a[0];
+        a.l10 += pt.a[1], a.d1 += pt.a[2];
+        a.l20 += pt.a[3], a.l21 += pt.a[4], a.d2 += pt.a[5];
+        b0 += pt.b[0], b1 += pt.b[1], b2 += pt.b[2];
       }
-      x[k] = ldlt_solve3(a, b);
+      x[k] = ldlt_solve3(a, b0, b1, b2);
     }
     // Planes: least squares over their faces (exact moments) and their nodes (weight W w_i),
     // the scatter formed about the common centre (two passes) to keep its precision at large W.
@@ -193,7 +199,14 @@ std::vector<Plane> relax_planes(const std::vector<NodeConstraint>& nodes, const 
       center[i] = hinged(hinges, i) ? hinges[i].point : area[i] > 0.0 ? Vec3(first[i] / area[i]) : Vec3::Zero();
       const ClusterMoments& mo = moments[i];
       const Vec3& c = center[i];
-      scatter[i] = mo.second - mo.first * c.transpose() - c * mo.first.transpose() + mo.area * c * c.transpose();
+      // second - first c^T - c first^T + (area c) c^T, entry by entry with the products and
+      // sums of Eigen's expression (no outer-product temporaries on the stack).
+      const double ac[3] = {mo.area * c.x(), mo.area * c.y(), mo.area * c.z()};
+      Eigen::Matrix3d& sc = scatter[i];
+      for (int col = 0; col < 3; ++col) {
+        for (int row = 0; row < 3; ++row)
+          sc(row, col) = mo.second(row, col) - c(col) * mo.first(row) - mo.first(col) * c(row) + c(col) * ac[row];
+      }
     }
     for (size_t a = 0; a < active.size(); ++a) {
       const Vec3& xk = x[active[a]];
