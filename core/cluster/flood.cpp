@@ -8,22 +8,6 @@
 
 namespace ff {
 
-namespace {
-
-struct Entry {
-  double cost;
-  int face;
-};
-
-// Ties broken by face so the result never depends on anything but the input.
-struct Before {
-  bool operator()(const Entry& a, const Entry& b) const {
-    return a.cost < b.cost || (a.cost == b.cost && a.face < b.face);
-  }
-};
-
-}  // namespace
-
 double flood(const Metric& metric, const MeshTopology& topology, Clustering& clustering) {
   return flood(metric, topology, clustering, nullptr);
 }
@@ -44,7 +28,7 @@ double flood(const Metric& metric, const MeshTopology& topology, Clustering& clu
     int label = -1;
   };
   std::vector<FaceState> state(static_cast<size_t>(faces));
-  QuadHeap<Entry, Before> queue;
+  QuadHeap<KeyedItem, KeyedBefore> queue;
   queue.reserve(static_cast<size_t>(faces) / 8 + 64);
 
   const FaceData& records = metric.faces();
@@ -66,7 +50,7 @@ double flood(const Metric& metric, const MeshTopology& topology, Clustering& clu
       if (c < s.best) {
         s.best = c;
         s.best_cluster = cluster;
-        queue.push(Entry{c, g});
+        queue.push(KeyedItem{order_key(c), g});
       }
     }
   };
@@ -90,14 +74,18 @@ double flood(const Metric& metric, const MeshTopology& topology, Clustering& clu
     push_neighbours(f, label);
   }
   while (!queue.empty()) {
-    const Entry e = queue.pop();
+    const KeyedItem popped = queue.pop();
+    const struct {
+      double cost;
+      int face;
+    } e{key_value(popped.key), popped.id};
     if (prefetch && !queue.empty()) {
       // A flood waits on memory, not arithmetic: consecutive pops jump between all fronts.
       // Fetch in two stages: the neighbour lists of the likely pops after next (the root's
       // children), and everything the next pop reads (its list is cached by now).
       for (size_t k = 1; k < std::min<size_t>(queue.size(), 5); ++k)
-        __builtin_prefetch(&topology.face_neighbors[static_cast<size_t>(queue.at(k).face)]);
-      const int next = queue.top().face;
+        __builtin_prefetch(&topology.face_neighbors[static_cast<size_t>(queue.at(k).id)]);
+      const int next = queue.top().id;
       __builtin_prefetch(&state[static_cast<size_t>(next)]);
       for (int g : topology.face_neighbors[static_cast<size_t>(next)]) {
         if (g < 0) continue;

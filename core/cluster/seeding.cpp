@@ -159,20 +159,21 @@ std::vector<std::array<double, 3>> dual_edge_lengths(const FaceData& faces, cons
 void farthest_seeds(const std::vector<double>& weight, const MeshTopology& topology,
                     const std::vector<std::array<double, 3>>& hop, const std::vector<int>& candidates, int count,
                     SplitMix64& rng, std::vector<char>& taken, std::vector<double>& dist, std::vector<int>& seeds) {
-  using Item = std::pair<double, int>;  // (distance, face)
   std::vector<int> first;
   random_seeds(weight, candidates, 1, rng, taken, first);
   int next = first.front();
   std::unique_ptr<DistanceBuckets> buckets;
-  QuadHeap<Item, std::less<Item>> frontier;  // nearest first; (distance, face) orders it strictly
+  QuadHeap<KeyedItem, KeyedBefore> frontier;  // nearest first; (distance, face) orders it strictly
   for (int s = 0; s < count; ++s) {
     taken[static_cast<size_t>(next)] = 1;
     seeds.push_back(next);
     if (buckets) buckets->moved(next, dist[static_cast<size_t>(next)], 0.0);
     dist[static_cast<size_t>(next)] = 0.0;
-    frontier.push({0.0, next});
+    frontier.push({order_key(0.0), next});
     while (!frontier.empty()) {
-      const auto [d, f] = frontier.pop();
+      const KeyedItem item = frontier.pop();
+      const double d = key_value(item.key);
+      const int f = item.id;
       if (d > dist[static_cast<size_t>(f)]) continue;
       for (size_t i = 0; i < 3; ++i) {
         const int g = topology.face_neighbors[static_cast<size_t>(f)][i];
@@ -181,7 +182,7 @@ void farthest_seeds(const std::vector<double>& weight, const MeshTopology& topol
         if (nd < dist[static_cast<size_t>(g)]) {
           if (buckets) buckets->moved(g, dist[static_cast<size_t>(g)], nd);
           dist[static_cast<size_t>(g)] = nd;
-          frontier.push({nd, g});
+          frontier.push({order_key(nd), g});
         }
       }
     }
