@@ -222,19 +222,36 @@ std::vector<Plane> relax_planes(const std::vector<NodeConstraint>& nodes, const 
         }
       }
     }
-    for (size_t i : fitted) {
-      if (!(area[i] > 0.0)) continue;
-      if (hinged(hinges, i)) {
-        planes[i] = hinged_fit(hinges[i], 0.5 * (scatter[i] + scatter[i].transpose()), planes[i]);
-        continue;
-      }
-      // The characteristic cubic's smallest root (sym_eigen3_newton.h): Eigen's axis to
-      // rounding at a ninth of its iterative solver's cost.
-      Vec3 normal = smallest_eigenvector_newton(0.5 * (scatter[i] + scatter[i].transpose()));
-      if (!normal.allFinite() || normal.norm() < 0.5) continue;
+    const auto set_normal = [&](size_t i, Vec3 normal) {
+      if (!normal.allFinite() || normal.norm() < 0.5) return;
       if (normal.dot(planes[i].normal) < 0.0) normal = -normal;
       planes[i] = Plane::through(center[i], normal.normalized());
+    };
+    // The characteristic cubic's smallest root (sym_eigen3_newton.h): Eigen's axis to
+    // rounding at a ninth of its iterative solver's cost; two planes at a time (each plane's
+    // result is its own, so the pairing changes no bit).
+    constexpr size_t kNone = static_cast<size_t>(-1);
+    size_t waiting = kNone;
+    Eigen::Matrix3d waiting_scatter;
+    for (size_t i : fitted) {
+      if (!(area[i] > 0.0)) continue;
+      const Eigen::Matrix3d symmetric = 0.5 * (scatter[i] + scatter[i].transpose());
+      if (hinged(hinges, i)) {
+        planes[i] = hinged_fit(hinges[i], symmetric, planes[i]);
+        continue;
+      }
+      if (waiting == kNone) {
+        waiting = i;
+        waiting_scatter = symmetric;
+        continue;
+      }
+      Vec3 first_normal, second_normal;
+      smallest_eigenvectors_newton(waiting_scatter, symmetric, first_normal, second_normal);
+      set_normal(waiting, first_normal);
+      set_normal(i, second_normal);
+      waiting = kNone;
     }
+    if (waiting != kNone) set_normal(waiting, smallest_eigenvector_newton(waiting_scatter));
   }
   return planes;
 }

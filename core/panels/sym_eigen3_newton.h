@@ -18,4 +18,8 @@ namespace ff {
 // unit too, on the fallback); its sign is arbitrary.
 Vec3 smallest_eigenvector_newton(const Eigen::Matrix3d& a);
 
+// Two at once, the same bits as two calls: the Newton loops run side by side, so that one's
+// division fills the other's wait (each step of one loop depends on its last).
+void smallest_eigenvectors_newton(const Eigen::Matrix3d& a, const Eigen::Matrix3d& b, Vec3& va, Vec3& vb);
+
 }  // namespace ff
