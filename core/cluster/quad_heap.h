@@ -46,9 +46,12 @@ class QuadHeap {
       const size_t first = 4 * i + 1;
       size_t best;
       if (first + 4 <= n) {
-        const size_t a = before_(items_[first + 1], items_[first]) ? first + 1 : first;
-        const size_t b = before_(items_[first + 3], items_[first + 2]) ? first + 3 : first + 2;
-        best = before_(items_[b], items_[a]) ? b : a;
+        // Indices by arithmetic on the comparisons: the smaller child is a coin toss, which a
+        // branch would mispredict half the time.
+        const size_t a = first + static_cast<size_t>(before_(items_[first + 1], items_[first]));
+        const size_t b = first + 2 + static_cast<size_t>(before_(items_[first + 3], items_[first + 2]));
+        const size_t take_b = static_cast<size_t>(before_(items_[b], items_[a]));
+        best = a + take_b * (b - a);
       } else if (first < n) {
         best = first;
         for (size_t k = first + 1; k < n; ++k) {
@@ -103,9 +106,11 @@ struct KeyedItem {
 };
 
 struct KeyedBefore {
-  bool operator()(const KeyedItem& a, const KeyedItem& b) const {
-    return (a.key < b.key) | ((a.key == b.key) & (a.id < b.id));
-  }
+  // One 96-bit comparison (ids are not negative): the compiler turned the two-part form
+  // (key <, or key == and id <) back into branches.
+  bool operator()(const KeyedItem& a, const KeyedItem& b) const { return wide(a) < wide(b); }
+  __extension__ using Wide = unsigned __int128;
+  static Wide wide(const KeyedItem& x) { return Wide{x.key} << 32 | static_cast<std::uint32_t>(x.id); }
 };
 
 }  // namespace ff
