@@ -75,10 +75,8 @@ double flood(const Metric& metric, const MeshTopology& topology, Clustering& clu
   }
   while (!queue.empty()) {
     const KeyedItem popped = queue.pop();
-    const struct {
-      double cost;
-      int face;
-    } e{key_value(popped.key), popped.id};
+    const double cost = key_value(popped.key);
+    const int face = popped.id;
     if (prefetch && !queue.empty()) {
       // A flood waits on memory, not arithmetic: consecutive pops jump between all fronts.
       // Fetch in two stages: the neighbour lists of the likely pops after next (the root's
@@ -95,11 +93,11 @@ double flood(const Metric& metric, const MeshTopology& topology, Clustering& clu
         if (reads_spread) __builtin_prefetch(record + 64);
       }
     }
-    FaceState& s = state[static_cast<size_t>(e.face)];
-    if (s.label >= 0 || e.cost != s.best) continue;  // assigned already, or superseded
+    FaceState& s = state[static_cast<size_t>(face)];
+    if (s.label >= 0 || cost != s.best) continue;  // assigned already, or superseded
     s.label = s.best_cluster;
-    energy += e.cost;
-    push_neighbours(e.face, s.label);
+    energy += cost;
+    push_neighbours(face, s.label);
   }
   std::vector<int>& labels = clustering.labels;
   labels.resize(static_cast<size_t>(faces));
