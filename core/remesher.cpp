@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <limits>
+#include <numeric>
 #include <optional>
 #include <string>
 
@@ -66,10 +67,11 @@ constexpr int kTinyClusterShare = 20;
 // once rather than solved three times (retries) into panels that must stay invalid.
 void check_enough_panels(const MeshTopology& topology, int panels) {
   const std::vector<int> per_part = fewest_panels(topology);
-  const int closed_parts = static_cast<int>(std::count(per_part.begin(), per_part.end(), 4));
-  const int open_parts = topology.num_components - closed_parts;
-  const int fewest = 4 * closed_parts + open_parts;
+  const int fewest = std::accumulate(per_part.begin(), per_part.end(), 0);
   if (panels >= fewest) return;
+  const std::vector<char> closed = closed_components(topology);
+  const int closed_parts = static_cast<int>(std::count(closed.begin(), closed.end(), 1));
+  const int open_parts = topology.num_components - closed_parts;
   const auto parts = [](int count, const char* kind) {
     return std::to_string(count) + " " + kind + (count == 1 ? " part" : " parts");
   };

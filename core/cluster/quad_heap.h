@@ -99,7 +99,7 @@ inline double key_value(std::uint64_t key) {
 }
 
 // A heap entry ordered by (value, id): the order of comparing (value, id) pairs, so the pops
-// come in the same sequence, decided without branches.
+// come in the same sequence, decided without unpredictable branches.
 struct KeyedItem {
   std::uint64_t key;  // order_key(value)
   int id;

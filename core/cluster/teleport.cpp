@@ -95,6 +95,15 @@ class PartCounts {
   std::vector<int> counts_;
 };
 
+// The first merge from `from` on that is free and whose part can give a cluster to part `to`
+// (merges.size() when there is none); on one part simply the first free one.
+template <typename FreePair>
+size_t first_mergeable(const std::vector<MergeCandidate>& merges, size_t from, const FreePair& free_pair,
+                       const PartCounts& parts, const Clustering& c, int to) {
+  while (from < merges.size() && !(free_pair(merges[from]) && parts.may_merge(c, merges[from].a, to))) ++from;
+  return from;
+}
+
 // Clusters by decreasing energy (ties by id).
 std::vector<int> worst_first(const std::vector<double>& energy) {
   std::vector<int> order(energy.size());
@@ -146,10 +155,9 @@ int teleport(const Metric& metric, const MeshTopology& topology, Clustering& c, 
       return !used[static_cast<size_t>(m.a)] && !used[static_cast<size_t>(m.b)] && m.a != w && m.b != w;
     };
     while (next_merge < merges.size() && !free_pair(merges[next_merge])) ++next_merge;
-    // The cheapest free pair whose part can give a cluster to w's (on one part: that pair).
+    // The cheapest free pair whose part can give a cluster to w's.
     const int to = parts.part_of(c, w);
-    size_t k = next_merge;
-    while (k < merges.size() && !(free_pair(merges[k]) && parts.may_merge(c, merges[k].a, to))) ++k;
+    const size_t k = first_mergeable(merges, next_merge, free_pair, parts, c, to);
     if (k == merges.size()) break;
     const MergeCandidate& m = merges[k];
     if (!(m.cost < 0.5 * s.energy[static_cast<size_t>(w)])) break;
@@ -187,10 +195,9 @@ int split_near(const Metric& metric, const MeshTopology& topology, Clustering& c
     };
     while (next_merge < merges.size() && !free_pair(merges[next_merge])) ++next_merge;
     if (next_merge == merges.size()) break;  // nothing left to merge: n stays as asked
-    // The cheapest free pair whose part can give a cluster to w's (on one part: that pair).
+    // The cheapest free pair whose part can give a cluster to w's.
     const int to = parts.part_of(c, w);
-    size_t k = next_merge;
-    while (k < merges.size() && !(free_pair(merges[k]) && parts.may_merge(c, merges[k].a, to))) ++k;
+    const size_t k = first_mergeable(merges, next_merge, free_pair, parts, c, to);
     if (k == merges.size()) continue;  // no part can spare one for this request
     const MergeCandidate& m = merges[k];
     used[static_cast<size_t>(m.a)] = used[static_cast<size_t>(m.b)] = 1;

@@ -312,12 +312,8 @@ TEST(CleanMesh, BowtieVertexIsSplit) {
 TEST(CleanMesh, CubesTouchingAtACornerAreSplitAndOutward) {
   TriMesh m = test::cube_soup();
   TriMesh second = test::cube_soup();
-  for (Triangle& t : second.triangles) {
-    std::swap(t[1], t[2]);  // inside out
-    for (int& v : t) v += m.num_vertices();
-  }
-  for (const Vec3& p : second.positions) m.positions.push_back(p + Vec3(1, 1, 1));
-  m.triangles.insert(m.triangles.end(), second.triangles.begin(), second.triangles.end());
+  for (Triangle& t : second.triangles) std::swap(t[1], t[2]);  // inside out
+  test::append_shifted(m, second, Vec3(1, 1, 1));
   const CleanMesh c = clean_mesh(m);
   const MeshTopology t = expect_clean(m, c);
   EXPECT_EQ(c.report.nonmanifold_vertices_split, 1);

@@ -13,6 +13,7 @@
 #include "core/cluster/seeding.h"
 #include "core/cluster/teleport.h"
 #include "core/shapes/shapes.h"
+#include "synthetic_meshes.h"
 
 namespace ff {
 namespace {
@@ -180,10 +181,7 @@ TEST(Refine, BoundaryMovesLowerTheEnergyAndKeepClustersWhole) {
 TEST(Clustering, InvariantsHoldOnHardInputs) {
   // Two separate parts, zero-area faces, and as many clusters as faces.
   TriMesh mesh = make_plane(6, 4);
-  const int offset = mesh.num_vertices();
-  const TriMesh other = make_plane(3, 3, 0.5, 0.5);
-  for (const Vec3& p : other.positions) mesh.positions.push_back(p + Vec3(3, 0, 0));
-  for (const Triangle& t : other.triangles) mesh.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  test::append_shifted(mesh, make_plane(3, 3, 0.5, 0.5), Vec3(3, 0, 0));
   mesh.positions[1] = 0.5 * (mesh.positions[0] + mesh.positions[2]);  // flattens the faces at vertex 1
   const MeshTopology topo = build_topology(mesh);
   const FaceData fd = make_face_data(mesh);

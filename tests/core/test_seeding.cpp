@@ -7,16 +7,15 @@
 
 #include "core/cluster/seeding.h"
 #include "core/shapes/shapes.h"
+#include "synthetic_meshes.h"
 
 namespace ff {
 namespace {
 
 TEST(Seeding, DistinctDeterministicAndPerComponent) {
   // Two separate plates: every part gets at least one seed, in proportion to its area.
-  TriMesh a = make_plane(20, 20, 1.0, 1.0), b = make_plane(10, 10, 0.5, 0.5);
-  const int offset = a.num_vertices();
-  for (const Vec3& p : b.positions) a.positions.push_back(p + Vec3(5, 0, 0));
-  for (const Triangle& t : b.triangles) a.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  TriMesh a = make_plane(20, 20, 1.0, 1.0);
+  test::append_shifted(a, make_plane(10, 10, 0.5, 0.5), Vec3(5, 0, 0));
   const MeshTopology topo = build_topology(a);
   const FaceData fd = make_face_data(a);
   ASSERT_EQ(topo.num_components, 2);
