@@ -13,7 +13,8 @@ namespace {
 // treated as near-double: the eigenvector of a near-double eigenvalue is ill-conditioned,
 // and the cross product loses precision as (gap)^-2 where QR loses it as (gap)^-1.
 constexpr double kGapShare = 1e-3;
-// Newton converges in ~5-8 steps from the bound below; near a double root only linearly.
+// Newton converges in ~5-8 steps from the bound below (fewer from a good guess); near a
+// double root only linearly.
 constexpr int kMaxNewton = 64;
 
 // Written out (the same operations Eigen's cross product does).
@@ -32,7 +33,7 @@ struct CubicSolve {
   double b00 = 0.0, b11 = 0.0, b22 = 0.0, a10 = 0.0, a20 = 0.0, a21 = 0.0, p = 0.0, d = 0.0, mu = 0.0;
   int steps = 0;
 
-  explicit CubicSolve(const Eigen::Matrix3d& m) : a(&m) {
+  explicit CubicSolve(const Eigen::Matrix3d& m, const Vec3* guess = nullptr) : a(&m) {
     if (!m.allFinite()) {
       fallback = true;
       return;
@@ -63,6 +64,24 @@ struct CubicSolve {
     // Newton from the bound -2s climbs to the root without overshooting; it stops when
     // rounding no longer lets it climb.
     mu = -2.0 * std::sqrt(p / 3.0);
+    if (guess) start_near(*guess);
+  }
+
+  // A start closer than the bound: the Rayleigh quotient r of a guess (B's, in the scaled and
+  // shifted frame) is at or above the smallest root. Where f(r) > 0 and r < 0 with f'(r) > 0,
+  // r lies between the smallest root and f's first critical point, where f is increasing and
+  // concave: one Newton step from r lands at or left of the root (the tangent lies above f),
+  // off by about the square of r's error, and the climb goes on from there as from the bound.
+  // A poor guess fails these tests or lands below the bound, and the bound stays.
+  void start_near(const Vec3& g) {
+    const double x = g.x(), y = g.y(), z = g.z();
+    const double r = (b00 * x * x + b11 * y * y + b22 * z * z + 2.0 * (a10 * x * y + a20 * x * z + a21 * y * z)) /
+                     (x * x + y * y + z * z);
+    if (!(r < 0.0) || !(3.0 * r * r - p > 0.0)) return;
+    const double f = (r * r - p) * r - d;
+    if (!(f > 0.0)) return;
+    const double next = r - f / (3.0 * r * r - p);
+    if (next > mu) mu = next;
   }
 
   // One Newton step; false once it stops.
@@ -95,8 +114,8 @@ struct CubicSolve {
 
 }  // namespace
 
-Vec3 smallest_eigenvector_newton(const Eigen::Matrix3d& a) {
-  CubicSolve solve(a);
+Vec3 smallest_eigenvector_newton(const Eigen::Matrix3d& a, const Vec3* guess) {
+  CubicSolve solve(a, guess);
   if (!solve.fallback) {
     while (solve.step()) {
     }
@@ -104,8 +123,9 @@ Vec3 smallest_eigenvector_newton(const Eigen::Matrix3d& a) {
   return solve.vector();
 }
 
-void smallest_eigenvectors_newton(const Eigen::Matrix3d& a, const Eigen::Matrix3d& b, Vec3& va, Vec3& vb) {
-  CubicSolve x(a), y(b);
+void smallest_eigenvectors_newton(const Eigen::Matrix3d& a, const Eigen::Matrix3d& b, Vec3& va, Vec3& vb,
+                                  const Vec3* guess_a, const Vec3* guess_b) {
+  CubicSolve x(a, guess_a), y(b, guess_b);
   bool xs = !x.fallback, ys = !y.fallback;
   // Each step waits on its division: two independent chains fill each other's wait.
   while (xs && ys) xs = x.step(), ys = y.step();

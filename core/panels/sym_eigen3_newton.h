@@ -15,11 +15,15 @@
 namespace ff {
 
 // a: symmetric (only its lower triangle is read). Returns a unit vector (Eigen's result,
-// unit too, on the fallback); its sign is arbitrary.
-Vec3 smallest_eigenvector_newton(const Eigen::Matrix3d& a);
+// unit too, on the fallback); its sign is arbitrary. guess (optional): a vector near the
+// answer, e.g. the last iteration's; it moves Newton's start closer to the root (fewer
+// steps) when its Rayleigh quotient allows, and otherwise changes nothing. The result is
+// the same to rounding with or without it, not the same bits.
+Vec3 smallest_eigenvector_newton(const Eigen::Matrix3d& a, const Vec3* guess = nullptr);
 
 // Two at once, the same bits as two calls: the Newton loops run side by side, so that one's
 // division fills the other's wait (each step of one loop depends on its last).
-void smallest_eigenvectors_newton(const Eigen::Matrix3d& a, const Eigen::Matrix3d& b, Vec3& va, Vec3& vb);
+void smallest_eigenvectors_newton(const Eigen::Matrix3d& a, const Eigen::Matrix3d& b, Vec3& va, Vec3& vb,
+                                  const Vec3* guess_a = nullptr, const Vec3* guess_b = nullptr);
 
 }  // namespace ff

@@ -8,6 +8,7 @@
 #include <Eigen/Eigenvalues>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <vector>
 
 #include "core/panels/sym_eigen3.h"
@@ -122,6 +123,56 @@ TEST(SymEigen3Newton, TwoAtOnceAsTwoCalls) {
     smallest_eigenvectors_newton(a, b, va, vb);
     EXPECT_TRUE(same(va, smallest_eigenvector_newton(a))) << a;
     EXPECT_TRUE(same(vb, smallest_eigenvector_newton(b))) << b;
+  }
+}
+
+// A guess (the relaxation passes each plane's last normal) only moves the start: good, poor,
+// wrong (another eigenvector), zero or not finite, the result is the smallest eigenvector
+// to the same accuracy, and two at once still give what two calls give.
+TEST(SymEigen3Newton, AGuessOnlyMovesTheStart) {
+  SplitMix64 rng(13);
+  for (int t = 0; t < 1000; ++t) {
+    const double scale = std::pow(10.0, uniform(rng, -20.0, 20.0));
+    const double l1 = uniform(rng, -1.0, 1.0);
+    const double l2 = l1 + uniform(rng, 0.05, 1.0);
+    const double l3 = l2 + uniform(rng, 0.05, 1.0);
+    const Eigen::Matrix3d r = random_rotation(rng);
+    const Eigen::Matrix3d a = scale * (r * Vec3(l1, l2, l3).asDiagonal() * r.transpose());
+    const Vec3 noise(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, -1, 1));
+    const Vec3 guesses[] = {r.col(0),
+                            r.col(0) + 1e-6 * noise,
+                            r.col(0) + 1e-2 * noise,
+                            -(r.col(0) + 0.5 * noise),
+                            r.col(1),
+                            r.col(2),
+                            noise,
+                            Vec3::Zero(),
+                            Vec3(std::nan(""), 0.0, 1.0),
+                            Vec3(std::numeric_limits<double>::infinity(), 0.0, 0.0)};
+    for (const Vec3& g : guesses) {
+      const Vec3 v = smallest_eigenvector_newton(a, &g);
+      EXPECT_NEAR(std::abs(v.dot(r.col(0))), 1.0, 1e-12) << a << "\nguess " << g.transpose();
+      expect_smallest_eigenvector(a, v, 1e-12);
+    }
+    const Eigen::Matrix3d b = a + scale * Eigen::Matrix3d::Identity();
+    Vec3 va, vb;
+    smallest_eigenvectors_newton(a, b, va, vb, &guesses[1], &guesses[4]);
+    const Vec3 ca = smallest_eigenvector_newton(a, &guesses[1]), cb = smallest_eigenvector_newton(b, &guesses[4]);
+    EXPECT_EQ(0, std::memcmp(va.data(), ca.data(), sizeof(double) * 3));
+    EXPECT_EQ(0, std::memcmp(vb.data(), cb.data(), sizeof(double) * 3));
+  }
+  // Plane-fit scatters (smallest eigenvalue ~0, weights up to 1e11) with their normal nearly
+  // known, as in the relaxation's later iterations.
+  for (int t = 0; t < 500; ++t) {
+    const Eigen::Matrix3d r = random_rotation(rng);
+    Eigen::Matrix3d s = Eigen::Matrix3d::Zero();
+    for (int i = 0; i < 6; ++i) {
+      const double weight = i < 3 ? 1.0 : std::pow(10.0, uniform(rng, 0.0, 11.0));
+      const Vec3 p = uniform(rng, -1, 1) * r.col(0) + uniform(rng, -1, 1) * r.col(1);
+      s += weight * p * p.transpose();
+    }
+    const Vec3 guess = r.col(2) + 1e-4 * r.col(0);
+    EXPECT_NEAR(std::abs(smallest_eigenvector_newton(s, &guess).dot(r.col(2))), 1.0, 1e-12) << s;
   }
 }
 
