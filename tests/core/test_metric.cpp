@@ -224,6 +224,56 @@ TEST(Metric, SphereConstrainedFitIsTheGlobalMinimum) {
   }
 }
 
+// The minimiser by the stationarity conditions alone, to full precision: (A - mu I) n = b
+// with |n| = 1 and mu below A's smallest eigenvalue (the global minimum's multiplier), mu
+// found by bisection down to adjacent doubles. A slow reference for the fast solver (which
+// stopped its own bisection at 1e-15 relative before it used Newton's method).
+Vec3 sphere_min_by_bisection(const Eigen::Matrix3d& A, const Vec3& b) {
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(A);
+  const Vec3 lambda = eig.eigenvalues();
+  const Vec3 beta = eig.eigenvectors().transpose() * b;
+  const auto norm_sq = [&](double mu) {
+    double sum = 0.0;
+    for (int k = 0; k < 3; ++k) sum += beta[k] * beta[k] / ((lambda[k] - mu) * (lambda[k] - mu));
+    return sum;
+  };
+  double lo = lambda[0] - b.norm(), hi = lambda[0];
+  for (;;) {
+    const double mid = 0.5 * (lo + hi);
+    if (mid <= lo || mid >= hi) break;
+    (norm_sq(mid) > 1.0 ? hi : lo) = mid;
+  }
+  Vec3 y;
+  for (int k = 0; k < 3; ++k) y[k] = beta[k] / (lambda[k] - lo);
+  return eig.eigenvectors() * y.normalized();
+}
+
+TEST(Metric, SphereFitMatchesTheStationarityConditions) {
+  // Covariances of every shape and scale (flat, thin, round), mean normals from tiny to
+  // dominant, and b nearly orthogonal to the lowest eigenvector (close to the hard case).
+  SplitMix64 rng(17);
+  for (int trial = 0; trial < 3000; ++trial) {
+    const Eigen::Matrix3d R = Eigen::AngleAxisd(6.0 * rng.uniform(), Vec3(rng.uniform() - 0.5, rng.uniform() - 0.5,
+                                                                          rng.uniform() - 0.5).normalized())
+                                  .toRotationMatrix();
+    const double scale = std::pow(10.0, 8.0 * rng.uniform() - 4.0);
+    const Vec3 l(std::pow(10.0, -6.0 * rng.uniform()), rng.uniform(), 1.0);
+    const Eigen::Matrix3d A = scale * (R * l.asDiagonal() * R.transpose());
+    Vec3 b = Vec3(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5);
+    if (trial % 4 == 0) b -= b.dot(R.col(0)) * R.col(0) * (1.0 - 1e-6);  // almost the hard case
+    b *= scale * std::pow(10.0, 6.0 * rng.uniform() - 3.0);
+    const Vec3 n = minimize_quadratic_on_sphere(A, b);
+    const Vec3 ref = sphere_min_by_bisection(A, b);
+    EXPECT_NEAR(n.norm(), 1.0, 1e-14);
+    // Near the hard case the minimiser is ill-conditioned (it moves by ~1e-7 where the
+    // objective moves by rounding): compare the objective there, the vector elsewhere.
+    if (trial % 4 != 0) {
+      EXPECT_LE((n - ref).norm(), 1e-12) << "trial " << trial;
+    }
+    EXPECT_LE(sphere_objective(A, b, n), sphere_objective(A, b, ref) + 1e-15 * (scale + b.norm())) << "trial " << trial;
+  }
+}
+
 TEST(Metric, SphereFitHardCaseAndPureCases) {
   // Hard case: b orthogonal to the lowest eigenvector, small enough not to reach the sphere.
   Eigen::Matrix3d A = Eigen::Vector3d(1.0, 3.0, 5.0).asDiagonal();
