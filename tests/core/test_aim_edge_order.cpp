@@ -95,12 +95,16 @@ TEST(AimEdgeOrder, ValidLayoutUnchanged) {
   EXPECT_EQ(layout.aim_edge_order(), 0);
 }
 
-// cow.off at 46 panels (the last invalid run of bench/sweep_validity.sh): the rounds and the
-// other mends left panel 18 flipped and not simple where a tooth of it sits between two
-// neighbours, every node well conditioned and near its corner; turning the neighbour plane
-// of the offending edge mends it.
+// cow.off at 46 panels (the sweep's hardest case, bench/README.md): where the rounds and the
+// other mends leave a panel flipped with every node well conditioned and near its corner,
+// turning the neighbour plane of the offending edge mends it. Seed 12: valid on the first
+// solve, and invalid without aim_edge_order (checked when the seed was chosen). The panel
+// phase is chaotic, so the seed is re-chosen when the rounds change (it was seed 1 until the
+// first round stopped re-relaxing for the tilt, panel_attempt.cpp).
 TEST(AimEdgeOrder, CowAt46EndsValid) {
-  EXPECT_TRUE(test::remeshes_valid(test::ValidRemesh{"At46", [] { return test::load_clean("cow.off"); }, 46, 0, 0.15}));
+  const std::unique_ptr<Remesher> r = test::remeshed("cow.off", 46, 12);
+  EXPECT_TRUE(test::valid_panels(*r, 46, 0.15));
+  EXPECT_EQ(r->retries_done(), 0);
 }
 
 }  // namespace
