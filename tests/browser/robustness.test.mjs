@@ -79,11 +79,18 @@ test('a load overtaken by an open that fails: the page shows, and solves, the me
     await page.waitForFunction(() => document.body.dataset.opening === 'loading', null, { timeout: 30_000, polling: 'raf' });
     await drop('broken.glb', 'glTF not really');
     // Which finishes first is up to the browser; wait until both have, and any solve too.
-    await page.waitForFunction(
-      (since) => Number(document.body.dataset.errors ?? 0) > since.errors && document.body.dataset.opening === 'false' && document.body.dataset.solving === 'false',
-      since,
-      { timeout: 30_000, polling: 20 },
-    );
+    await page
+      .waitForFunction(
+        (since) => Number(document.body.dataset.errors ?? 0) > since.errors && document.body.dataset.opening === 'false' && document.body.dataset.solving === 'false',
+        since,
+        { timeout: 30_000, polling: 20 },
+      )
+      .catch(async (error) => {
+        // Which of the three never came: say so (this wait timed out once in a full local run;
+        // alone and in its file it passed 8 of 8 times, so the cause is not known yet).
+        const state = await page.evaluate(() => ({ ...document.body.dataset, status: document.getElementById('status')?.textContent }));
+        throw new Error(`${error.message}\nsince ${JSON.stringify(since)}, page ${JSON.stringify(state)}`);
+      });
     const title = (await page.locator('#mesh-title').textContent()).trim();
     assert.ok(['Saddle (generated)', 'pringle.off'].includes(title), title);
     assert.equal(await solveAfter(page, () => remesh(page)), 6);
