@@ -9,7 +9,32 @@ namespace ff {
 
 namespace {
 constexpr double kPi = 3.14159265358979323846;
+
+Vec2 vertex_average(const std::vector<Vec2>& polygon) {
+  Vec2 sum = Vec2::Zero();
+  for (const Vec2& p : polygon) sum += p;
+  return sum / static_cast<double>(polygon.size());
 }
+
+// Whether p is at least 4 tol inside every edge's line of the counter-clockwise polygon:
+// then it lies in polygon_kernel(polygon, tol) (the points at least tol inside every line),
+// and so does the disk of radius 3 tol about it, whose area is above the tol^2 below which
+// the kernel counts as empty. Zero-length edges are skipped, as polygon_kernel skips them.
+bool clearly_in_kernel(const std::vector<Vec2>& polygon, const Vec2& p, double tol) {
+  if (!(tol > 0.0) || !p.allFinite()) return false;
+  const size_t k = polygon.size();
+  for (size_t i = 0; i < k; ++i) {
+    const Vec2& a = polygon[i];
+    const Vec2 d = polygon[(i + 1) % k] - a;
+    const double len = d.norm();
+    if (len <= 0.0) continue;
+    const Vec2 q = p - a;
+    if (!((d.x() * q.y() - d.y() * q.x()) >= 4.0 * tol * len)) return false;  // NaN: no
+  }
+  return true;
+}
+
+}  // namespace
 
 PanelIssues check_panel(const std::vector<Vec3>& points, const std::vector<Vec3>& references, const Plane& plane,
                         double spike_distance, double tolerance, double min_corner_angle_deg, bool glass) {
@@ -27,10 +52,18 @@ PanelIssues check_panel(const std::vector<Vec3>& points, const std::vector<Vec3>
   for (const Vec3& p : points) polygon.push_back(frame.to_2d(p));
   issues.not_simple = !is_simple(polygon, tolerance);
   const double area = signed_area(polygon);
-  const std::vector<Vec2> kernel = area > 0.0 ? polygon_kernel(polygon, tolerance) : std::vector<Vec2>{};
-  issues.not_star = kernel.empty();
-  const Vec2 reference = kernel.empty() ? polygon_centroid(polygon) : polygon_centroid(kernel);
-  issues.flipped = area <= 0.0 || has_flipped_edge(polygon, reference);
+  if (area > 0.0 && clearly_in_kernel(polygon, vertex_average(polygon), tolerance)) {
+    // Most panels: their vertex average lies in the kernel with room to spare, so the kernel
+    // is not empty, and seen from a point of it no edge is flipped. The clipping below would
+    // decide the same, at several times the cost.
+    issues.not_star = false;
+    issues.flipped = false;
+  } else {
+    const std::vector<Vec2> kernel = area > 0.0 ? polygon_kernel(polygon, tolerance) : std::vector<Vec2>{};
+    issues.not_star = kernel.empty();
+    const Vec2 reference = kernel.empty() ? polygon_centroid(polygon) : polygon_centroid(kernel);
+    issues.flipped = area <= 0.0 || has_flipped_edge(polygon, reference);
+  }
   // Skipped when off, so the default run does no extra work and stays bit-identical.
   if (min_corner_angle_deg > 0.0) {
     const bool split = glass && !issues.not_simple && area > 0.0;

@@ -6,9 +6,12 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <vector>
 
 #include "core/panels/panel_check.h"
+#include "core/panels/polygon2d.h"
+#include "core/util/random.h"
 
 namespace ff {
 namespace {
@@ -143,6 +146,51 @@ TEST(PanelCheck, DegenerateSliverIsNotValid) {
     const PanelIssues issues = check({{0, 0}, {1, 0}, {2, 1e-12}}, tilted);
     EXPECT_FALSE(issues.valid());
   }
+}
+
+// check_panel decides star-shape and flips by a shortcut where the vertex average lies well
+// inside every edge line: the same decisions as the kernel clipping it skips, on random
+// polygons of every kind (convex, star-shaped, not star-shaped, clockwise, slivers, and
+// sizes from far above the tolerance down to it, where the shortcut must step aside).
+TEST(PanelCheck, ShortcutDecidesAsTheKernel) {
+  SplitMix64 rng(23);
+  const double tol = 1e-9;
+  int shortcut = 0, clipped = 0;
+  for (int t = 0; t < 20000; ++t) {
+    const int k = 3 + static_cast<int>(rng.uniform() * 9);
+    const double size = std::pow(10.0, -8.5 + 9.0 * rng.uniform());  // 3e-9 .. 3
+    const double wobble = rng.uniform() < 0.5 ? 0.3 : 1.2;           // convex-ish or wild
+    Outline outline;
+    for (int i = 0; i < k; ++i) {
+      const double angle = 2.0 * 3.14159265358979 * (i + wobble * (rng.uniform() - 0.5)) / k;
+      const double radius = size * (1.0 + wobble * (rng.uniform() - 0.5));
+      outline.push_back({radius * std::cos(angle), radius * std::sin(angle) * (t % 7 == 0 ? 1e-7 : 1.0)});
+    }
+    if (t % 5 == 0) outline = reversed(outline);
+    const Placed p = place(outline, t % 2 == 1);
+    const PanelIssues issues = check_panel(p.points, p.points, p.plane, 10.0, tol);
+    // The decisions by the kernel, as check_panel made them before the shortcut.
+    const PlaneFrame frame = make_plane_frame(p.plane.offset * p.plane.normal, p.plane.normal);
+    std::vector<Vec2> polygon;
+    for (const Vec3& q : p.points) polygon.push_back(frame.to_2d(q));
+    const double area = signed_area(polygon);
+    const std::vector<Vec2> kernel = area > 0.0 ? polygon_kernel(polygon, tol) : std::vector<Vec2>{};
+    const Vec2 reference = kernel.empty() ? polygon_centroid(polygon) : polygon_centroid(kernel);
+    ASSERT_EQ(issues.not_star, kernel.empty()) << "polygon " << t;
+    ASSERT_EQ(issues.flipped, area <= 0.0 || has_flipped_edge(polygon, reference)) << "polygon " << t;
+    Vec2 average = Vec2::Zero();
+    for (const Vec2& q : polygon) average += q;
+    average /= static_cast<double>(polygon.size());
+    bool inside = area > 0.0;
+    for (size_t i = 0; i < polygon.size() && inside; ++i) {
+      const Vec2 d = polygon[(i + 1) % polygon.size()] - polygon[i];
+      inside = d.x() * (average - polygon[i]).y() - d.y() * (average - polygon[i]).x() >= 4.0 * tol * d.norm();
+    }
+    (inside ? shortcut : clipped) += 1;
+  }
+  // Both paths were taken often.
+  EXPECT_GT(shortcut, 2000);
+  EXPECT_GT(clipped, 2000);
 }
 
 }  // namespace
