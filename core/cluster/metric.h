@@ -124,6 +124,12 @@ class Metric {
 
   EnergyTerms energy(const ClusterMoments& m, const Proxy& proxy) const;
 
+  // A number no proxy's energy(m, proxy).total() falls below, as computed (rounding
+  // included): each term's own minimum (L2,1 at the mean normal's direction, the euclidean
+  // term at the centroid, L2 at 0), which their joint minimum cannot beat, less a margin for
+  // rounding. Cheap (no fit): candidate merges are ranked by it before any is fitted.
+  double energy_lower_bound(const ClusterMoments& m) const;
+
   static constexpr double kMaxWeight = 1e6;
   static constexpr double kMaxDensityWeight = 8.0;
 

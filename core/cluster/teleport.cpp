@@ -4,19 +4,11 @@
 #include <numeric>
 
 #include "core/cluster/lloyd.h"
+#include "core/cluster/merge_order.h"
 
 namespace ff {
 
 namespace {
-
-struct MergeCandidate {
-  double cost;  // energy of the union minus the energies of the two parts
-  int a, b;
-  bool operator<(const MergeCandidate& o) const {
-    if (cost != o.cost) return cost < o.cost;
-    return a != o.a ? a < o.a : b < o.b;
-  }
-};
 
 // Everything the moves need, computed in one pass over the faces.
 struct ClusterStats {
@@ -46,18 +38,10 @@ ClusterStats cluster_stats(const Metric& metric, const Clustering& c, ClusterMom
   return s;
 }
 
-std::vector<MergeCandidate> merge_candidates(const Metric& metric, const MeshTopology& topology, const Clustering& c,
-                                             const ClusterStats& s) {
-  std::vector<MergeCandidate> out;
-  for (const auto& [a, b] : adjacent_cluster_pairs(topology, c.labels)) {
-    ClusterMoments merged = s.moments[static_cast<size_t>(a)];
-    merged.add(s.moments[static_cast<size_t>(b)]);
-    const Proxy p = metric.fit(merged, c.proxies[static_cast<size_t>(a)]);
-    out.push_back(
-        {metric.energy(merged, p).total() - s.energy[static_cast<size_t>(a)] - s.energy[static_cast<size_t>(b)], a, b});
-  }
-  std::sort(out.begin(), out.end());
-  return out;
+// The candidate merges of the clusters' adjacent pairs, cheapest first (merge_order.h).
+MergeOrder merge_order(const Metric& metric, const MeshTopology& topology, const Clustering& c,
+                       const ClusterStats& s) {
+  return MergeOrder(metric, adjacent_cluster_pairs(topology, c.labels), s.moments, s.energy, c.proxies);
 }
 
 // Clusters per connected part against the part's floor (cluster_floors): a merge must not
@@ -96,12 +80,14 @@ class PartCounts {
 };
 
 // The first merge from `from` on that is free and whose part can give a cluster to part `to`
-// (merges.size() when there is none); on one part simply the first free one.
+// (null when there is none); on one part simply the first free one.
 template <typename FreePair>
-size_t first_mergeable(const std::vector<MergeCandidate>& merges, size_t from, const FreePair& free_pair,
-                       const PartCounts& parts, const Clustering& c, int to) {
-  while (from < merges.size() && !(free_pair(merges[from]) && parts.may_merge(c, merges[from].a, to))) ++from;
-  return from;
+const MergeCandidate* first_mergeable(MergeOrder& merges, size_t from, const FreePair& free_pair,
+                                      const PartCounts& parts, const Clustering& c, int to) {
+  for (const MergeCandidate* m = merges.at(from); m; m = merges.at(++from)) {
+    if (free_pair(*m) && parts.may_merge(c, m->a, to)) return m;
+  }
+  return nullptr;
 }
 
 // Clusters by decreasing energy (ties by id).
@@ -136,7 +122,7 @@ bool split_into(const Metric& metric, Clustering& c, const ClusterStats& s, int 
 int teleport(const Metric& metric, const MeshTopology& topology, Clustering& c, const TeleportOptions& options,
              ClusterMomentsCache* moments) {
   ClusterStats s = cluster_stats(metric, c, moments);
-  const std::vector<MergeCandidate> merges = merge_candidates(metric, topology, c, s);
+  MergeOrder merges = merge_order(metric, topology, c, s);
   const std::vector<int> worst = worst_first(s.energy);
   std::vector<char> used(static_cast<size_t>(c.num_clusters()), 0);
   for (int i = 0; i < c.num_clusters(); ++i) used[static_cast<size_t>(i)] = c.sticky[static_cast<size_t>(i)] > 0;
@@ -154,12 +140,12 @@ int teleport(const Metric& metric, const MeshTopology& topology, Clustering& c, 
     const auto free_pair = [&](const MergeCandidate& m) {
       return !used[static_cast<size_t>(m.a)] && !used[static_cast<size_t>(m.b)] && m.a != w && m.b != w;
     };
-    while (next_merge < merges.size() && !free_pair(merges[next_merge])) ++next_merge;
+    while (merges.at(next_merge) && !free_pair(*merges.at(next_merge))) ++next_merge;
     // The cheapest free pair whose part can give a cluster to w's.
     const int to = parts.part_of(c, w);
-    const size_t k = first_mergeable(merges, next_merge, free_pair, parts, c, to);
-    if (k == merges.size()) break;
-    const MergeCandidate& m = merges[k];
+    const MergeCandidate* found = first_mergeable(merges, next_merge, free_pair, parts, c, to);
+    if (!found) break;
+    const MergeCandidate m = *found;  // a copy: reading further may grow the order's storage
     if (!(m.cost < 0.5 * s.energy[static_cast<size_t>(w)])) break;
     used[static_cast<size_t>(w)] = used[static_cast<size_t>(m.a)] = used[static_cast<size_t>(m.b)] = 1;
     parts.merged(c, m.a, to);
@@ -175,7 +161,7 @@ int split_near(const Metric& metric, const MeshTopology& topology, Clustering& c
                const std::vector<std::pair<int, int>>& requests, const std::vector<char>& protect,
                int sticky_iterations, bool reflood_after) {
   ClusterStats s = cluster_stats(metric, c);
-  const std::vector<MergeCandidate> merges = merge_candidates(metric, topology, c, s);
+  MergeOrder merges = merge_order(metric, topology, c, s);
   std::vector<char> used(protect.begin(), protect.end());
   used.resize(static_cast<size_t>(c.num_clusters()), 0);
   std::vector<char> split(static_cast<size_t>(c.num_clusters()), 0);
@@ -193,13 +179,13 @@ int split_near(const Metric& metric, const MeshTopology& topology, Clustering& c
     const auto free_pair = [&](const MergeCandidate& m) {
       return !used[static_cast<size_t>(m.a)] && !used[static_cast<size_t>(m.b)];
     };
-    while (next_merge < merges.size() && !free_pair(merges[next_merge])) ++next_merge;
-    if (next_merge == merges.size()) break;  // nothing left to merge: n stays as asked
+    while (merges.at(next_merge) && !free_pair(*merges.at(next_merge))) ++next_merge;
+    if (!merges.at(next_merge)) break;  // nothing left to merge: n stays as asked
     // The cheapest free pair whose part can give a cluster to w's.
     const int to = parts.part_of(c, w);
-    const size_t k = first_mergeable(merges, next_merge, free_pair, parts, c, to);
-    if (k == merges.size()) continue;  // no part can spare one for this request
-    const MergeCandidate& m = merges[k];
+    const MergeCandidate* found = first_mergeable(merges, next_merge, free_pair, parts, c, to);
+    if (!found) continue;  // no part can spare one for this request
+    const MergeCandidate m = *found;
     used[static_cast<size_t>(m.a)] = used[static_cast<size_t>(m.b)] = 1;
     parts.merged(c, m.a, to);
     merge_into(metric, c, s, m.a, m.b);
@@ -277,15 +263,15 @@ void add_clusters(const Metric& metric, const MeshTopology& topology, Clustering
 void remove_clusters(const Metric& metric, const MeshTopology& topology, Clustering& c, int count) {
   while (count > 0) {
     ClusterStats s = cluster_stats(metric, c);
-    const std::vector<MergeCandidate> merges = merge_candidates(metric, topology, c, s);
+    MergeOrder merges = merge_order(metric, topology, c, s);
     const int n = c.num_clusters();
     std::vector<char> used(static_cast<size_t>(n), 0), gone(static_cast<size_t>(n), 0);
     PartCounts parts(topology, c, n - count);
     int merged = 0;
     // Cheapest disjoint pairs first, at most half of what is left per pass; none that takes
     // its part below its floor.
-    for (const MergeCandidate& m : merges) {
-      if (merged == count) break;
+    for (size_t i = 0; merged < count && merges.at(i); ++i) {
+      const MergeCandidate m = *merges.at(i);
       if (used[static_cast<size_t>(m.a)] || used[static_cast<size_t>(m.b)]) continue;
       if (!parts.may_merge(c, m.a, -1)) continue;
       parts.merged(c, m.a, -1);
