@@ -9,31 +9,6 @@ namespace ff {
 
 namespace {
 constexpr double kPi = 3.14159265358979323846;
-
-Vec2 vertex_average(const std::vector<Vec2>& polygon) {
-  Vec2 sum = Vec2::Zero();
-  for (const Vec2& p : polygon) sum += p;
-  return sum / static_cast<double>(polygon.size());
-}
-
-// Whether p is at least 4 tol inside every edge's line of the counter-clockwise polygon:
-// then it lies in polygon_kernel(polygon, tol) (the points at least tol inside every line),
-// and so does the disk of radius 3 tol about it, whose area is above the tol^2 below which
-// the kernel counts as empty. Zero-length edges are skipped, as polygon_kernel skips them.
-bool clearly_in_kernel(const std::vector<Vec2>& polygon, const Vec2& p, double tol) {
-  if (!(tol > 0.0) || !p.allFinite()) return false;
-  const size_t k = polygon.size();
-  for (size_t i = 0; i < k; ++i) {
-    const Vec2& a = polygon[i];
-    const Vec2 d = polygon[(i + 1) % k] - a;
-    const double len = d.norm();
-    if (len <= 0.0) continue;
-    const Vec2 q = p - a;
-    if (!((d.x() * q.y() - d.y() * q.x()) >= 4.0 * tol * len)) return false;  // NaN: no
-  }
-  return true;
-}
-
 }  // namespace
 
 PanelIssues check_panel(const std::vector<Vec3>& points, const std::vector<Vec3>& references, const Plane& plane,

@@ -87,11 +87,16 @@ double signed_area(const std::vector<Vec2>& polygon) {
   return 0.5 * sum;
 }
 
+Vec2 vertex_average(const std::vector<Vec2>& polygon) {
+  if (polygon.empty()) return Vec2::Zero();
+  Vec2 sum = Vec2::Zero();
+  for (const Vec2& p : polygon) sum += p;
+  return sum / static_cast<double>(polygon.size());
+}
+
 Vec2 polygon_centroid(const std::vector<Vec2>& polygon) {
   if (polygon.empty()) return Vec2::Zero();
-  Vec2 average = Vec2::Zero();
-  for (const Vec2& p : polygon) average += p;
-  average /= static_cast<double>(polygon.size());
+  const Vec2 average = vertex_average(polygon);
   double area2 = 0.0;
   Vec2 moment = Vec2::Zero();
   const Vec2& o = polygon[0];
@@ -175,14 +180,21 @@ bool is_star_shaped(const std::vector<Vec2>& ccw_polygon, double tol) {
   return !polygon_kernel(ccw_polygon, tol).empty();
 }
 
+bool clearly_in_kernel(const std::vector<Vec2>& ccw_polygon, const Vec2& p, double tol) {
+  if (!(tol > 0.0) || !p.allFinite()) return false;
+  for (size_t i = 0; i < ccw_polygon.size(); ++i) {
+    const Vec2& a = ccw_polygon[i];
+    const Vec2& b = at(ccw_polygon, i + 1);
+    const double len = (b - a).norm();
+    if (len <= 0.0) continue;
+    if (!(orient2d(a, b, p) >= 4.0 * tol * len)) return false;  // NaN: no
+  }
+  return true;
+}
+
 Vec2 kernel_point(const std::vector<Vec2>& ccw_polygon, double tol) {
   const std::vector<Vec2> kernel = polygon_kernel(ccw_polygon, tol);
-  if (kernel.empty()) {
-    Vec2 average = Vec2::Zero();
-    for (const Vec2& p : ccw_polygon) average += p;
-    return ccw_polygon.empty() ? average : Vec2(average / static_cast<double>(ccw_polygon.size()));
-  }
-  return polygon_centroid(kernel);
+  return kernel.empty() ? vertex_average(ccw_polygon) : polygon_centroid(kernel);
 }
 
 namespace {

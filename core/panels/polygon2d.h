@@ -45,6 +45,9 @@ inline double orient2d(const Vec2& a, const Vec2& b, const Vec2& c) {
 // Shoelace area; positive = counter-clockwise.
 double signed_area(const std::vector<Vec2>& polygon);
 
+// The mean of the vertices; zero for an empty list.
+Vec2 vertex_average(const std::vector<Vec2>& polygon);
+
 // Area centroid; the vertex average when the area is (near) zero. Zero for an empty list.
 Vec2 polygon_centroid(const std::vector<Vec2>& polygon);
 
@@ -62,6 +65,13 @@ bool is_simple(const std::vector<Vec2>& polygon, double tol);
 // A clockwise polygon has an empty kernel.
 std::vector<Vec2> polygon_kernel(const std::vector<Vec2>& ccw_polygon, double tol);
 bool is_star_shaped(const std::vector<Vec2>& ccw_polygon, double tol);
+
+// Whether p lies at least 4 tol inside every edge's line of the counter-clockwise polygon
+// (tol > 0): then p is in polygon_kernel(polygon, tol), and so is the disk of radius 3 tol
+// about it, whose area is above the tol^2 below which the kernel counts as empty. A cheap
+// sufficient test, no clipping: the panel check asks it first. Zero-length edges are
+// skipped, as polygon_kernel skips them.
+bool clearly_in_kernel(const std::vector<Vec2>& ccw_polygon, const Vec2& p, double tol);
 
 // The centroid of polygon_kernel(): a point well inside the kernel for flip detection. When
 // the kernel is empty, the vertex average (check is_star_shaped() to tell the two apart, or

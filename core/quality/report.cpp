@@ -254,10 +254,7 @@ QualityReport measure_quality(const TriMesh& input, const MeshTopology& input_to
 
     const bool simple = is_simple(poly2d, tol);
     const std::vector<Vec2> kernel = polygon_kernel(poly2d, tol);
-    Vec2 reference = Vec2::Zero();
-    for (const Vec2& q : poly2d) reference += q;
-    if (!poly2d.empty()) reference /= static_cast<double>(poly2d.size());
-    if (!kernel.empty()) reference = polygon_centroid(kernel);
+    const Vec2 reference = kernel.empty() ? vertex_average(poly2d) : polygon_centroid(kernel);
     const std::vector<int> flipped_starts = flipped_edges(poly2d, reference);
     const int flipped = static_cast<int>(flipped_starts.size());
     for (const int i : flipped_starts)

@@ -178,15 +178,7 @@ TEST(PanelCheck, ShortcutDecidesAsTheKernel) {
     const Vec2 reference = kernel.empty() ? polygon_centroid(polygon) : polygon_centroid(kernel);
     ASSERT_EQ(issues.not_star, kernel.empty()) << "polygon " << t;
     ASSERT_EQ(issues.flipped, area <= 0.0 || has_flipped_edge(polygon, reference)) << "polygon " << t;
-    Vec2 average = Vec2::Zero();
-    for (const Vec2& q : polygon) average += q;
-    average /= static_cast<double>(polygon.size());
-    bool inside = area > 0.0;
-    for (size_t i = 0; i < polygon.size() && inside; ++i) {
-      const Vec2 d = polygon[(i + 1) % polygon.size()] - polygon[i];
-      inside = d.x() * (average - polygon[i]).y() - d.y() * (average - polygon[i]).x() >= 4.0 * tol * d.norm();
-    }
-    (inside ? shortcut : clipped) += 1;
+    (area > 0.0 && clearly_in_kernel(polygon, vertex_average(polygon), tol) ? shortcut : clipped) += 1;
   }
   // Both paths were taken often.
   EXPECT_GT(shortcut, 2000);
