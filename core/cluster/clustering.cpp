@@ -1,6 +1,8 @@
 #include "core/cluster/clustering.h"
 
 #include <algorithm>
+#include <array>
+#include <cstddef>
 #include <limits>
 
 namespace ff {
@@ -68,14 +70,41 @@ void choose_seeds(const Metric& metric, Clustering& clustering) {
 }
 
 std::vector<std::pair<int, int>> adjacent_cluster_pairs(const MeshTopology& topology, const std::vector<int>& labels) {
-  std::vector<std::pair<int, int>> pairs;
+  // Each pair shows up once per edge it shares (tens of times): rather than sort them all,
+  // list each smaller label's larger neighbours (a counting sort by the smaller label), keep
+  // each once, and sort only those short lists.
+  int clusters = 0;
+  for (int l : labels) clusters = std::max(clusters, l + 1);
+  const auto pair_at = [&](const std::array<int, 2>& ef, int& a, int& b) {
+    if (ef[1] < 0) return false;
+    a = labels[static_cast<size_t>(ef[0])], b = labels[static_cast<size_t>(ef[1])];
+    if (a == b || a < 0 || b < 0) return false;
+    if (a > b) std::swap(a, b);
+    return true;
+  };
+  std::vector<int> start(static_cast<size_t>(clusters) + 1, 0);
+  int a = 0, b = 0;
   for (const auto& ef : topology.edge_faces) {
-    if (ef[1] < 0) continue;
-    const int a = labels[static_cast<size_t>(ef[0])], b = labels[static_cast<size_t>(ef[1])];
-    if (a != b && a >= 0 && b >= 0) pairs.emplace_back(std::min(a, b), std::max(a, b));
+    if (pair_at(ef, a, b)) ++start[static_cast<size_t>(a) + 1];
   }
-  std::sort(pairs.begin(), pairs.end());
-  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  for (size_t i = 1; i < start.size(); ++i) start[i] += start[i - 1];
+  std::vector<int> larger(static_cast<size_t>(start.back()));
+  std::vector<int> fill(start.begin(), start.end() - 1);
+  for (const auto& ef : topology.edge_faces) {
+    if (pair_at(ef, a, b)) larger[static_cast<size_t>(fill[static_cast<size_t>(a)]++)] = b;
+  }
+  std::vector<std::pair<int, int>> pairs;
+  std::vector<int> listed_by(static_cast<size_t>(clusters), -1);  // the last smaller label that kept b
+  for (int i = 0; i < clusters; ++i) {
+    const size_t first = pairs.size();
+    for (int k = start[static_cast<size_t>(i)]; k < start[static_cast<size_t>(i) + 1]; ++k) {
+      const int j = larger[static_cast<size_t>(k)];
+      if (listed_by[static_cast<size_t>(j)] == i) continue;
+      listed_by[static_cast<size_t>(j)] = i;
+      pairs.emplace_back(i, j);
+    }
+    std::sort(pairs.begin() + static_cast<std::ptrdiff_t>(first), pairs.end());
+  }
   return pairs;
 }
 

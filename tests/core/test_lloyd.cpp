@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 #include <set>
+#include <utility>
+#include <vector>
 
 #include "cluster_checks.h"
 #include "core/cluster/flood.h"
@@ -13,7 +15,9 @@
 #include "core/cluster/seeding.h"
 #include "core/cluster/teleport.h"
 #include "core/shapes/shapes.h"
+#include "core/util/random.h"
 #include "synthetic_meshes.h"
+#include "test_meshes.h"
 
 namespace ff {
 namespace {
@@ -196,6 +200,38 @@ TEST(Clustering, InvariantsHoldOnHardInputs) {
       }
     }
   }
+}
+
+TEST(Clustering, AdjacentPairsAreTheSortedDistinctPairsAcrossEdges) {
+  const TriMesh mesh = test::load_clean("bunny.off");
+  const MeshTopology topo = build_topology(mesh);
+  const FaceData fd = make_face_data(mesh);
+  SplitMix64 rng(5);
+  for (int n : {1, 2, 37, 200, 3000}) {
+    const Metric metric(fd, MetricWeights{}, n);
+    Clustering c = initial_clustering(metric, topo, place_seeds(fd, topo, n, SeedingMethod::FarthestPoint, 4));
+    for (int variant = 0; variant < 3; ++variant) {
+      std::vector<int> labels = c.labels;
+      if (variant == 1) {  // some faces unassigned
+        for (int& l : labels) l = rng.below(5) == 0 ? -1 : l;
+      } else if (variant == 2) {  // scattered labels: many distinct pairs, few repeats
+        for (int& l : labels) l = static_cast<int>(rng.below(static_cast<std::uint64_t>(n)));
+      }
+      std::vector<std::pair<int, int>> expected;
+      for (const auto& ef : topo.edge_faces) {
+        if (ef[1] < 0) continue;
+        const int a = labels[static_cast<size_t>(ef[0])], b = labels[static_cast<size_t>(ef[1])];
+        if (a != b && a >= 0 && b >= 0) expected.emplace_back(std::min(a, b), std::max(a, b));
+      }
+      std::sort(expected.begin(), expected.end());
+      expected.erase(std::unique(expected.begin(), expected.end()), expected.end());
+      EXPECT_EQ(adjacent_cluster_pairs(topo, labels), expected) << "n=" << n << " variant " << variant;
+      if (n > 1) {
+        EXPECT_FALSE(expected.empty());
+      }
+    }
+  }
+  EXPECT_TRUE(adjacent_cluster_pairs(topo, std::vector<int>(static_cast<size_t>(mesh.num_faces()), -1)).empty());
 }
 
 }  // namespace

@@ -287,6 +287,63 @@ TEST(Polygon2d, RandomStarShapedPolygonsUpTo2000Vertices) {
   }
 }
 
+// is_simple's definition checked pair by pair, with no pruning: no edge of length <= tol, no
+// two non-adjacent edges within tol, no two adjacent edges folding back within tol.
+double reference_segment_distance(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
+  const double o1 = orient2d(a, b, c), o2 = orient2d(a, b, d), o3 = orient2d(c, d, a), o4 = orient2d(c, d, b);
+  if (((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) && ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0))) return 0.0;
+  return std::min(std::min(distance_point_segment(a, c, d), distance_point_segment(b, c, d)),
+                  std::min(distance_point_segment(c, a, b), distance_point_segment(d, a, b)));
+}
+bool reference_is_simple(const Poly& p, double tol) {
+  const size_t k = p.size();
+  if (k < 3) return false;
+  for (size_t i = 0; i < k; ++i) {
+    if ((p[(i + 1) % k] - p[i]).norm() <= tol) return false;
+  }
+  for (size_t i = 0; i < k; ++i) {
+    for (size_t j = i + 1; j < k; ++j) {
+      const Vec2 &a = p[i], &b = p[(i + 1) % k], &c = p[j], &d = p[(j + 1) % k];
+      if (j == i + 1) {  // a -> b=c -> d
+        if (distance_point_segment(a, c, d) <= tol || distance_point_segment(d, a, b) <= tol) return false;
+      } else if ((j + 1) % k == i) {  // c -> d=a -> b
+        if (distance_point_segment(c, a, b) <= tol || distance_point_segment(b, c, d) <= tol) return false;
+      } else if (reference_segment_distance(a, b, c, d) <= tol) {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+TEST(Polygon2d, IsSimpleMatchesThePairwiseDefinitionBelowAndAboveTheSmallPath) {
+  // Star-shaped polygons with a few vertices thrown elsewhere, on a coarse grid so that
+  // touching, collinear and repeated vertices come up; few vertices (every pair looked at)
+  // and more (the sweep).
+  SplitMix64 rng(7);
+  int simple[2] = {0, 0}, not_simple[2] = {0, 0};
+  for (int trial = 0; trial < 20000; ++trial) {
+    const int k = 3 + static_cast<int>(rng.below(18));
+    Poly p = random_star_shaped(k, 1000 + static_cast<std::uint64_t>(trial));
+    const int moves = static_cast<int>(rng.below(3));
+    for (int m = 0; m < moves; ++m) {
+      p[rng.below(p.size())] = Vec2(3.0 * rng.uniform() - 1.5, 3.0 * rng.uniform() - 1.5);
+    }
+    if (trial % 2 == 0) {
+      for (Vec2& q : p) q = (q * 8.0).array().round().matrix() / 8.0;
+    }
+    for (double tol : {0.0, 1e-3, 0.05}) {
+      const bool expected = reference_is_simple(p, tol);
+      ASSERT_EQ(is_simple(p, tol), expected) << "trial " << trial << " k " << k << " tol " << tol;
+      (expected ? simple : not_simple)[k > 12] += 1;
+    }
+  }
+  for (int large = 0; large < 2; ++large) {  // both answers, on both paths
+    EXPECT_GT(simple[large], 2000) << large;
+    EXPECT_GT(not_simple[large], 2000) << large;
+  }
+}
+
 TEST(Polygon2d, PlaneFrameRoundTrip) {
   SplitMix64 rng(3);
   const auto r = [&] { return 2 * rng.uniform() - 1; };
