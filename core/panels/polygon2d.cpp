@@ -123,12 +123,15 @@ struct EdgeBox {
 // Whether box e comes before box f in the sweep's order: by lo_x, then by edge.
 bool sweeps_before(const EdgeBox& e, const EdgeBox& f) { return e.lo_x < f.lo_x || (e.lo_x == f.lo_x && e.edge < f.edge); }
 
-// For edges e and f, e first in the sweep's order: whether they come within tol of each other
-// where a simple polygon's edges must not (is_simple). Boxes apart by more than tol in x or
-// y are not looked at further.
+// Whether the boxes of e and f (e first in the sweep's order) come within tol in y and in x
+// (the sweep reaches f from e only when f.lo_x <= e.hi_x + tol).
+bool boxes_near(const EdgeBox& e, const EdgeBox& f, double tol) {
+  return f.lo_x <= e.hi_x + tol && f.lo_y <= e.hi_y + tol && e.lo_y <= f.hi_y + tol;
+}
+
+// For edges e and f whose boxes are near, e first in the sweep's order: whether they come
+// within tol of each other where a simple polygon's edges must not (is_simple).
 bool edges_too_close(const std::vector<Vec2>& polygon, const EdgeBox& e, const EdgeBox& f, double tol) {
-  if (f.lo_x > e.hi_x + tol) return false;
-  if (f.lo_y > e.hi_y + tol || e.lo_y > f.hi_y + tol) return false;
   const size_t k = polygon.size();
   size_t i = e.edge, j = f.edge;
   if ((i + 1) % k == j || (j + 1) % k == i) {
@@ -165,7 +168,9 @@ bool is_simple(const std::vector<Vec2>& polygon, double tol) {
     for (size_t s = 0; s < k; ++s) {
       for (size_t t = s + 1; t < k; ++t) {
         const bool in_order = sweeps_before(boxes[s], boxes[t]);
-        if (edges_too_close(polygon, in_order ? boxes[s] : boxes[t], in_order ? boxes[t] : boxes[s], tol)) return false;
+        const EdgeBox& e = in_order ? boxes[s] : boxes[t];
+        const EdgeBox& f = in_order ? boxes[t] : boxes[s];
+        if (boxes_near(e, f, tol) && edges_too_close(polygon, e, f, tol)) return false;
       }
     }
     return true;
@@ -174,7 +179,7 @@ bool is_simple(const std::vector<Vec2>& polygon, double tol) {
   std::sort(large.begin(), large.end(), sweeps_before);
   for (size_t s = 0; s < k; ++s) {
     for (size_t t = s + 1; t < k && large[t].lo_x <= large[s].hi_x + tol; ++t) {
-      if (edges_too_close(polygon, large[s], large[t], tol)) return false;
+      if (boxes_near(large[s], large[t], tol) && edges_too_close(polygon, large[s], large[t], tol)) return false;
     }
   }
   return true;
