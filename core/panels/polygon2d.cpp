@@ -112,74 +112,38 @@ Vec2 polygon_centroid(const std::vector<Vec2>& polygon) {
   return moment / area2;
 }
 
-namespace {
-
-// An edge's bounding box, and the edge (its first vertex).
-struct EdgeBox {
-  double lo_x, hi_x, lo_y, hi_y;
-  size_t edge;
-};
-
-// Whether box e comes before box f in the sweep's order: by lo_x, then by edge.
-bool sweeps_before(const EdgeBox& e, const EdgeBox& f) { return e.lo_x < f.lo_x || (e.lo_x == f.lo_x && e.edge < f.edge); }
-
-// Whether the boxes of e and f (e first in the sweep's order) come within tol in y and in x
-// (the sweep reaches f from e only when f.lo_x <= e.hi_x + tol).
-bool boxes_near(const EdgeBox& e, const EdgeBox& f, double tol) {
-  return f.lo_x <= e.hi_x + tol && f.lo_y <= e.hi_y + tol && e.lo_y <= f.hi_y + tol;
-}
-
-// For edges e and f whose boxes are near, e first in the sweep's order: whether they come
-// within tol of each other where a simple polygon's edges must not (is_simple).
-bool edges_too_close(const std::vector<Vec2>& polygon, const EdgeBox& e, const EdgeBox& f, double tol) {
-  const size_t k = polygon.size();
-  size_t i = e.edge, j = f.edge;
-  if ((i + 1) % k == j || (j + 1) % k == i) {
-    if ((j + 1) % k == i) std::swap(i, j);
-    // Adjacent edges p->q->r share q; they fold back when an end lies on the other.
-    const Vec2& p = polygon[i];
-    const Vec2& q = polygon[j];
-    const Vec2& r = at(polygon, j + 1);
-    return distance_point_segment(p, q, r) <= tol || distance_point_segment(r, p, q) <= tol;
-  }
-  return segment_distance(polygon[i], at(polygon, i + 1), polygon[j], at(polygon, j + 1)) <= tol;
-}
-
-}  // namespace
-
 bool is_simple(const std::vector<Vec2>& polygon, double tol) {
   const size_t k = polygon.size();
   if (k < 3) return false;
-  // Most panels have a handful of edges: there every pair is looked at, with the boxes on the
-  // stack (no allocation, no sort: the panel checks call this once per panel and layout). A
-  // pair is judged by the same test either way, so the answer is the same.
-  constexpr size_t kSmall = 12;
-  EdgeBox small[kSmall];
-  std::vector<EdgeBox> large;
-  if (k > kSmall) large.resize(k);
-  EdgeBox* boxes = k > kSmall ? large.data() : small;
+  struct Box {
+    double lo_x, hi_x, lo_y, hi_y;
+    size_t edge;
+  };
+  std::vector<Box> boxes(k);
   for (size_t i = 0; i < k; ++i) {
     const Vec2& a = polygon[i];
     const Vec2& b = at(polygon, i + 1);
     if (!a.allFinite() || (b - a).norm() <= tol) return false;
     boxes[i] = {std::min(a.x(), b.x()), std::max(a.x(), b.x()), std::min(a.y(), b.y()), std::max(a.y(), b.y()), i};
   }
-  if (k <= kSmall) {
-    for (size_t s = 0; s < k; ++s) {
-      for (size_t t = s + 1; t < k; ++t) {
-        const bool in_order = sweeps_before(boxes[s], boxes[t]);
-        const EdgeBox& e = in_order ? boxes[s] : boxes[t];
-        const EdgeBox& f = in_order ? boxes[t] : boxes[s];
-        if (boxes_near(e, f, tol) && edges_too_close(polygon, e, f, tol)) return false;
-      }
-    }
-    return true;
-  }
-  // A sweep over x: a box meets only the boxes that start before it ends.
-  std::sort(large.begin(), large.end(), sweeps_before);
+  std::sort(boxes.begin(), boxes.end(),
+            [](const Box& l, const Box& r) { return l.lo_x < r.lo_x || (l.lo_x == r.lo_x && l.edge < r.edge); });
   for (size_t s = 0; s < k; ++s) {
-    for (size_t t = s + 1; t < k && large[t].lo_x <= large[s].hi_x + tol; ++t) {
-      if (boxes_near(large[s], large[t], tol) && edges_too_close(polygon, large[s], large[t], tol)) return false;
+    const Box& e = boxes[s];
+    for (size_t t = s + 1; t < k && boxes[t].lo_x <= e.hi_x + tol; ++t) {
+      const Box& f = boxes[t];
+      if (f.lo_y > e.hi_y + tol || e.lo_y > f.hi_y + tol) continue;
+      size_t i = e.edge, j = f.edge;
+      if ((i + 1) % k == j || (j + 1) % k == i) {
+        if ((j + 1) % k == i) std::swap(i, j);
+        // Adjacent edges p->q->r share q; they fold back when an end lies on the other.
+        const Vec2& p = polygon[i];
+        const Vec2& q = polygon[j];
+        const Vec2& r = at(polygon, j + 1);
+        if (distance_point_segment(p, q, r) <= tol || distance_point_segment(r, p, q) <= tol) return false;
+      } else if (segment_distance(polygon[i], at(polygon, i + 1), polygon[j], at(polygon, j + 1)) <= tol) {
+        return false;
+      }
     }
   }
   return true;

@@ -316,10 +316,9 @@ bool reference_is_simple(const Poly& p, double tol) {
   return true;
 }
 
-TEST(Polygon2d, IsSimpleMatchesThePairwiseDefinitionBelowAndAboveTheSmallPath) {
+TEST(Polygon2d, IsSimpleMatchesThePairwiseDefinition) {
   // Star-shaped polygons with a few vertices thrown elsewhere, on a coarse grid so that
-  // touching, collinear and repeated vertices come up; few vertices (every pair looked at)
-  // and more (the sweep).
+  // touching, collinear and repeated vertices come up; up to 12 vertices and more.
   SplitMix64 rng(7);
   int simple[2] = {0, 0}, not_simple[2] = {0, 0};
   for (int trial = 0; trial < 20000; ++trial) {
@@ -338,7 +337,7 @@ TEST(Polygon2d, IsSimpleMatchesThePairwiseDefinitionBelowAndAboveTheSmallPath) {
       (expected ? simple : not_simple)[k > 12] += 1;
     }
   }
-  for (int large = 0; large < 2; ++large) {  // both answers, on both paths
+  for (int large = 0; large < 2; ++large) {  // both answers, small polygons and larger
     EXPECT_GT(simple[large], 2000) << large;
     EXPECT_GT(not_simple[large], 2000) << large;
   }
