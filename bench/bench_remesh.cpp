@@ -1,7 +1,8 @@
 // bench_remesh: the whole remeshing process, ours against CGAL's Variational Shape
 // Approximation with its mesh extraction, at equal panel count (bench/README.md).
 //
-//   bench_remesh                  full run, Markdown tables on stdout
+//   bench_remesh                  full run, Markdown tables on stdout (with the table over
+//                                 seeds 1-8; --seeds N for another count, 0 for none)
 //   bench_remesh --smoke          a ~3k-triangle saddle into 40 panels, one run of each side;
 //                                 exits non-zero when either side fails (scripts/test.sh)
 //   bench_remesh --only ours|cgal --case CASE [--no-quality]
@@ -37,12 +38,13 @@ using namespace ff::bench;
 struct Options : BenchOptions {
   bool quality = true;             // --no-quality: the child skips the quality report
   double subdivision_ratio = 5.0;  // CGAL's default for extract_mesh
+  int seeds = -1;                  // --seeds N: the table over seeds 1..N; default 8, none with --smoke
 };
 
 void usage() {
   std::fprintf(stderr,
                "usage: bench_remesh [--smoke] [--cases a,b,...] [--meshes DIR] [--seed S] [--repeat R]\n"
-               "                    [--subdivision-ratio R]\n"
+               "                    [--subdivision-ratio R] [--seeds N]\n"
                "       bench_remesh --only ours|cgal --case CASE [--meshes DIR] [--seed S] [--no-quality]\n"
                "                    [--subdivision-ratio R]\n"
                "cases: hyperboloid inspired bunny fandisk face saddle torus, or saddle:TRIANGLES:PANELS,\n"
@@ -60,6 +62,12 @@ int main(int argc, char** argv) {
       o.subdivision_ratio = std::strtod(value().c_str(), nullptr);
       if (!(o.subdivision_ratio > 0.0)) {
         std::fprintf(stderr, "bench_remesh: --subdivision-ratio must be positive\n");
+        return Flag::Invalid;
+      }
+    } else if (flag == "--seeds") {
+      o.seeds = std::atoi(value().c_str());
+      if (o.seeds < 0 || o.seeds > 1000) {
+        std::fprintf(stderr, "bench_remesh: --seeds must be between 0 and 1000\n");
         return Flag::Invalid;
       }
     } else {
@@ -87,7 +95,8 @@ int main(int argc, char** argv) {
         return 2;
       }
     }
-    return print_remesh_report(cases, o, o.subdivision_ratio, exe);
+    const int seeds = o.seeds >= 0 ? o.seeds : (o.smoke ? 0 : 8);
+    return print_remesh_report(cases, o, o.subdivision_ratio, exe, seeds);
   };
   return bench_main(argc, argv, o, {"bench_remesh", usage, own_flag, run_only, table});
 }

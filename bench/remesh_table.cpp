@@ -6,6 +6,7 @@
 
 #include "bench/remesh_child.h"
 #include "bench/remesh_measure.h"
+#include "bench/remesh_seeds.h"
 #include "bench/report_text.h"
 
 namespace ff::bench {
@@ -44,7 +45,7 @@ double geometric_mean(const std::vector<double>& v) {
 }  // namespace
 
 int print_remesh_report(const std::vector<RemeshCase>& cases, const BenchOptions& o, double subdivision_ratio,
-                        const std::string& exe) {
+                        const std::string& exe, int seeds) {
   const int repeat = o.smoke ? 1 : std::max(1, o.repeat);
   bool with_cgal = false;
 #ifdef FF_HAVE_CGAL
@@ -232,6 +233,11 @@ int print_remesh_report(const std::vector<RemeshCase>& cases, const BenchOptions
           "Target whole process no slower than CGAL VSA clustering + extraction (DESIGN.md 7): %d of %d inputs.\n",
           faster, compared);
     }
+  }
+  if (seeds > 0) {
+    std::printf("\n");
+    print_seed_table(cases, o.meshes, SeedRunOptions{seeds, repeat, subdivision_ratio, with_cgal}, exe, notes,
+                     failures);
   }
   std::printf("\nLoad average (1, 5, 15 min) at the end: %s.\n", load_average().c_str());
   return finish_report("bench_remesh", notes, failures);

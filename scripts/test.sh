@@ -17,7 +17,7 @@ cmake --build build/release -j"$jobs"
 
 echo "== benchmark smoke runs"
 build/release/bench/bench_cluster --smoke
-build/release/bench/bench_remesh --smoke
+build/release/bench/bench_remesh --smoke --seeds 2
 
 echo "== WebAssembly and web build (wasm modules, site in web/dist, strict type check)"
 npm run --silent build

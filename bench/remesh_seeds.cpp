@@ -1,0 +1,104 @@
+#include "bench/remesh_seeds.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "bench/bench_options.h"
+#include "bench/remesh_measure.h"
+#include "bench/report_text.h"
+
+namespace ff::bench {
+
+namespace {
+
+// One side's runs of one case, a value per seed that ran.
+struct SeedRuns {
+  std::vector<double> time, hausdorff, rounds;
+  int valid = 0, ran = 0;
+  void add(const Measured& m, bool ours) {
+    if (!m.ok || !m.quality_error.empty()) return;
+    ++ran;
+    const double unbuilt = m.has("unbuilt") ? m.num("unbuilt") : 0.0;
+    valid += m.num("invalid") + unbuilt == 0 ? 1 : 0;
+    time.push_back(m.total());
+    hausdorff.push_back(m.num("hausdorff"));
+    if (ours) rounds.push_back(m.num("panel_rounds"));
+  }
+};
+
+double median(std::vector<double> v) {
+  if (v.empty()) return NAN;
+  std::sort(v.begin(), v.end());
+  const size_t h = v.size() / 2;
+  return v.size() % 2 == 1 ? v[h] : 0.5 * (v[h - 1] + v[h]);
+}
+
+double largest(const std::vector<double>& v) { return v.empty() ? NAN : *std::max_element(v.begin(), v.end()); }
+
+std::string pair(const std::string& a, const std::string& b) { return a + " / " + b; }
+
+}  // namespace
+
+void print_seed_table(const std::vector<RemeshCase>& cases, const std::string& meshes, const SeedRunOptions& options,
+                      const std::string& exe, std::vector<std::string>& notes, int& failures) {
+  if (options.seeds <= 0) return;
+  std::printf("### Over seeds 1-%d\n\n", options.seeds);
+  std::printf(
+      "Each input at seeds 1-%d, both sides at each seed (CGAL's random seeding takes the seed too); time = the "
+      "fastest of %d run%s per seed, read + clean + solve as above; Hausdorff from the first run.\n\n",
+      options.seeds, options.repeat, options.repeat == 1 ? "" : "s");
+  std::printf(
+      "| input | n | valid ours / CGAL | time s median ours / CGAL | median ratio | time s worst ours / CGAL | "
+      "worst ratio | Hausdorff median ours / CGAL | ours: panel rounds median (max) | ours: time s per seed |\n");
+  std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---|\n");
+  std::fflush(stdout);
+  int compared = 0, median_faster = 0, worst_faster = 0;
+  for (const RemeshCase& c : cases) {
+    if (mesh_file_missing(meshes, c.file, c.label, notes)) continue;
+    SeedRuns ours, cgal;
+    std::string per_seed;
+    for (int seed = 1; seed <= options.seeds; ++seed) {
+      const auto s = static_cast<std::uint64_t>(seed);
+      const Measured a = measure(exe, "ours", c, meshes, s, options.repeat, options.subdivision_ratio);
+      if (!a.ok || !a.quality_error.empty()) {
+        ++failures;
+        notes.push_back(c.label + " seed " + std::to_string(seed) +
+                        ": ours failed: " + (a.ok ? a.quality_error : a.error));
+      }
+      ours.add(a, true);
+      per_seed += (per_seed.empty() ? "" : " ") + (a.ok ? fmt("%.3f", a.total()) : std::string("failed"));
+      if (!options.with_cgal) continue;
+      const Measured b = measure(exe, "cgal", c, meshes, s, options.repeat, options.subdivision_ratio);
+      if (!b.ok || !b.quality_error.empty())
+        notes.push_back(c.label + " seed " + std::to_string(seed) +
+                        ": CGAL failed: " + (b.ok ? b.quality_error : b.error));
+      cgal.add(b, false);
+    }
+    const double m_ours = median(ours.time), m_cgal = median(cgal.time);
+    const double w_ours = largest(ours.time), w_cgal = largest(cgal.time);
+    if (ours.ran > 0 && cgal.ran > 0) {
+      ++compared;
+      median_faster += m_ours <= m_cgal ? 1 : 0;
+      worst_faster += w_ours <= w_cgal ? 1 : 0;
+    }
+    const std::string cgal_valid = options.with_cgal ? std::to_string(cgal.valid) + "/" + std::to_string(cgal.ran) : "-";
+    std::printf("| %s | %d | %s | %s | %s | %s | %s | %s | %s (%s) | %s |\n", c.label.c_str(), c.panels,
+                pair(std::to_string(ours.valid) + "/" + std::to_string(ours.ran), cgal_valid).c_str(),
+                pair(fmt("%.3f", m_ours), fmt("%.3f", m_cgal)).c_str(), fmt("%.2f", m_ours / m_cgal).c_str(),
+                pair(fmt("%.3f", w_ours), fmt("%.3f", w_cgal)).c_str(), fmt("%.2f", w_ours / w_cgal).c_str(),
+                pair(fmt("%.5f", median(ours.hausdorff)), fmt("%.5f", median(cgal.hausdorff))).c_str(),
+                fmt("%.0f", median(ours.rounds)).c_str(), fmt("%.0f", largest(ours.rounds)).c_str(), per_seed.c_str());
+    std::fflush(stdout);
+  }
+  if (compared > 0) {
+    std::printf(
+        "\nTarget whole process no slower than CGAL VSA (DESIGN.md 7), over seeds 1-%d: median no slower on %d of %d "
+        "inputs; worst seed no slower on %d of %d.\n\n",
+        options.seeds, median_faster, compared, worst_faster, compared);
+  } else {
+    std::printf("\n");
+  }
+}
+
+}  // namespace ff::bench
