@@ -173,7 +173,7 @@ std::unique_ptr<PanelAttempt> Remesher::make_attempt() {
 }
 
 void Remesher::panel_round() {
-  if (!best_) alternates_.clear();  // a new panel phase
+  if (!best_) alternates_.clear(), failed_mend_.clear();  // a new panel phase
   std::unique_ptr<PanelAttempt> attempt = make_attempt();
   int invalid = attempt->num_invalid();
   if (invalid == 0) {
@@ -182,12 +182,23 @@ void Remesher::panel_round() {
     attempt->layout().judge_orientation();
     invalid = attempt->num_invalid();
   }
+  std::vector<int> invalid_clusters;
   if (invalid > 0 && invalid <= kMendEarlyAt) {
+    for (size_t c = 0; c < attempt->layout().issues().size(); ++c) {
+      if (!attempt->layout().issues()[c].valid()) invalid_clusters.push_back(static_cast<int>(c));
+    }
+  }
+  // Not again on the very panels it last failed on: the clustering around them has barely
+  // moved since (see failed_mend_).
+  if (!invalid_clusters.empty() && invalid_clusters != failed_mend_) {
     // The settled planes held, as in the rounds: the mend works around the invalid panels.
     std::vector<char> held = attempt->settled_clusters();
     const std::vector<char> locked = held_clusters();
     for (size_t c = 0; c < locked.size() && c < held.size(); ++c) held[c] = held[c] || locked[c];
-    if (attempt->mend_to_valid(faces_, held, PanelAttemptOptions{})) invalid = 0;
+    if (attempt->mend_to_valid(faces_, held, PanelAttemptOptions{}))
+      invalid = 0;
+    else
+      failed_mend_ = invalid_clusters;
   }
   ++panel_rounds_done_;
   progress_.iteration = panel_rounds_done_;
