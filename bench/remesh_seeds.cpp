@@ -53,7 +53,7 @@ void print_seed_table(const std::vector<RemeshCase>& cases, const std::string& m
       "worst ratio | Hausdorff median ours / CGAL | ours: panel rounds median (max) | ours: time s per seed |\n");
   std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---|\n");
   std::fflush(stdout);
-  int compared = 0, median_faster = 0, worst_faster = 0, median_closer = 0;
+  int compared = 0, median_faster = 0, worst_faster = 0, median_lower_hausdorff = 0;
   for (const RemeshCase& c : cases) {
     if (mesh_file_missing(meshes, c.file, c.label, notes)) continue;
     SeedRuns ours, cgal;
@@ -81,7 +81,7 @@ void print_seed_table(const std::vector<RemeshCase>& cases, const std::string& m
       ++compared;
       median_faster += m_ours <= m_cgal ? 1 : 0;
       worst_faster += w_ours <= w_cgal ? 1 : 0;
-      median_closer += median(ours.hausdorff) < median(cgal.hausdorff) ? 1 : 0;
+      median_lower_hausdorff += median(ours.hausdorff) < median(cgal.hausdorff) ? 1 : 0;
     }
     const std::string cgal_valid = options.with_cgal ? std::to_string(cgal.valid) + "/" + std::to_string(cgal.ran) : "-";
     std::printf("| %s | %d | %s | %s | %s | %s | %s | %s | %s (%s) | %s |\n", c.label.c_str(), c.panels,
@@ -98,7 +98,7 @@ void print_seed_table(const std::vector<RemeshCase>& cases, const std::string& m
         "inputs; worst seed no slower on %d of %d.  \n",
         options.seeds, median_faster, compared, worst_faster, compared);
     std::printf("Target Hausdorff lower than CGAL VSA (DESIGN.md 5), over seeds 1-%d: median lower on %d of %d inputs.\n\n",
-                options.seeds, median_closer, compared);
+                options.seeds, median_lower_hausdorff, compared);
   } else {
     std::printf("\n");
   }
