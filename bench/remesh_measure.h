@@ -18,6 +18,9 @@ struct Measured : ResultValues {
   double peak_rss_mib = 0.0;  // largest over the runs, before the quality report
 
   double total() const { return num("input_s") + num("solve_s"); }
+  // Clusters that never became a panel (ours) count as invalid panels too (PanelMesh::num_invalid).
+  double unbuilt() const { return has("unbuilt") ? num("unbuilt") : 0.0; }
+  double invalid_panels() const { return num("invalid") + unbuilt(); }
 };
 
 // The quality numbers from the first run (they are deterministic); the time from the fastest

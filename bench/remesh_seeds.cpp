@@ -19,8 +19,7 @@ struct SeedRuns {
   void add(const Measured& m, bool ours) {
     if (!m.ok || !m.quality_error.empty()) return;
     ++ran;
-    const double unbuilt = m.has("unbuilt") ? m.num("unbuilt") : 0.0;
-    valid += m.num("invalid") + unbuilt == 0 ? 1 : 0;
+    valid += m.invalid_panels() == 0 ? 1 : 0;
     time.push_back(m.total());
     hausdorff.push_back(m.num("hausdorff"));
     if (ours) rounds.push_back(m.num("panel_rounds"));
@@ -35,8 +34,6 @@ double median(std::vector<double> v) {
 }
 
 double largest(const std::vector<double>& v) { return v.empty() ? NAN : *std::max_element(v.begin(), v.end()); }
-
-std::string pair(const std::string& a, const std::string& b) { return a + " / " + b; }
 
 }  // namespace
 
@@ -60,19 +57,20 @@ void print_seed_table(const std::vector<RemeshCase>& cases, const std::string& m
     std::string per_seed;
     for (int seed = 1; seed <= options.seeds; ++seed) {
       const auto s = static_cast<std::uint64_t>(seed);
+      // A failed run of either side is named in the notes (only ours counts as a failure).
+      const auto failed = [&](const Measured& m, const char* side) {
+        if (m.ok && m.quality_error.empty()) return false;
+        notes.push_back(c.label + " seed " + std::to_string(seed) + ": " + side +
+                        " failed: " + (m.ok ? m.quality_error : m.error));
+        return true;
+      };
       const Measured a = measure(exe, "ours", c, meshes, s, options.repeat, options.subdivision_ratio);
-      if (!a.ok || !a.quality_error.empty()) {
-        ++failures;
-        notes.push_back(c.label + " seed " + std::to_string(seed) +
-                        ": ours failed: " + (a.ok ? a.quality_error : a.error));
-      }
+      if (failed(a, "ours")) ++failures;
       ours.add(a, true);
       per_seed += (per_seed.empty() ? "" : " ") + (a.ok ? fmt("%.3f", a.total()) : std::string("failed"));
       if (!options.with_cgal) continue;
       const Measured b = measure(exe, "cgal", c, meshes, s, options.repeat, options.subdivision_ratio);
-      if (!b.ok || !b.quality_error.empty())
-        notes.push_back(c.label + " seed " + std::to_string(seed) +
-                        ": CGAL failed: " + (b.ok ? b.quality_error : b.error));
+      failed(b, "CGAL");
       cgal.add(b, false);
     }
     const double m_ours = median(ours.time), m_cgal = median(cgal.time);
@@ -85,10 +83,10 @@ void print_seed_table(const std::vector<RemeshCase>& cases, const std::string& m
     }
     const std::string cgal_valid = options.with_cgal ? std::to_string(cgal.valid) + "/" + std::to_string(cgal.ran) : "-";
     std::printf("| %s | %d | %s | %s | %s | %s | %s | %s | %s (%s) | %s |\n", c.label.c_str(), c.panels,
-                pair(std::to_string(ours.valid) + "/" + std::to_string(ours.ran), cgal_valid).c_str(),
-                pair(fmt("%.3f", m_ours), fmt("%.3f", m_cgal)).c_str(), fmt("%.2f", m_ours / m_cgal).c_str(),
-                pair(fmt("%.3f", w_ours), fmt("%.3f", w_cgal)).c_str(), fmt("%.2f", w_ours / w_cgal).c_str(),
-                pair(fmt("%.5f", median(ours.hausdorff)), fmt("%.5f", median(cgal.hausdorff))).c_str(),
+                pair_cell(std::to_string(ours.valid) + "/" + std::to_string(ours.ran), cgal_valid).c_str(),
+                pair_cell(fmt("%.3f", m_ours), fmt("%.3f", m_cgal)).c_str(), fmt("%.2f", m_ours / m_cgal).c_str(),
+                pair_cell(fmt("%.3f", w_ours), fmt("%.3f", w_cgal)).c_str(), fmt("%.2f", w_ours / w_cgal).c_str(),
+                pair_cell(fmt("%.5f", median(ours.hausdorff)), fmt("%.5f", median(cgal.hausdorff))).c_str(),
                 fmt("%.0f", median(ours.rounds)).c_str(), fmt("%.0f", largest(ours.rounds)).c_str(), per_seed.c_str());
     std::fflush(stdout);
   }

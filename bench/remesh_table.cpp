@@ -13,8 +13,6 @@ namespace ff::bench {
 
 namespace {
 
-std::string pair(const std::string& ours, const std::string& cgal) { return ours + " / " + cgal; }
-
 std::string topology_cell(const Measured& m, const std::string& prefix = "") {
   if (!m.ok) return "-";
   if (m.num(prefix + "topology") == 1) return "yes";
@@ -25,12 +23,10 @@ std::string topology_cell(const Measured& m, const std::string& prefix = "") {
 
 std::string invalid_cell(const Measured& m) {
   if (!m.ok) return "-";
-  // Clusters that never became a panel are invalid panels too (PanelMesh::num_invalid).
-  const double unbuilt = m.has("unbuilt") ? m.num("unbuilt") : 0.0;
-  std::string s = fmt("%.0f", m.num("invalid") + unbuilt);
-  if (unbuilt > 0) s += " (" + fmt("%.0f", unbuilt) + " unbuilt)";
+  std::string s = fmt("%.0f", m.invalid_panels());
+  if (m.unbuilt() > 0) s += " (" + fmt("%.0f", m.unbuilt()) + " unbuilt)";
   // Ours: where the panel phase's own count (its PanelIssues) disagrees with the report's.
-  if (m.has("own_invalid") && m.num("own_invalid") != m.num("invalid") + unbuilt)
+  if (m.has("own_invalid") && m.num("own_invalid") != m.invalid_panels())
     s += " (own " + fmt("%.0f", m.num("own_invalid")) + ")";
   return s;
 }
@@ -126,16 +122,16 @@ int print_remesh_report(const std::vector<RemeshCase>& cases, const BenchOptions
     };
     std::printf(
         "| %s | %s | %d | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", c.label.c_str(),
-        fmt("%.0f", faces).c_str(), c.panels, pair(panels(a), panels(b)).c_str(),
-        pair(measured(a, invalid_cell(a)), measured(b, invalid_cell(b))).c_str(),
-        pair(measured(a, fmt("%.1e", a.num("planarity"))), measured(b, fmt("%.1e", b.num("planarity")))).c_str(),
-        pair(measured(a, fmt("%.5f", a.num("hausdorff"))), measured(b, fmt("%.5f", b.num("hausdorff")))).c_str(),
-        fmt("%.2f", h_ratio).c_str(), pair(measured(a, topology_cell(a)), measured(b, topology_cell(b))).c_str(),
-        pair(measured(a, fmt("%.0f%%", 100.0 * a.num("valence3"))),
+        fmt("%.0f", faces).c_str(), c.panels, pair_cell(panels(a), panels(b)).c_str(),
+        pair_cell(measured(a, invalid_cell(a)), measured(b, invalid_cell(b))).c_str(),
+        pair_cell(measured(a, fmt("%.1e", a.num("planarity"))), measured(b, fmt("%.1e", b.num("planarity")))).c_str(),
+        pair_cell(measured(a, fmt("%.5f", a.num("hausdorff"))), measured(b, fmt("%.5f", b.num("hausdorff")))).c_str(),
+        fmt("%.2f", h_ratio).c_str(), pair_cell(measured(a, topology_cell(a)), measured(b, topology_cell(b))).c_str(),
+        pair_cell(measured(a, fmt("%.0f%%", 100.0 * a.num("valence3"))),
              measured(b, fmt("%.0f%%", 100.0 * b.num("valence3"))))
             .c_str(),
-        pair(side(a, fmt("%.3f", a.total())), side(b, fmt("%.3f", b.total()))).c_str(), fmt("%.2f", t_ratio).c_str(),
-        pair(side(a, fmt("%.0f", a.peak_rss_mib)), side(b, fmt("%.0f", b.peak_rss_mib))).c_str());
+        pair_cell(side(a, fmt("%.3f", a.total())), side(b, fmt("%.3f", b.total()))).c_str(), fmt("%.2f", t_ratio).c_str(),
+        pair_cell(side(a, fmt("%.0f", a.peak_rss_mib)), side(b, fmt("%.0f", b.peak_rss_mib))).c_str());
     std::fflush(stdout);
     rows.push_back(row);
   }

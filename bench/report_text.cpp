@@ -19,6 +19,8 @@ std::string fmt(const char* format, double v) {
   return buf;
 }
 
+std::string pair_cell(const std::string& ours, const std::string& cgal) { return ours + " / " + cgal; }
+
 std::string machine_line() {
   std::string cpu = "unknown CPU";
   std::ifstream info("/proc/cpuinfo");

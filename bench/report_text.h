@@ -9,6 +9,9 @@ namespace ff::bench {
 // printf `format` of v, or "-" when v is not finite.
 std::string fmt(const char* format, double v);
 
+// A cell with both sides' values: "ours / cgal".
+std::string pair_cell(const std::string& ours, const std::string& cgal);
+
 // "CPU model, N cores; compiler; CGAL version" (or "without CGAL").
 std::string machine_line();
 

@@ -173,7 +173,10 @@ std::unique_ptr<PanelAttempt> Remesher::make_attempt() {
 }
 
 void Remesher::panel_round() {
-  if (!best_) alternates_.clear(), failed_mend_.clear();  // a new panel phase
+  if (!best_) {  // a new panel phase
+    alternates_.clear();
+    failed_mend_.clear();
+  }
   std::unique_ptr<PanelAttempt> attempt = make_attempt();
   int invalid = attempt->num_invalid();
   if (invalid == 0) {
