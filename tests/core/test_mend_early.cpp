@@ -29,16 +29,17 @@ TEST(MendToValid, AMendThatFailsLeavesEveryPanelAsItWas) {
   }
 }
 
-// The bunny at 200 panels: 62, 9 and 6 invalid panels in its first three rounds, and then
-// 3, 2, 3, 2, 2, 2, 0 (valid at round 10) without the mend; the mend makes round 3 valid.
+// The bunny at 200 panels, seed 4: 54, 8 and 2 invalid panels in its first three rounds, and
+// then 1, 0 (valid at round 5) without the mend; the mend makes round 3 valid.
 // The result is judged as at the end (orientation included) and passes the quality check.
 TEST(MendEarly, BunnyEndsValidAtItsThirdRound) {
   RemeshParams p;
   p.panels = 200;
+  p.seed = 4;
   Remesher r(test::load_clean("bunny.off"), p);
   r.run();
   EXPECT_EQ(r.panel_rounds_done(), 3);
-  // Hausdorff 0.0172 of the bounding box (0.0171 when valid at round 10).
+  // Hausdorff 0.0190 of the bounding box (the same when valid at round 5).
   EXPECT_TRUE(test::valid_panels(r, 200, 0.02));
 }
 
