@@ -55,12 +55,12 @@ constexpr size_t kMaxSplitsPerRound = 3;
 // that fails leaves the round exactly as it was, so a run it cannot help goes on unchanged.
 // bench/sweep_validity.sh at seed 1: 65 of 65 either way, panel rounds 952 -> 695, Hausdorff
 // ratio geometric mean 1.000 (0.81-1.18). Up to 3, not 6: over the sweep at seeds 1-3 it
-// succeeded 39% of its tries at 1 invalid panel, 11% at 2, 22% at 3, but only 7-11% at 4-6,
+// succeeded 36% of its tries at 1 invalid panel, 12% at 2, 21% at 3, but only 5-9% at 4-6,
 // where a try costs 3-4 ms on the bunny (a round about 4): there it pays only where a success
-// saves rounds worth more than ten tries. Seeds 1-6 and 31-36 against 6 (768 runs): valid 761 -> 760,
-// panel rounds 9006 -> 9804, panel phase 72.7 -> 72.4 s, Hausdorff geometric mean 0.995;
-// bunny 200's panel phase 1.27 -> 1.13 s, inspired 100's 0.63 -> 0.59 s; face.obj's and
-// fandisk's 2-8% slower (at 2: 71.5 s, rounds 10239, bunny 1.07 s).
+// saves rounds worth more than ten tries, and a failed try changes nothing. Seeds 1-6 and
+// 31-36 against 6 (768 runs): valid 762 either way, panel rounds 9154 -> 9623, panel phase
+// 87.7 -> 79.7 s (every mesh 0-29% less; bunny 200 1.41 -> 1.25 s), Hausdorff geometric
+// mean 0.996.
 constexpr int kMendEarlyAt = 3;
 // An invalid cluster with fewer faces than the mean cluster's over this cannot be split near
 // its problem (a split needs a face at the problem corner other than the seed): when the

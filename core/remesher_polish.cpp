@@ -12,12 +12,12 @@
 // rounds chain from it while it stays close to the best; kept only with fewer invalid
 // panels. Two passes: the splits of clusters that are not disks only, then near every
 // invalid panel too, then (third) each invalid panel's cluster cut in two along its length
-// (split_cluster). cow.off at 61 panels, seed 8: the first pass cuts the two clusters that
-// meet a neighbour twice and the run ends valid; seed 12: the same cut leaves 1 invalid (was
-// 4) and the second pass ends valid; at 100 panels, seed 12, the third pass does. (At seed 2,
-// before the rounds' relaxation stopped at 48 iterations, face.obj at 574 ended valid in the
-// third pass: a plane 94 degrees from its faces, which aim_face_normals could not turn
-// back.) Not enough for most of cow.off at 46. Runs that end valid never get
+// (split_cluster). At seed 2: cow.off at 100 panels ends valid in the second pass (its last
+// flipped panel cut at its problem corner), cow.off at 78, seed 6, in the third (face.obj at
+// 574 did, a plane 94 degrees from its faces that aim_face_normals could not turn back, until
+// the early mend stopped at 3 invalid panels and its rounds ended valid); at 61 the first pass cuts
+// the two clusters that meet a neighbour twice, 5 panels are invalid after the mend and 1 a
+// round later (was 2). Not enough for cow.off at 46 and 78. Runs that end valid never get
 // here, so they are unchanged; the others take up to 18 more attempts, one per step() (a
 // panel round and a mend each: the worker stays as responsive as in the rounds), with the
 // progress of the panel stage (its round count stays, the invalid count is the best's).
@@ -106,7 +106,7 @@ std::unique_ptr<PanelAttempt> Remesher::polish_pass(int max_geometric) {
   if (max_geometric >= 0) requests = split_requests(mesh_, topology_, *best_, max_geometric);
   // An invalid panel with no problem corner to split at is cut in two along its length
   // (face -1), and in the last pass (max_geometric -1) every invalid panel is (a plane turned
-  // across its faces, a flipped panel whose corners were cut before: cow.off at 100, seed 12).
+  // 94 degrees from its faces: face.obj at 574 panels, seed 2, once ended valid so).
   for (int c = 0; max_geometric != 0 && c < best_->layout().num_clusters(); ++c) {
     if (best_->layout().issues()[static_cast<size_t>(c)].valid()) continue;
     const auto has = [c](const std::pair<int, int>& r) { return r.first == c; };

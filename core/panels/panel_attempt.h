@@ -25,14 +25,7 @@ struct PanelAttemptOptions {
   // Weight of the corners in the planes' fit (plane_fit.h corner_fit_planes); 0: the proxies.
   double corner_weight = 1.0;
   bool relax = true;  // plane_relax.h
-  // The rounds' relaxations stop at W = 1.4^47 (about 7e6): the nodes are then on their
-  // planes to about 1e-7 of D (the 80 iterations' 1e-12 scaled by 1/W), and the vertex rule
-  // places them exactly anyway; the last 32 iterations bought precision nothing reads.
-  // Against 80 iterations (W to 3e11), over bench/sweep_validity.sh's cases at seeds 1-6
-  // and 31-36 (768 runs): valid 762 -> 761, panel rounds 9154 -> 9006, panel phase 87.6 ->
-  // 72.7 s, Hausdorff geometric mean 0.994 of before (56 and 40, with the final fit cut too:
-  // 761 valid, 9596 rounds; 764, 9418, Hausdorff 0.998). The final fit (plane_fit.h) keeps 80.
-  RelaxOptions relax_options = RelaxOptions{48};
+  RelaxOptions relax_options;
   // Clusters whose planes are kept from the previous round (their panels and their
   // neighbours' were valid): per cluster, empty for none, and the planes themselves.
   std::vector<char> fixed;

@@ -107,9 +107,8 @@ INSTANTIATE_TEST_SUITE_P(Counts, DenseHardCasePanels,
 // a corner where four clusters meet on a saddle and neither pairing is valid
 // (bench/panel_rounds_profile.md, "The long tail of rounds"). bunny.off at 200 panels took 40
 // rounds at seed 7 and 19 at seed 8, inspired_mesh.obj at 100 took 20 and 24 at seeds 4 and 5
-// (2026-12-01; since the rounds' relaxation stops at 48 iterations: 31, 19, 13 and 19); the
-// early mend is skipped there while the same panels stay invalid. However many rounds they
-// take, they must end valid.
+// (2026-12-01); the early mend is skipped there while the same panels stay invalid. However
+// many rounds they take, they must end valid.
 INSTANTIATE_TEST_SUITE_P(LongTail, SharedMeshPanels,
                          ::testing::Values(PanelCase{"bunny.off", 200, 7}, PanelCase{"bunny.off", 200, 8},
                                            PanelCase{"inspired_mesh.obj", 100, 4},

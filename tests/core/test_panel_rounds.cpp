@@ -31,12 +31,12 @@ class CowPanelRounds : public ::testing::TestWithParam<test::ValidRemesh> {};
 TEST_P(CowPanelRounds, ValidWithTheDefaults) { EXPECT_TRUE(test::remeshes_valid(GetParam())); }
 
 // 2-5 s of Release each (30 to 100 rounds). The Hausdorff bound is the shared meshes' 0.08
-// where the result has it; at 61, 78 and 100 the valid result leaves a thin part (a tip)
-// farther from its panels (0.14, 0.13 and 0.11 of the diagonal, measured input to panels).
+// where the result has it; at 61 and 100 the valid result leaves a thin part (a tip) farther
+// from its panels (0.14 and 0.11 of the diagonal, measured input to panels).
 const auto cow = [] { return test::load_clean("cow.off"); };
 INSTANTIATE_TEST_SUITE_P(SweepCounts, CowPanelRounds,
                          ::testing::Values(test::ValidRemesh{"At61", cow, 61, 0, 0.15},
-                                           test::ValidRemesh{"At78", cow, 78, 0, 0.15},
+                                           test::ValidRemesh{"At78", cow, 78},
                                            test::ValidRemesh{"At100", cow, 100, 0, 0.12},
                                            test::ValidRemesh{"At122", cow, 122}),
                          test::valid_remesh_name);

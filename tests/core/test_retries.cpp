@@ -21,15 +21,14 @@ std::unique_ptr<Remesher> cow(int panels, std::uint64_t seed, int retries) {
   return r;
 }
 
-// cow.off at 78 panels, seed 8: invalid panels after the rounds and the polish; the first
+// cow.off at 78 panels, seed 16: 4 invalid panels after the rounds and the polish; the first
 // retry ends valid. (A chaotic draw, re-chosen when the rounds change: it was seed 2 until the
-// first round stopped re-relaxing for the tilt, seed 16 until the rounds' relaxation stopped
-// at 48 iterations.)
-TEST(Retries, CowAt78Seed8EndsValidOnTheFirstRetry) {
-  const std::unique_ptr<Remesher> without = cow(78, 8, 0);
+// first round stopped re-relaxing for the tilt.)
+TEST(Retries, CowAt78Seed16EndsValidOnTheFirstRetry) {
+  const std::unique_ptr<Remesher> without = cow(78, 16, 0);
   EXPECT_GT(without->panels().num_invalid(), 0);
   EXPECT_EQ(without->retries_done(), 0);
-  const std::unique_ptr<Remesher> with = cow(78, 8, 2);
+  const std::unique_ptr<Remesher> with = cow(78, 16, 2);
   EXPECT_TRUE(test::valid_panels(*with, 78, 0.15));
   EXPECT_EQ(with->retries_done(), 1);
 }
