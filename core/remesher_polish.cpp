@@ -10,14 +10,15 @@
 // merging the cheapest pair of clusters away from every invalid panel and its neighbours
 // (so n stays), the settled planes kept. That attempt is mended like the best, then a few
 // rounds chain from it while it stays close to the best; kept only with fewer invalid
-// panels. Two passes: the splits of clusters that are not disks only, then near every
+// panels. Three passes: the splits of clusters that are not disks only, then near every
 // invalid panel too, then (third) each invalid panel's cluster cut in two along its length
-// (split_cluster). At seed 2: cow.off at 100 panels ends valid in the second pass (its last
-// flipped panel cut at its problem corner), cow.off at 78, seed 6, in the third (face.obj at
-// 574 did, a plane 94 degrees from its faces that aim_face_normals could not turn back, until
-// the early mend stopped at 3 invalid panels and its rounds ended valid); at 61 the first pass cuts
-// the two clusters that meet a neighbour twice, 5 panels are invalid after the mend and 1 a
-// round later (was 2). Not enough for cow.off at 46 and 78. Runs that end valid never get
+// (split_cluster). cow.off at 100 panels, seed 2, ends valid in the second pass (its last
+// flipped panel cut at its problem corner), at 78, seed 6, in the third; at 61, seed 2, the
+// first pass cuts the two clusters that meet a neighbour twice, 5 panels are invalid after
+// the mend and 1 a round later (was 2). (face.obj at 574, seed 2, ended valid in the third
+// pass, a plane 94 degrees from its faces that aim_face_normals could not turn back, until
+// the early mend stopped at 3 invalid panels: its rounds now end valid.) Not enough for
+// cow.off at 46, seed 2 (2 invalid). Runs that end valid never get
 // here, so they are unchanged; the others take up to 18 more attempts, one per step() (a
 // panel round and a mend each: the worker stays as responsive as in the rounds), with the
 // progress of the panel stage (its round count stays, the invalid count is the best's).
