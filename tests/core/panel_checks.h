@@ -50,12 +50,17 @@ struct ValidRemesh {
 inline void PrintTo(const ValidRemesh& c, std::ostream* os) { *os << c.name; }
 inline std::string valid_remesh_name(const ::testing::TestParamInfo<ValidRemesh>& info) { return info.param.name; }
 
-// A shared mesh remeshed into `panels` at `seed`, otherwise the defaults.
-inline std::unique_ptr<Remesher> remeshed(const std::string& file, int panels, std::uint64_t seed) {
+// A Remesher of a shared mesh into `panels` at `seed`, otherwise the defaults, not yet run.
+inline std::unique_ptr<Remesher> remesher(const std::string& file, int panels, std::uint64_t seed) {
   RemeshParams p;
   p.panels = panels;
   p.seed = seed;
-  auto r = std::make_unique<Remesher>(load_clean(file), p);
+  return std::make_unique<Remesher>(load_clean(file), p);
+}
+
+// The same, run to the end.
+inline std::unique_ptr<Remesher> remeshed(const std::string& file, int panels, std::uint64_t seed) {
+  auto r = remesher(file, panels, seed);
   r->run();
   return r;
 }

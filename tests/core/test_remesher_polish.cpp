@@ -3,8 +3,6 @@
 // and the split it is made of, split_cluster_at (core/cluster/cluster_edits.h).
 #include <gtest/gtest.h>
 
-#include <memory>
-#include <string>
 #include <vector>
 
 #include "cluster_checks.h"
@@ -107,18 +105,11 @@ TEST(PolishSplitAt, HalvesGrowFromTheGivenFaces) {
   return ::testing::AssertionSuccess();
 }
 
-std::unique_ptr<Remesher> remesher(const std::string& file, int panels, std::uint64_t seed) {
-  RemeshParams p;
-  p.panels = panels;
-  p.seed = seed;
-  return std::make_unique<Remesher>(test::load_clean(file), p);
-}
-
 // cow.off at 100 panels, seed 2 (bench/sweep_validity.sh): the rounds end with one flipped,
 // non-simple panel that mend() leaves (on main, 1 invalid); the polish cuts it locally and
 // the run ends valid with the 100 panels asked for, with no retry.
 TEST(PolishBest, CowAt100PanelsSeed2EndsValid) {
-  const auto r = remesher("cow.off", 100, 2);
+  const auto r = test::remesher("cow.off", 100, 2);
   ASSERT_TRUE(polish_ran(*r));
   EXPECT_EQ(r->retries_done(), 0);
   EXPECT_TRUE(test::valid_panels(*r, 100, 0.12));
@@ -131,7 +122,7 @@ TEST(PolishBest, CowAt100PanelsSeed2EndsValid) {
 // from its faces; it now ends valid in the rounds.) The bound is the cow's
 // (test_panel_rounds.cpp).
 TEST(PolishBest, CowAt78PanelsSeed6EndsValidInTheThirdPass) {
-  const auto r = remesher("cow.off", 78, 6);
+  const auto r = test::remesher("cow.off", 78, 6);
   ASSERT_TRUE(polish_ran(*r));
   EXPECT_EQ(r->retries_done(), 0);
   EXPECT_TRUE(test::valid_panels(*r, 78, 0.15));
