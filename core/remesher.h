@@ -239,6 +239,7 @@ class Remesher {
   Clustering clustering_;
   Progress progress_;
   std::vector<Vec3> local_positions_;   // mesh vertices in the frame of faces_
+  double check_tolerance_ = 0.0;        // LayoutOptions::tolerance (local frame): see the constructor
   std::unique_ptr<PanelAttempt> best_;  // the attempt with the fewest invalid panels so far
   std::vector<std::unique_ptr<PanelAttempt>> alternates_;  // close runners-up (keep_alternate)
   ClusterMomentsCache moments_;         // the panel phase's cluster moments (faces_ and clustering_)

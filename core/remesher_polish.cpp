@@ -12,8 +12,8 @@
 // rounds chain from it while it stays close to the best; kept only with fewer invalid
 // panels. Three passes: the splits of clusters that are not disks only, then near every
 // invalid panel too, then (third) each invalid panel's cluster cut in two along its length
-// (split_cluster). cow.off at 100 panels, seed 2, ends valid in the second pass (its last
-// flipped panel cut at its problem corner), at 78, seed 6, in the third; at 61, seed 2, the
+// (split_cluster). cow.off at 100 panels, seed 7, ends valid in the second pass's first
+// attempt (a split near its problem), at 78, seed 6, in the third; at 61, seed 2, the
 // first pass cuts the two clusters that meet a neighbour twice, 5 panels are invalid after
 // the mend and 1 a round later (was 2). (face.obj at 574, seed 2, ended valid in the third
 // pass, a plane 94 degrees from its faces that aim_face_normals could not turn back, until

@@ -215,5 +215,17 @@ TEST(PanelPhase, RejectsNegativePanelRounds) {
   EXPECT_THROW(Remesher(make_roof(20, 20), p), InputError);
 }
 
+// The panel phase judges its panels with the quality report's length tolerance (twice it), so
+// the report's independent check cannot find a panel the rounds called valid. With the
+// rounds' old fixed 1e-9 of the half extent, fandisk.off at 206 panels, seed 31 ended its
+// rounds "valid" on a needle triangle about 1e-8 wide (diagonal 7.6), which the report then
+// found without a kernel: exit 3, "quality_check", and no retry, since the rounds saw nothing.
+TEST(PanelPhase, NeedlePanelIsInvalidInTheRoundsAsInTheReport) {
+  const auto r = test::remeshed("fandisk.off", 206, 31);
+  EXPECT_TRUE(test::valid_panels(*r, 206, 0.02));
+  // It took more rounds than the 3 in which the needle was accepted.
+  EXPECT_GT(r->panel_rounds_done(), 3);
+}
+
 }  // namespace
 }  // namespace ff

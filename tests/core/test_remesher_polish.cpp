@@ -105,11 +105,12 @@ TEST(PolishSplitAt, HalvesGrowFromTheGivenFaces) {
   return ::testing::AssertionSuccess();
 }
 
-// cow.off at 100 panels, seed 2 (bench/sweep_validity.sh): the rounds end with one flipped,
-// non-simple panel that mend() leaves (on main, 1 invalid); the polish cuts it locally and
-// the run ends valid with the 100 panels asked for, with no retry.
-TEST(PolishBest, CowAt100PanelsSeed2EndsValid) {
-  const auto r = test::remesher("cow.off", 100, 2);
+// cow.off at 100 panels, seed 7: the rounds end invalid and mend() leaves it so; the second
+// pass's first attempt (a split near the problem) ends valid with the 100 panels asked for,
+// with no retry. (Seed 2 was this example until the panel checks took the quality report's
+// tolerance: its rounds now go another way.)
+TEST(PolishBest, CowAt100PanelsSeed7EndsValid) {
+  const auto r = test::remesher("cow.off", 100, 7);
   ASSERT_TRUE(polish_ran(*r));
   EXPECT_EQ(r->retries_done(), 0);
   EXPECT_TRUE(test::valid_panels(*r, 100, 0.12));
