@@ -241,6 +241,19 @@ QualityReport measure_quality(const TriMesh& input, const MeshTopology& input_to
     }
     r.misoriented_panels = 0;
   }
+  // Glass pieces (panel_source) are judged as the panel they were cut from, on all of its
+  // faces: the pieces share its plane, and the faces under one piece alone can face away on a
+  // sharply curved part (cow.off in glass mode: a sliver piece on a leg) although the panel
+  // as a whole faces its faces, as the panel phase judged it before the cut.
+  if (!panels.face_panel.empty() && panels.panel_source.size() == np) {
+    std::vector<Vec3> by_source(np, Vec3::Zero());
+    for (size_t p = 0; p < np; ++p) {
+      const int source = panels.panel_source[p];
+      if (source < 0 || static_cast<size_t>(source) >= np) throw InputError("quality: panel_source names a missing panel");
+      by_source[static_cast<size_t>(source)] += face_normal_sum[p];
+    }
+    for (size_t p = 0; p < np; ++p) face_normal_sum[p] = by_source[static_cast<size_t>(panels.panel_source[p])];
+  }
 
   const double tol = options.tolerance * bbox_diagonal(input);
   double min_angle = np > 0 ? 360.0 : 0.0;
