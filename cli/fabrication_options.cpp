@@ -139,12 +139,14 @@ FabricationRequest parse_fabrication(const Args& args) {
   return r;
 }
 
-std::vector<OutputFile> fabrication_outputs(const FabricationRequest& r, const PanelMesh& panels) {
+std::vector<OutputFile> fabrication_outputs(const FabricationRequest& r, const PanelMesh& panels,
+                                            std::vector<std::string>* folded) {
   std::vector<OutputFile> files;
   if (!r.any()) return files;
   const PartsList list = make_parts_list(panels, r.options);
   if (!list.unmatched_labels.empty())
     throw InputError("--panel-thickness: no panel labelled " + list.unmatched_labels.front());
+  if (folded) *folded = list.folded_inner_faces;
   if (!r.parts.empty())
     files.push_back({r.parts, ends_with(r.parts, ".json") ? parts_list_json(list) : parts_list_csv(list)});
   if (!r.sheets.empty()) {

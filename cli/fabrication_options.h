@@ -25,7 +25,9 @@ const std::set<std::string>& fabrication_option_names();
 // Parses and checks them (UsageError naming the option).
 FabricationRequest parse_fabrication(const Args& args);
 
-// The files asked for, from the final panels.
-std::vector<OutputFile> fabrication_outputs(const FabricationRequest& request, const PanelMesh& panels);
+// The files asked for, from the final panels. `folded` (when given) gets the labels of the
+// parts whose inner face folds over (PartsList::folded_inner_faces).
+std::vector<OutputFile> fabrication_outputs(const FabricationRequest& request, const PanelMesh& panels,
+                                            std::vector<std::string>* folded = nullptr);
 
 }  // namespace ff::cli

@@ -17,6 +17,7 @@
 #include "cli/output.h"
 #include "cli/remesh_report.h"
 #include "core/density/direction_expression.h"
+#include "core/fabricate/number_text.h"
 #include "core/density/expression.h"
 #include "core/mesh/mesh_io.h"
 #include "core/panels/panel_export.h"
@@ -176,6 +177,16 @@ Options parse_options(const std::vector<std::string>& argv) {
   return o;
 }
 
+// One stderr line naming the parts whose inner face folds over (the first eight of them).
+std::string folded_parts_line(const std::vector<std::string>& labels, double thickness, const std::string& units) {
+  std::string line = "flatfacet remesh: at a thickness of " + number_text(thickness, 6) + " " + units +
+                     " the inner face folds over on " + std::to_string(labels.size()) +
+                     (labels.size() == 1 ? " part (" : " parts (");
+  for (size_t k = 0; k < labels.size() && k < 8; ++k) line += (k ? ", " : "") + labels[k];
+  if (labels.size() > 8) line += ", ...";
+  return line + "), which cannot be cut as drawn: use thinner material, or fewer and larger panels\n";
+}
+
 }  // namespace
 
 int run_remesh(const std::vector<std::string>& argv) {
@@ -225,12 +236,17 @@ int run_remesh(const std::vector<std::string>& argv) {
     outputs.push_back({o.out, panels_obj(remesher.panels(), panels_obj_comment(run))});
   }
   if (!o.report.empty()) outputs.push_back({o.report, remesh_report_json(run)});
-  for (OutputFile& file : fabrication_outputs(o.fabrication, remesher.panels())) outputs.push_back(std::move(file));
+  std::vector<std::string> folded;
+  for (OutputFile& file : fabrication_outputs(o.fabrication, remesher.panels(), &folded))
+    outputs.push_back(std::move(file));
   if (outputs.empty())
     std::fputs(remesh_summary_line(run).c_str(), stdout);
   else
     write_files_atomic(outputs);
-  return all_panels_valid(remesher.panels(), quality) ? 0 : 3;
+  // Written, like invalid panels (exit 3): the designer sees the parts and can choose a
+  // thinner material or larger panels.
+  if (!folded.empty()) std::fputs(folded_parts_line(folded, o.fabrication.options.thickness, unit_name(o.fabrication.options.units)).c_str(), stderr);
+  return all_panels_valid(remesher.panels(), quality) && folded.empty() ? 0 : 3;
 }
 
 }  // namespace ff::cli

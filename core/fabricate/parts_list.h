@@ -67,6 +67,10 @@ struct PartsList {
   double max_node_spread = 0.0;
   int straight_corners = 0, projected_corners = 0;
   std::vector<NodeSpread> spread_nodes;  // spread above 1e-9 of the thickness, by vertex
+  // With thickness: labels of the panels whose inner face folds over (clockwise, of no area,
+  // or crossing itself): the thickness is too large for the panel's size and chamfers, and the
+  // part cannot be made as drawn. Empty when every inner face is a proper polygon.
+  std::vector<std::string> folded_inner_faces;
   std::vector<std::string> unmatched_labels;  // panel_thickness labels no panel has
 };
 

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "core/fabricate/parts_list.h"
+#include "core/panels/polygon2d.h"
 #include "core/util/error.h"
 
 namespace ff {
@@ -117,8 +118,12 @@ PartsList make_parts_list(const PanelMesh& pm, const FabricationOptions& options
     for (const int v : poly) o.outer.push_back(frame.to_2d(pm.vertices[static_cast<size_t>(v)]) * scale);
     // The inner face is parallel to the outer one: seen through the panel, it is its
     // projection onto the panel's plane.
-    if (has_thickness)
+    if (has_thickness) {
       for (const Vec3& x : thick.inner[p]) o.inner.push_back(frame.to_2d(x) * scale);
+      // Offset by more than the panel can take, its edges pass each other: the inner face
+      // turns clockwise or crosses itself (bunny.off at 58 panels, 2 cm thick: 36 of 58).
+      if (!(signed_area(o.inner) > 0.0) || !is_simple(o.inner, 0.0)) list.folded_inner_faces.push_back(o.label);
+    }
     for (size_t i = 0; i < poly.size(); ++i) {
       OutlineEdge e;
       e.length = (o.outer[(i + 1) % poly.size()] - o.outer[i]).norm();

@@ -57,7 +57,8 @@ std::string parts_list_json(const PartsList& list) {
       ",\n  \"totals\": {\"panels\": " + std::to_string(list.rows.size()) + ", \"area\": " + num(list.total_area) +
       ", \"perimeter\": " + num(list.total_perimeter) + "},\n  \"max_node_spread\": " + num(list.max_node_spread) +
       ",\n  \"straight_corners\": " + std::to_string(list.straight_corners) +
-      ",\n  \"projected_corners\": " + std::to_string(list.projected_corners) + ",\n  \"panels\": [";
+      ",\n  \"projected_corners\": " + std::to_string(list.projected_corners) +
+      ",\n  \"folded_inner_faces\": [" + joined(list.folded_inner_faces, ",", quoted) + "],\n  \"panels\": [";
   for (size_t r = 0; r < list.rows.size(); ++r) {
     const PartRow& row = list.rows[r];
     const PanelPart& p = row.part;

@@ -333,6 +333,13 @@ assert len(objects) == faces
 assert all(n == 1 and c[(b, a)] == 1 for c in objects for (a, b), n in c.items())
 PY
 grep -q "<svg" "$tmp/fab.svg" && ok || bad "remesh --sheets wrote no SVG"
+# Too thick for the panels (bunny.off is 15 cm across; 2 cm on 58 panels of about 3 cm): the
+# outputs are written, the folded parts named on stderr and in the JSON, exit 3.
+"$bin" remesh "$meshes/bunny.off" --panels 58 --parts "$tmp/folded.json" --thickness 20 --units mm 2>"$tmp/folded.txt"
+code=$?
+[ "$code" = 3 ] && grep -q "inner face folds over on [0-9]* parts (P" "$tmp/folded.txt" &&
+  python3 -c "import json,sys; d=json.load(open(sys.argv[1])); assert len(d['folded_inner_faces']) > 10" "$tmp/folded.json" &&
+  ok || bad "remesh --thickness too large: folded parts (exit $code)"
 
 # Per-panel thickness, a boundary bevel, and the solid panels in the --units (mm here).
 "$bin" remesh "$meshes/epcot.off" --panels 30 --out "$tmp/pt.obj" --parts "$tmp/pt.json" --thickness 20 --units mm \

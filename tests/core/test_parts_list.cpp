@@ -11,6 +11,7 @@
 #include "core/fabricate/solid_panels.h"
 #include "core/panels/polygon2d.h"
 #include "core/util/error.h"
+#include "panel_checks.h"
 #include "polyhedra.h"
 
 namespace ff {
@@ -109,6 +110,45 @@ TEST(PartsList, CsvAndJson) {
 
 // Each solid panel is closed and oriented: every directed edge once, its reverse once, and
 // (for the cube, inside) the prism's volume positive.
+// A thickness too large for a panel (its size and its chamfers) makes its inner face fold
+// over: the offset edges pass each other, the outline turns clockwise or crosses itself.
+// The parts list names those parts rather than drawing them as if they could be made.
+// bunny.off at 58 panels (about 3 cm each, chamfers up to 80 degrees at the ears): 2 cm
+// folds most of them, 20 micrometres none. (0.2 mm folds one: a corner of 178 degrees whose
+// two edges have chamfers of 46 and 76 degrees, where the exact inner corner runs 2 cm out.)
+TEST(PartsList, NamesThePartsWhoseInnerFaceFoldsOver) {
+  const auto r = test::remeshed("bunny.off", 58, 1);
+  const auto folded_by_hand = [](const PartsList& list) {
+    std::vector<std::string> out;
+    for (const PartRow& row : list.rows) {
+      const std::vector<Vec2>& inner = row.outline.inner;
+      if (!(signed_area(inner) > 0.0) || !is_simple(inner, 0.0)) out.push_back(row.outline.label);
+    }
+    return out;
+  };
+  FabricationOptions opt;
+  opt.thickness = 0.02;
+  const PartsList thick = make_parts_list(r->panels(), opt);
+  EXPECT_GT(thick.folded_inner_faces.size(), 20u);
+  EXPECT_EQ(thick.folded_inner_faces, folded_by_hand(thick));
+  // Some fold by crossing themselves while still counter-clockwise, some by turning over.
+  int crossing = 0, turned = 0;
+  for (const PartRow& row : thick.rows) {
+    const bool ccw = signed_area(row.outline.inner) > 0.0;
+    crossing += ccw && !is_simple(row.outline.inner, 0.0);
+    turned += !ccw;
+  }
+  EXPECT_GT(crossing, 0);
+  EXPECT_GT(turned, 0);
+  EXPECT_NE(parts_list_json(thick).find("\"folded_inner_faces\": [\"" + thick.folded_inner_faces.front() + "\""),
+            std::string::npos);
+  opt.thickness = 0.00002;
+  const PartsList thin = make_parts_list(r->panels(), opt);
+  EXPECT_TRUE(thin.folded_inner_faces.empty());
+  EXPECT_TRUE(folded_by_hand(thin).empty());
+  EXPECT_NE(parts_list_json(thin).find("\"folded_inner_faces\": []"), std::string::npos);
+}
+
 TEST(SolidPanels, ClosedPrisms) {
   for (const MaterialSide side : {MaterialSide::Inside, MaterialSide::Outside}) {
     const std::string obj = solid_panels_obj(testing::unit_cube(), 0.1, side);
