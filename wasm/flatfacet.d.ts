@@ -110,6 +110,9 @@ export interface SpreadNodes extends Status {
   maxSpread: number; // designer's units
   // Nodes whose panels' inner vertices miss one point (the extra chamfering they need).
   nodes: { vertex: number; position: [number, number, number]; spread: number; panels: string[] }[];
+  // Labels of the parts whose inner face folds over at this thickness (too thick for them):
+  // they cannot be cut as drawn (core/fabricate/parts_list.h, folded_inner_faces).
+  folded: string[];
 }
 
 // NURBS surfaces for Session.loadSurfaces (core/prepare/nurbs_json.h). Control point (i, j) is

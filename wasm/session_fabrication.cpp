@@ -157,6 +157,9 @@ std::string Session::spread_nodes() const {
       for (const std::string& label : n.panels) j.value(nullptr, label);
       j.end_array().end_object();
     }
+    j.end_array();
+    j.begin_array("folded");
+    for (const std::string& label : list.folded_inner_faces) j.value(nullptr, label);
     j.end_array().end_object();
     return j.str();
   });

@@ -83,6 +83,9 @@ test('20 mm panels: parts list, cut sheets and solid panels download; the thick 
 
     const stats = await page.locator('#fab-stats').textContent();
     assert.match(stats, /Max node spread\s*[\d.e-]+ mm/);
+    assert.match(stats, /Folded parts\s*0(?![\d:])/);
+    assert.equal(await page.locator('#fab-folded-hint').count(), 0);
+    assert.deepEqual(json.folded_inner_faces, []);
     assert.match(stats, /Sheets\s*\d+/);
     assert.match(stats, /Material use\s*[\d.]+ %/);
 
@@ -102,6 +105,27 @@ test('20 mm panels: parts list, cut sheets and solid panels download; the thick 
     await view.setContent(`<!doctype html><html><body style="margin:20px;background:#fff">${svg}</body></html>`);
     await view.screenshot({ path: join(repo, 'build', 'screenshots', 'saddle-40-cut-sheets.png'), fullPage: true });
     await view.close();
+  }));
+
+// Too thick for the panels (the helicoid is 20 m across, its 40 panels meet at up to 40
+// degrees): at 4 m the inner faces of some fold over; the page counts and names those parts
+// and says what to do. (The gentle saddle folds none even at 4 m: the chamfers decide.)
+test('parts too small for the thickness are named, with what to do', () =>
+  withPage(suite.url, async (page) => {
+    await waitForDone(page);
+    assert.equal(await solveAfter(page, () => selectExample(page, 'helicoid')), 120);
+    await setPanels(page, 40);
+    assert.equal(await solveAfter(page, () => remesh(page)), 40);
+    await setThickness(page, 4000);
+    const stats = await page.locator('#fab-stats').textContent();
+    const folded = stats.match(/Folded parts\s*(\d+): P\d+/);
+    assert.ok(folded && Number(folded[1]) > 0, stats);
+    assert.match(await page.locator('#fab-folded-hint').textContent(), /inner face folds over on \d+ parts?: they cannot be cut as drawn/);
+    const json = JSON.parse((await download(page, 'Parts list JSON')).text);
+    assert.equal(json.folded_inner_faces.length, Number(folded[1]));
+    await screenshot(page, 'helicoid-40-folded-parts');
+    await setThickness(page, 20);
+    assert.equal(await page.locator('#fab-folded-hint').count(), 0, 'gone at a thickness the panels can take');
   }));
 
 test('a share link carries the fabrication settings', () =>

@@ -3,6 +3,7 @@
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
 import { DEFAULT_FABRICATION, toFabricationParams, validateFabrication } from '../../build/web-tests/fabricationParams.js';
+import { fabricationRows, foldedHint } from '../../build/web-tests/fabricationStats.js';
 import { DEFAULT_PARAMS, LIMITS, toRemeshParams, validateParams } from '../../build/web-tests/params.js';
 import { hashToState, stateToHash } from '../../build/web-tests/share.js';
 
@@ -87,4 +88,21 @@ test('glass mode and the minimum corner angle: validated, defaulted for old link
   const link = hashToState(stateToHash({ mesh, params: glass.value, history: [] }));
   assert.equal(link.ok, true, link.message);
   assert.deepEqual(link.value.params, glass.value);
+});
+
+test('parts whose inner face folds over are counted and named, with what to do', () => {
+  const result = (thickness, folded) => ({
+    partsCsv: '', partsJson: '{}', solidObj: null, innerPositions: new Float64Array(),
+    sheets: { ok: true, svg: '', dxf: '', stats: { sheets: 1, materialUse: 0.5 } },
+    spread: { ok: true, message: '', units: 'mm', thickness, maxSpread: 0, nodes: [], folded },
+  });
+  const row = (r) => fabricationRows(r).find((x) => x.label === 'Folded parts');
+  assert.equal(row(result(0, [])), undefined, 'no row without a thickness');
+  assert.equal(foldedHint(result(0, [])), null);
+  assert.equal(row(result(20, [])).value, '0');
+  assert.equal(foldedHint(result(20, [])), null);
+  const many = ['P2', 'P6', 'P8', 'P9', 'P13', 'P14', 'P15'];
+  assert.equal(row(result(20, many)).value, '7: P2, P6, P8, P9, P13, P14, …');
+  assert.match(foldedHint(result(20, many)), /At 20 mm the inner face folds over on 7 parts: they cannot be cut as drawn\. Use thinner material/);
+  assert.match(foldedHint(result(2, ['P5'])), /on 1 part:/);
 });

@@ -17,6 +17,15 @@ export function fabricationRows(result: FabricationResult): FabricationRow[] {
       hint: 'how far apart the inner corners of the panels meeting at a node are: the extra chamfering that node needs',
     },
   ];
+  if (spread.thickness > 0) {
+    const folded = spread.folded;
+    const shown = folded.slice(0, 6).join(', ') + (folded.length > 6 ? ', …' : '');
+    rows.push({
+      label: 'Folded parts',
+      value: folded.length === 0 ? '0' : `${folded.length}: ${shown}`,
+      hint: 'parts whose inner face folds over at this thickness: they cannot be cut as drawn',
+    });
+  }
   if (result.sheets.ok) {
     rows.push({ label: 'Sheets', value: String(result.sheets.stats.sheets), hint: 'sheets the cut parts are packed onto' });
     rows.push({ label: 'Material use', value: `${(100 * result.sheets.stats.materialUse).toFixed(1)} %`, hint: 'panel area / sheet area' });
@@ -33,10 +42,25 @@ export function sheetFitHint(result: FabricationResult, meshUnits: string): stri
   return `${result.sheets.message}. The mesh is read in ${meshUnits} (Mesh units): if it was modelled in other units, set them; otherwise choose a larger sheet.`;
 }
 
+// What to do about parts too thick for their panels, in words; null when none fold.
+export function foldedHint(result: FabricationResult): string | null {
+  const n = result.spread.thickness > 0 ? result.spread.folded.length : 0;
+  if (n === 0) return null;
+  return `At ${Number(result.spread.thickness.toPrecision(3))} ${result.spread.units} the inner face folds over on ${n} part${n === 1 ? '' : 's'}: they cannot be cut as drawn. Use thinner material, or fewer and larger panels.`;
+}
+
 export function renderFabricationStats(container: HTMLElement, result: FabricationResult | null, meshUnits = 'm'): void {
   container.replaceChildren();
   if (!result) return;
   container.append(statsList(fabricationRows(result)));
+  const folded = foldedHint(result);
+  if (folded) {
+    const note = document.createElement('p');
+    note.className = 'hint note';
+    note.id = 'fab-folded-hint';
+    note.textContent = folded;
+    container.append(note);
+  }
   const hint = sheetFitHint(result, meshUnits);
   if (hint) {
     const note = document.createElement('p');
