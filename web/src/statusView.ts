@@ -44,9 +44,17 @@ export class StatusView {
   }
 
   private pendingProgress: { progress: Progress; elapsedSeconds: number } | null = null;
+  private shownAttempt = 1;
 
-  // Steps can come faster than frames: draw the latest progress once per frame.
+  // Steps can come faster than frames: draw the latest progress once per frame. A new attempt
+  // (a retry) is drawn at once: a small retry can be over within a frame, and the line must
+  // still have said so (screen readers announce each change of role="status").
   showProgress(progress: Progress, elapsedSeconds: number): void {
+    if (progress.attempt !== this.shownAttempt) {
+      this.shownAttempt = progress.attempt;
+      this.drawProgress(progress, elapsedSeconds);
+      return;
+    }
     const scheduled = this.pendingProgress !== null;
     this.pendingProgress = { progress, elapsedSeconds };
     if (scheduled) return;
