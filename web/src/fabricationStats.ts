@@ -53,20 +53,13 @@ export function renderFabricationStats(container: HTMLElement, result: Fabricati
   container.replaceChildren();
   if (!result) return;
   container.append(statsList(fabricationRows(result)));
-  const folded = foldedHint(result);
-  if (folded) {
+  // Notes under the numbers: folded parts first, then sheets the parts do not fit.
+  for (const [id, text] of [['fab-folded-hint', foldedHint(result)], ['fab-fit-hint', sheetFitHint(result, meshUnits)]] as const) {
+    if (!text) continue;
     const note = document.createElement('p');
     note.className = 'hint note';
-    note.id = 'fab-folded-hint';
-    note.textContent = folded;
-    container.append(note);
-  }
-  const hint = sheetFitHint(result, meshUnits);
-  if (hint) {
-    const note = document.createElement('p');
-    note.className = 'hint note';
-    note.id = 'fab-fit-hint';
-    note.textContent = hint;
+    note.id = id;
+    note.textContent = text;
     container.append(note);
   }
 }
