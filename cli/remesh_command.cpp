@@ -17,8 +17,8 @@
 #include "cli/output.h"
 #include "cli/remesh_report.h"
 #include "core/density/direction_expression.h"
-#include "core/fabricate/number_text.h"
 #include "core/density/expression.h"
+#include "core/fabricate/number_text.h"
 #include "core/mesh/mesh_io.h"
 #include "core/panels/panel_export.h"
 #include "core/prepare/prepare.h"
@@ -245,7 +245,10 @@ int run_remesh(const std::vector<std::string>& argv) {
     write_files_atomic(outputs);
   // Written, like invalid panels (exit 3): the designer sees the parts and can choose a
   // thinner material or larger panels.
-  if (!folded.empty()) std::fputs(folded_parts_line(folded, o.fabrication.options.thickness, unit_name(o.fabrication.options.units)).c_str(), stderr);
+  if (!folded.empty()) {
+    const FabricationOptions& fab = o.fabrication.options;
+    std::fputs(folded_parts_line(folded, fab.thickness, unit_name(fab.units)).c_str(), stderr);
+  }
   return all_panels_valid(remesher.panels(), quality) && folded.empty() ? 0 : 3;
 }
 

@@ -249,7 +249,8 @@ QualityReport measure_quality(const TriMesh& input, const MeshTopology& input_to
     std::vector<Vec3> by_source(np, Vec3::Zero());
     for (size_t p = 0; p < np; ++p) {
       const int source = panels.panel_source[p];
-      if (source < 0 || static_cast<size_t>(source) >= np) throw InputError("quality: panel_source names a missing panel");
+      if (source < 0 || static_cast<size_t>(source) >= np)
+        throw InputError("quality: panel_source names a missing panel");
       by_source[static_cast<size_t>(source)] += face_normal_sum[p];
     }
     for (size_t p = 0; p < np; ++p) face_normal_sum[p] = by_source[static_cast<size_t>(panels.panel_source[p])];

@@ -108,8 +108,6 @@ TEST(PartsList, CsvAndJson) {
   EXPECT_NE(json.find("\"chamfer_deg\": 45"), std::string::npos);
 }
 
-// Each solid panel is closed and oriented: every directed edge once, its reverse once, and
-// (for the cube, inside) the prism's volume positive.
 // A thickness too large for a panel (its size and its chamfers) makes its inner face fold
 // over: the offset edges pass each other, the outline turns clockwise or crosses itself.
 // The parts list names those parts rather than drawing them as if they could be made.
@@ -149,6 +147,8 @@ TEST(PartsList, NamesThePartsWhoseInnerFaceFoldsOver) {
   EXPECT_NE(parts_list_json(thin).find("\"folded_inner_faces\": []"), std::string::npos);
 }
 
+// Each solid panel is closed and oriented: every directed edge once, its reverse once, and
+// (for the cube, inside) the prism's volume positive.
 TEST(SolidPanels, ClosedPrisms) {
   for (const MaterialSide side : {MaterialSide::Inside, MaterialSide::Outside}) {
     const std::string obj = solid_panels_obj(testing::unit_cube(), 0.1, side);
