@@ -113,6 +113,7 @@ export interface SpreadNodes extends Status {
   // Labels of the parts whose inner face folds over at this thickness (too thick for them):
   // they cannot be cut as drawn (core/fabricate/parts_list.h, folded_inner_faces).
   folded: string[];
+  foldedPanels: number[]; // the same parts, as panel indices (0-based, as panelOffsets)
 }
 
 // NURBS surfaces for Session.loadSurfaces (core/prepare/nurbs_json.h). Control point (i, j) is

@@ -1,5 +1,6 @@
 // The Session's fabrication outputs (session.h): the parts list, cut sheets, solid panels and
 // the thick-panel view, all from the current panels and the fabrication settings.
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -160,6 +161,13 @@ std::string Session::spread_nodes() const {
     j.end_array();
     j.begin_array("folded");
     for (const std::string& label : list.folded_inner_faces) j.value(nullptr, label);
+    j.end_array();
+    // The same parts by panel index, for the view to outline them.
+    j.begin_array("foldedPanels");
+    for (const PartRow& row : list.rows)
+      if (std::find(list.folded_inner_faces.begin(), list.folded_inner_faces.end(), row.part.label) !=
+          list.folded_inner_faces.end())
+        j.value(nullptr, row.part.panel);
     j.end_array().end_object();
     return j.str();
   });

@@ -28,6 +28,28 @@ async function setThickness(page, value) {
   });
 }
 
+// Pixels of the view near the folded parts' outline colour (thickLayer.ts, 0xe040fb), counted
+// by the browser's own PNG decoder; the legend lines over the view (whose swatch has that
+// colour) are hidden for the screenshot.
+async function magentaPixels(page) {
+  await page.evaluate(() => document.querySelector('.fab-legends').style.setProperty('visibility', 'hidden'));
+  const png = await page.locator('#viewport canvas').screenshot();
+  await page.evaluate(() => document.querySelector('.fab-legends').style.removeProperty('visibility'));
+  return page.evaluate(async (data) => {
+    const image = new Image();
+    image.src = `data:image/png;base64,${data}`;
+    await image.decode();
+    const canvas = new OffscreenCanvas(image.width, image.height);
+    const context = canvas.getContext('2d');
+    context.drawImage(image, 0, 0);
+    const pixels = context.getImageData(0, 0, image.width, image.height).data;
+    let count = 0;
+    for (let i = 0; i < pixels.length; i += 4)
+      if (Math.abs(pixels[i] - 224) < 24 && Math.abs(pixels[i + 1] - 64) < 24 && Math.abs(pixels[i + 2] - 251) < 24) count++;
+    return count;
+  }, png.toString('base64'));
+}
+
 async function saddle(page, panels) {
   await waitForDone(page);
   assert.equal(await solveAfter(page, () => selectExample(page, 'saddle')), 120);
@@ -123,9 +145,23 @@ test('parts too small for the thickness are named, with what to do', () =>
     assert.match(await page.locator('#fab-folded-hint').textContent(), /inner face folds over on \d+ parts?: they cannot be cut as drawn/);
     const json = JSON.parse((await download(page, 'Parts list JSON')).text);
     assert.equal(json.folded_inner_faces.length, Number(folded[1]));
+    // The view outlines the same parts in magenta, with a legend line; the outline goes with
+    // the problems toggle and with a thickness the panels can take.
+    const legend = page.locator('#folded-legend');
+    await legend.waitFor({ state: 'visible' });
+    assert.match(await legend.textContent(), new RegExp(`^\\s*${folded[1]} parts? whose inner face folds over`));
+    const outlined = await magentaPixels(page);
+    assert.ok(outlined > 200, `${outlined} magenta pixels`);
     await screenshot(page, 'helicoid-40-folded-parts');
+    await page.getByLabel('Show problems').uncheck();
+    await page.waitForTimeout(300);
+    assert.equal(await magentaPixels(page), 0, 'the outline hides with the problems');
+    await page.getByLabel('Show problems').check();
     await setThickness(page, 20);
     assert.equal(await page.locator('#fab-folded-hint').count(), 0, 'gone at a thickness the panels can take');
+    assert.equal(await legend.isHidden(), true);
+    await page.waitForTimeout(300);
+    assert.equal(await magentaPixels(page), 0, 'no outline at 20 mm');
   }));
 
 test('a share link carries the fabrication settings', () =>

@@ -149,12 +149,86 @@ test('solid panels and the thick view need a thickness; nodes report their sprea
   s.delete();
 });
 
+// Folded parts by label (for people) and by panel index (for the view): the same parts, and
+// exactly those whose inner outline, seen along the panel's outward normal, is not a
+// counter-clockwise simple polygon like the outer one.
+test('parts folded by a thickness too large are listed by label and by panel', () => {
+  const s = solved('helicoid', 40);
+  assert.equal(json(s.setFabrication(JSON.stringify({ thickness: 4000, units: 'mm', meshUnits: 'm' }))).ok, true);
+  const spread = json(s.spreadNodes());
+  assert.ok(spread.folded.length > 0, 'the helicoid at 4 m folds some parts');
+  assert.deepEqual(spread.foldedPanels.map((p) => `P${p + 1}`), spread.folded);
+  const positions = s.panelPositions();
+  const offsets = s.panelOffsets();
+  const indices = s.panelIndices();
+  const inner = s.innerPositions();
+  for (let p = 0; p + 1 < offsets.length; p++) {
+    const outer = [];
+    for (let c = offsets[p]; c < offsets[p + 1]; c++) outer.push([0, 1, 2].map((k) => positions[3 * indices[c] + k]));
+    const innerRing = [];
+    for (let c = offsets[p]; c < offsets[p + 1]; c++) innerRing.push([0, 1, 2].map((k) => inner[3 * c + k]));
+    const normal = newellNormal(outer);
+    const folded = !(signedArea(innerRing, normal) > 0 && isSimple(innerRing, normal));
+    assert.equal(spread.foldedPanels.includes(p), folded, `panel P${p + 1}`);
+  }
+  s.delete();
+});
+
+function newellNormal(ring) {
+  const n = [0, 0, 0];
+  ring.forEach((a, i) => {
+    const b = ring[(i + 1) % ring.length];
+    n[0] += (a[1] - b[1]) * (a[2] + b[2]);
+    n[1] += (a[2] - b[2]) * (a[0] + b[0]);
+    n[2] += (a[0] - b[0]) * (a[1] + b[1]);
+  });
+  const len = Math.hypot(...n);
+  return n.map((v) => v / len);
+}
+
+// The ring in 2D coordinates of the plane with normal n (right-handed: counter-clockwise
+// seen from n's side stays counter-clockwise).
+function flatten(ring, n) {
+  const helper = Math.abs(n[0]) < 0.9 ? [1, 0, 0] : [0, 1, 0];
+  const cross = (a, b) => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
+  const u = cross(helper, n);
+  const ul = Math.hypot(...u);
+  const e1 = u.map((v) => v / ul);
+  const e2 = cross(n, e1);
+  return ring.map((p) => [p[0] * e1[0] + p[1] * e1[1] + p[2] * e1[2], p[0] * e2[0] + p[1] * e2[1] + p[2] * e2[2]]);
+}
+
+function signedArea(ring, n) {
+  const q = flatten(ring, n);
+  let area = 0;
+  q.forEach((a, i) => {
+    const b = q[(i + 1) % q.length];
+    area += a[0] * b[1] - b[0] * a[1];
+  });
+  return area / 2;
+}
+
+// No two non-adjacent edges cross (proper crossings; touching counts as crossing).
+function isSimple(ring, n) {
+  const q = flatten(ring, n);
+  const orient = (a, b, c) => (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+  const m = q.length;
+  for (let i = 0; i < m; i++)
+    for (let j = i + 1; j < m; j++) {
+      if (j === i + 1 || (i === 0 && j === m - 1)) continue;
+      const [a, b, c, d] = [q[i], q[(i + 1) % m], q[j], q[(j + 1) % m]];
+      if (orient(a, b, c) * orient(a, b, d) <= 0 && orient(c, d, a) * orient(c, d, b) <= 0) return false;
+    }
+  return true;
+}
+
 test('without panels the fabrication outputs are empty, not errors', () => {
   const s = new ff.Session();
   assert.equal(json(s.setFabrication('{}')).ok, true);
   assert.equal(json(s.partsJson()).totals.panels, 0);
   assert.ok(!isStatus(s.partsCsv()));
   assert.equal(json(s.spreadNodes()).nodes.length, 0);
+  assert.deepEqual(json(s.spreadNodes()).foldedPanels, []);
   assert.equal(s.innerPositions().length, 0);
   s.delete();
 });

@@ -27,6 +27,8 @@ export class FabricationPanel {
   private readonly statsBox = element('fab-stats', HTMLDivElement);
   private readonly legend = element('spread-legend', HTMLDivElement);
   private readonly legendText = element('spread-legend-text', HTMLSpanElement);
+  private readonly foldedLegend = element('folded-legend', HTMLDivElement);
+  private readonly foldedLegendText = element('folded-legend-text', HTMLSpanElement);
   private readonly buttons = {
     csv: element('export-parts', HTMLButtonElement),
     json: element('export-parts-json', HTMLButtonElement),
@@ -132,8 +134,10 @@ export class FabricationPanel {
     this.panelThickness.setResult(this.result);
     renderFabricationStats(this.statsBox, this.result, this.settings.meshUnits);
     const marked = this.host.viewer.setFabrication(this.result?.innerPositions ?? null, this.result?.spread ?? null);
-    this.legend.hidden = marked === 0;
-    this.legendText.textContent = `${marked} node${marked === 1 ? '' : 's'} needing extra chamfer (inner corners up to ${this.result ? Number(this.result.spread.maxSpread.toPrecision(3)) : 0} ${this.result?.spread.units ?? ''} apart)`;
+    this.legend.hidden = marked.nodes === 0;
+    this.legendText.textContent = `${marked.nodes} node${marked.nodes === 1 ? '' : 's'} needing extra chamfer (inner corners up to ${this.result ? Number(this.result.spread.maxSpread.toPrecision(3)) : 0} ${this.result?.spread.units ?? ''} apart)`;
+    this.foldedLegend.hidden = marked.folded === 0;
+    this.foldedLegendText.textContent = `${marked.folded} part${marked.folded === 1 ? '' : 's'} whose inner face folds over at this thickness (outlined)`;
     this.update();
   }
 

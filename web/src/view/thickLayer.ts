@@ -1,12 +1,18 @@
 // Thick panels: each panel's inner face (the offset plane, cut by the chamfers) and its side
-// walls, as one mesh under the panels; and the nodes whose panels' inner corners miss one
-// point (the extra chamfering they need) as markers in the problem colour.
+// walls, as one mesh under the panels; the nodes whose panels' inner corners miss one point
+// (the extra chamfering they need) as markers in the problem colour; and the parts whose inner
+// face folds over at this thickness (they cannot be cut as drawn) outlined in magenta, a colour
+// no other problem uses, so they read apart from invalid panels and flipped edges.
 import * as THREE from 'three';
+import { LineMaterial } from 'three/examples/jsm/lines/LineMaterial.js';
+import { LineSegments2 } from 'three/examples/jsm/lines/LineSegments2.js';
+import { LineSegmentsGeometry } from 'three/examples/jsm/lines/LineSegmentsGeometry.js';
 import type { SpreadNodes } from '@flatfacet/wasm';
 import type { SolveResult } from '../protocol.ts';
 import { PROBLEM_RED } from './colors.ts';
 
 const MATERIAL_COLOUR = 0xc9a77c; // plywood
+export const FOLDED_COLOUR = 0xe040fb; // magenta (styles.css .legend-dash)
 
 // Spread above this share of the thickness counts (the core lists anything above 1e-9).
 export const SPREAD_TOLERANCE = 1e-6;
@@ -14,6 +20,9 @@ export const SPREAD_TOLERANCE = 1e-6;
 export class ThickLayer {
   readonly solid: THREE.Mesh<THREE.BufferGeometry, THREE.MeshStandardMaterial>;
   readonly markers: THREE.Points<THREE.BufferGeometry, THREE.PointsMaterial>;
+  readonly folded: LineSegments2;
+  private readonly foldedMaterial = new LineMaterial({ color: FOLDED_COLOUR, linewidth: 3, depthTest: false });
+  foldedShown = false; // some part is outlined (the viewer shows the outline with the problems)
 
   constructor() {
     this.solid = new THREE.Mesh(
@@ -27,12 +36,17 @@ export class ThickLayer {
     this.markers = new THREE.Points(new THREE.BufferGeometry(), new THREE.PointsMaterial({ color: red, size: 8, sizeAttenuation: false, depthTest: false }));
     this.markers.name = 'spread-nodes';
     this.markers.renderOrder = 10;
+    this.folded = new LineSegments2(new LineSegmentsGeometry(), this.foldedMaterial);
+    this.folded.name = 'folded-parts';
+    this.folded.renderOrder = 10;
   }
 
-  // Nothing shows unless the inner corners match the result's panels.
-  set(result: SolveResult | null, inner: Float64Array | null, spread: SpreadNodes | null, origin: THREE.Vector3): number {
+  // Nothing shows unless the inner corners match the result's panels. Returns how many nodes
+  // and folded parts are marked.
+  set(result: SolveResult | null, inner: Float64Array | null, spread: SpreadNodes | null, origin: THREE.Vector3): { nodes: number; folded: number } {
     this.solid.geometry.dispose();
     this.markers.geometry.dispose();
+    this.folded.geometry.dispose();
     const usable = result !== null && inner !== null && inner.length > 0 && inner.length === result.panelIndices.length * 3;
     this.solid.geometry = usable ? solidGeometry(result, inner, origin) : new THREE.BufferGeometry();
     const nodes = spread && spread.thickness > 0 ? spread.nodes.filter((n) => n.spread > SPREAD_TOLERANCE * spread.thickness) : [];
@@ -42,8 +56,39 @@ export class ThickLayer {
     });
     this.markers.geometry = new THREE.BufferGeometry();
     this.markers.geometry.setAttribute('position', new THREE.BufferAttribute(points, 3));
-    return nodes.length;
+    const folded = result !== null && spread !== null && spread.thickness > 0 ? spread.foldedPanels.filter((p) => p + 1 < result.panelOffsets.length) : [];
+    const outline = result !== null ? outlineSegments(result, folded, origin) : new Float32Array();
+    this.folded.geometry = new LineSegmentsGeometry();
+    if (outline.length >= 6) this.folded.geometry.setPositions(outline);
+    this.foldedShown = outline.length >= 6;
+    return { nodes: nodes.length, folded: folded.length };
   }
+
+  // LineMaterial measures its width in pixels of the drawing buffer.
+  setResolution(width: number, height: number): void {
+    this.foldedMaterial.resolution.set(width, height);
+  }
+}
+
+// Each panel's boundary as line segments (corner to next corner), shifted by `origin`.
+function outlineSegments(result: SolveResult, panels: number[], origin: THREE.Vector3): Float32Array {
+  let corners = 0;
+  for (const p of panels) corners += result.panelOffsets[p + 1]! - result.panelOffsets[p]!;
+  const out = new Float32Array(corners * 6);
+  let i = 0;
+  const push = (corner: number): void => {
+    const v = result.panelIndices[corner]!;
+    for (let k = 0; k < 3; k++) out[i++] = result.panelPositions[v * 3 + k]! - origin.getComponent(k);
+  };
+  for (const p of panels) {
+    const start = result.panelOffsets[p]!;
+    const end = result.panelOffsets[p + 1]!;
+    for (let a = start; a < end; a++) {
+      push(a);
+      push(a + 1 < end ? a + 1 : start);
+    }
+  }
+  return out;
 }
 
 function solidGeometry(result: SolveResult, inner: Float64Array, origin: THREE.Vector3): THREE.BufferGeometry {

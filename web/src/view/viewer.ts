@@ -61,7 +61,7 @@ export class Viewer {
     headlight.position.set(0.4, 0.8, 1);
     this.camera.add(headlight); // lights what the camera sees, from any side
     this.scene.add(this.camera);
-    this.scene.add(this.input.mesh, this.panels.faces, this.panels.edges, this.problems.group, this.thick.solid, this.thick.markers);
+    this.scene.add(this.input.mesh, this.panels.faces, this.panels.edges, this.problems.group, this.thick.solid, this.thick.markers, this.thick.folded);
     this.selection.renderOrder = 11;
     this.selection.name = 'selected-panel';
     this.scene.add(this.selection);
@@ -121,6 +121,7 @@ export class Viewer {
     this.camera.updateProjectionMatrix();
     const buffer = this.renderer.getDrawingBufferSize(new THREE.Vector2());
     this.problems.setResolution(buffer.x, buffer.y);
+    this.thick.setResolution(buffer.x, buffer.y);
     this.requestRender();
   }
 
@@ -192,9 +193,9 @@ export class Viewer {
     this.applyVisibility();
   }
 
-  // The thick panels and the nodes needing extra chamfer, for the result on show (ignored
-  // when they do not match it). Returns how many nodes are marked.
-  setFabrication(inner: Float64Array | null, spread: SpreadNodes | null): number {
+  // The thick panels, the nodes needing extra chamfer and the folded parts, for the result on
+  // show (ignored when they do not match it). Returns how many nodes and parts are marked.
+  setFabrication(inner: Float64Array | null, spread: SpreadNodes | null): { nodes: number; folded: number } {
     const marked = this.thick.set(this.result, inner, spread, this.origin);
     this.applyVisibility();
     return marked;
@@ -256,6 +257,7 @@ export class Viewer {
     this.problems.group.visible = showPanels && this.toggles.problems && !this.toggles.beforeFix;
     this.thick.solid.visible = showPanels && this.toggles.thick && !this.toggles.beforeFix;
     this.thick.markers.visible = showPanels && this.toggles.problems && !this.toggles.beforeFix;
+    this.thick.folded.visible = this.thick.markers.visible && this.thick.foldedShown;
     this.selection.visible = showPanels && !this.toggles.beforeFix;
     // The surface shows when panels do not cover it: during a solve, before any, or on request.
     this.input.mesh.visible = this.solving || !showPanels || this.toggles.clusters || !this.toggles.panels;
@@ -265,6 +267,7 @@ export class Viewer {
       this.problems.group.visible = false;
       this.thick.solid.visible = false;
       this.thick.markers.visible = false;
+      this.thick.folded.visible = false;
       this.selection.visible = false;
     }
     this.requestRender();
