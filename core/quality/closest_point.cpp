@@ -29,20 +29,25 @@ double box_distance2(const Vec3& q, const Vec3& lo, const Vec3& hi) {
   return d.squaredNorm();
 }
 
-}  // namespace
-
-Vec3 closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+// Slivers (sine of every angle below 1e-14) are segments: the region tests of
+// closest_on_proper_triangle divide by squared edge lengths and the squared normal.
+bool is_sliver(const Vec3& a, const Vec3& b, const Vec3& c) {
   const Vec3 ab = b - a, ac = c - a;
-  // Slivers (sine of every angle below 1e-14) are segments: the region tests below divide
-  // by squared edge lengths and the squared normal.
-  if (ab.cross(ac).squaredNorm() <= 1e-28 * ab.squaredNorm() * ac.squaredNorm()) {
-    const Vec3 candidates[3] = {closest_on_segment(p, a, b), closest_on_segment(p, b, c), closest_on_segment(p, c, a)};
-    const Vec3* best = &candidates[0];
-    for (const Vec3& x : candidates) {
-      if ((x - p).squaredNorm() < (*best - p).squaredNorm()) best = &x;
-    }
-    return *best;
+  return ab.cross(ac).squaredNorm() <= 1e-28 * ab.squaredNorm() * ac.squaredNorm();
+}
+
+Vec3 closest_on_sliver(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 candidates[3] = {closest_on_segment(p, a, b), closest_on_segment(p, b, c), closest_on_segment(p, c, a)};
+  const Vec3* best = &candidates[0];
+  for (const Vec3& x : candidates) {
+    if ((x - p).squaredNorm() < (*best - p).squaredNorm()) best = &x;
   }
+  return *best;
+}
+
+// Ericson's region tests, for a triangle that is not a sliver.
+Vec3 closest_on_proper_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 ab = b - a, ac = c - a;
   const Vec3 ap = p - a;
   const double d1 = ab.dot(ap), d2 = ac.dot(ap);
   if (d1 <= 0.0 && d2 <= 0.0) return a;  // vertex region A
@@ -63,6 +68,12 @@ Vec3 closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, cons
   const double denom = va + vb + vc;
   if (!(denom > 0.0)) return closest_on_segment(p, a, b);  // unreachable unless rounding
   return a + (vb / denom) * ab + (vc / denom) * ac;        // inside the face
+}
+
+}  // namespace
+
+Vec3 closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  return is_sliver(a, b, c) ? closest_on_sliver(p, a, b, c) : closest_on_proper_triangle(p, a, b, c);
 }
 
 // Build-time record, partitioned in place: contiguous, so each level is a streaming pass.
@@ -96,15 +107,28 @@ TriangleTree::TriangleTree(const std::vector<Vec3>& vertices, const std::vector<
     nodes_.reserve(m);  // leaves hold >= 2 triangles: fewer than m nodes
     build(0, static_cast<int>(m), items);
   }
+  parent_.assign(nodes_.size(), -1);
+  leaf_of_.resize(m);
+  for (size_t n = 0; n < nodes_.size(); ++n) {
+    const Node& node = nodes_[n];
+    if (node.count > 0) {
+      for (int s = node.first; s < node.first + node.count; ++s) leaf_of_[static_cast<size_t>(s)] = static_cast<int>(n);
+    } else {
+      parent_[n + 1] = static_cast<int>(n);
+      parent_[static_cast<size_t>(node.first)] = static_cast<int>(n);
+    }
+  }
   order_.resize(m);
   slot_of_.resize(m);
   corners_.resize(3 * m);
+  sliver_.resize(m);
   for (size_t s = 0; s < m; ++s) {
     const int t = items[s].index;
     order_[s] = t;
     slot_of_[static_cast<size_t>(t)] = static_cast<int>(s);
     for (size_t j = 0; j < 3; ++j)
       corners_[3 * s + j] = vertices[static_cast<size_t>(triangles[static_cast<size_t>(t)][j])];
+    sliver_[s] = is_sliver(corners_[3 * s], corners_[3 * s + 1], corners_[3 * s + 2]);
   }
   // Boxes bottom-up: in depth-first order both children come after their parent.
   for (size_t n = nodes_.size(); n-- > 0;) {
@@ -184,7 +208,8 @@ int TriangleTree::build(int begin, int end, std::vector<Item>& items) {
 
 void TriangleTree::test_triangle(const Vec3& q, int slot, ClosestPoint& best, double& best2) const {
   const size_t s = static_cast<size_t>(slot);
-  const Vec3 x = closest_point_on_triangle(q, corners_[3 * s], corners_[3 * s + 1], corners_[3 * s + 2]);
+  const Vec3 &a = corners_[3 * s], &b = corners_[3 * s + 1], &c = corners_[3 * s + 2];
+  const Vec3 x = sliver_[s] ? closest_on_sliver(q, a, b, c) : closest_on_proper_triangle(q, a, b, c);
   const double d2 = (x - q).squaredNorm();
   if (d2 < best2) {
     best2 = d2;
@@ -193,21 +218,13 @@ void TriangleTree::test_triangle(const Vec3& q, int slot, ClosestPoint& best, do
   }
 }
 
-ClosestPoint TriangleTree::closest_point(const Vec3& q, int hint, double good_enough) const {
-  ClosestPoint best;
-  double best2 = std::numeric_limits<double>::infinity();
-  if (nodes_.empty()) {
-    best.distance = best2;
-    return best;
-  }
-  const double enough2 = good_enough > 0.0 ? good_enough * good_enough : -1.0;
-  if (hint >= 0 && hint < num_triangles()) test_triangle(q, slot_of_[static_cast<size_t>(hint)], best, best2);
-
+void TriangleTree::search(const Vec3& q, int root, double enough2, ClosestPoint& best, double& best2) const {
   // Every split leaves at most 3/4 of a range on each side, so depth <= log(m) / log(4/3)
   // (48 for a million triangles), and each level leaves at most one pending node.
   std::array<std::pair<int, double>, 128> stack;
   int top = 0;
-  stack[static_cast<size_t>(top++)] = {0, box_distance2(q, nodes_[0].lo, nodes_[0].hi)};
+  const Node& start = nodes_[static_cast<size_t>(root)];
+  stack[static_cast<size_t>(top++)] = {root, box_distance2(q, start.lo, start.hi)};
   while (top > 0 && best2 > enough2) {
     const auto [index, d2] = stack[static_cast<size_t>(--top)];
     if (d2 >= best2) continue;
@@ -227,6 +244,33 @@ ClosestPoint TriangleTree::closest_point(const Vec3& q, int hint, double good_en
     if (df < best2) stack[static_cast<size_t>(top++)] = {far, df};
     if (dn < best2) stack[static_cast<size_t>(top++)] = {near, dn};
   }
+}
+
+ClosestPoint TriangleTree::closest_point(const Vec3& q, int hint, double good_enough) const {
+  ClosestPoint best;
+  double best2 = std::numeric_limits<double>::infinity();
+  if (nodes_.empty()) {
+    best.distance = best2;
+    return best;
+  }
+  const double enough2 = good_enough > 0.0 ? good_enough * good_enough : -1.0;
+  if (hint >= 0 && hint < num_triangles()) {
+    const int slot = slot_of_[static_cast<size_t>(hint)];
+    test_triangle(q, slot, best, best2);
+    if (enough2 >= 0.0 && best2 > enough2) {
+      // Any triangle within good_enough will do, and one is most likely near the hint:
+      // search the smallest subtree above the hint's leaf whose box holds q first. The
+      // answer is still exact when none is good enough (the whole tree is searched next).
+      int node = parent_[static_cast<size_t>(leaf_of_[static_cast<size_t>(slot)])];
+      while (node > 0) {
+        const Node& n = nodes_[static_cast<size_t>(node)];
+        if (box_distance2(q, n.lo, n.hi) == 0.0) break;
+        node = parent_[static_cast<size_t>(node)];
+      }
+      if (node > 0) search(q, node, enough2, best, best2);
+    }
+  }
+  if (best2 > enough2) search(q, 0, enough2, best, best2);
   best.distance = std::sqrt(best2);
   return best;
 }

@@ -31,6 +31,8 @@ class TriangleTree {
   // good_enough > 0: stop at the first triangle found within that distance; the answer is
   // then that triangle, not necessarily the closest (a max-of-min search such as Hausdorff
   // only needs to know a sample is not farther than its current maximum). Exact otherwise.
+  // With both, when the hint is not good enough the search first looks in the smallest
+  // subtree around the hint whose box holds q (a few levels up, not from the root).
   ClosestPoint closest_point(const Vec3& q, int hint = -1, double good_enough = 0.0) const;
 
   int num_triangles() const { return static_cast<int>(order_.size()); }
@@ -44,12 +46,17 @@ class TriangleTree {
   struct Item;
   int build(int begin, int end, std::vector<Item>& items);
   void test_triangle(const Vec3& q, int slot, ClosestPoint& best, double& best2) const;
+  // Nearest-first search of the subtree at `root`, pruned by best2, until best2 <= enough2.
+  void search(const Vec3& q, int root, double enough2, ClosestPoint& best, double& best2) const;
 
   std::vector<Node> nodes_;
   std::vector<int> order_;  // slot -> original triangle index
   // Per slot, the three corners, stored contiguously in leaf order for locality.
   std::vector<Vec3> corners_;
+  std::vector<char> sliver_;  // per slot: a sliver, measured as a segment (closest_point_on_triangle)
   std::vector<int> slot_of_;  // original triangle index -> slot (for hints)
+  std::vector<int> parent_;   // per node: its parent (-1 for the root)
+  std::vector<int> leaf_of_;  // per slot: the leaf holding it
 };
 
 }  // namespace ff

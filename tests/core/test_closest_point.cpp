@@ -48,17 +48,26 @@ TEST(ClosestPoint, TreeMatchesBruteForce) {
                                                            soup.positions[static_cast<size_t>(tri[2])]),
                                  1e-15));
   }
-  // good_enough: any triangle within it ends the search; beyond it the answer is exact.
-  for (int i = 0; i < 200; ++i) {
+  // good_enough: any triangle within it ends the search; beyond it the answer is exact. With
+  // a hint too, the search starts in the subtree around the hint (the Hausdorff queries), and
+  // the contract is the same: hints near and far, bounds loose and tight.
+  int exact_beyond = 0, within = 0;
+  for (int i = 0; i < 600; ++i) {
     const Vec3 q = 2.0 * r() - Vec3::Constant(0.5);
     const ClosestPoint exact = tree.closest_point(q);
-    const ClosestPoint quick = tree.closest_point(q, -1, 0.1);
-    if (exact.distance > 0.1) {
+    const double enough = i % 3 == 0 ? 0.1 : i % 3 == 1 ? 0.02 : 0.3;
+    const int hint = i % 4 == 0 ? -1 : i % 4 == 1 ? exact.triangle : (i * 37) % 700;
+    const ClosestPoint quick = tree.closest_point(q, hint, enough);
+    if (exact.distance > enough) {
       EXPECT_EQ(quick.distance, exact.distance);
+      ++exact_beyond;
     } else {
-      EXPECT_LE(quick.distance, 0.1);
+      EXPECT_LE(quick.distance, enough);
+      ++within;
     }
   }
+  EXPECT_GT(exact_beyond, 50);
+  EXPECT_GT(within, 50);
   EXPECT_TRUE(std::isinf(TriangleTree(TriMesh{}).closest_point(Vec3::Zero()).distance));
   EXPECT_THROW(TriangleTree({Vec3::Zero()}, {Triangle{0, 0, 1}}), InputError);
 }

@@ -372,6 +372,44 @@ TEST(Quality, HausdorffIsDeterministicAndSamplesEnough) {
   EXPECT_THROW(hausdorff_distance(sphere, icosahedron(), -1), InputError);
 }
 
+// The reference: every sample in sample order, measured exactly, the first of the largest
+// the worst. hausdorff_distance visits the samples in another order with early stops; it
+// must give the same numbers and the same worst points, ties included.
+HausdorffResult hausdorff_by_brute_force(const TriMesh& a, const TriMesh& b, int samples) {
+  const auto directed = [](const std::vector<Vec3>& points, const TriMesh& target, double& distance, Vec3& worst) {
+    const TriangleTree tree(target);
+    distance = 0.0;
+    worst = Vec3::Zero();
+    for (const Vec3& p : points) {
+      const double d = tree.closest_point(p).distance;
+      if (d > distance) distance = d, worst = p;
+    }
+  };
+  HausdorffResult r;
+  directed(sample_surface(a, samples, 0x48617573646F7266ULL), b, r.input_to_panels, r.input_worst_point);
+  directed(sample_surface(b, samples, 0x6F72666653696465ULL), a, r.panels_to_input, r.panels_worst_point);
+  return r;
+}
+
+TEST(Quality, HausdorffIsTheMaximumInSampleOrder) {
+  // A curved roof against its own coarse version, and a flat grid against the same grid
+  // lifted by 0.25, where every sample is equally far (ties everywhere).
+  const TriMesh roof = make_roof(40, 40), coarse = make_roof(6, 6);
+  const auto flat = [](double lift) {
+    return make_grid_surface(12, 9, [lift](double u, double v) { return Vec3(3.0 * u, 2.0 * v, lift); });
+  };
+  const std::pair<TriMesh, TriMesh> cases[] = {{roof, coarse}, {flat(0.0), flat(0.25)}};
+  for (const auto& [a, b] : cases) {
+    const HausdorffResult fast = hausdorff_distance(a, b, 20000);
+    const HausdorffResult slow = hausdorff_by_brute_force(a, b, 20000);
+    EXPECT_GT(fast.input_to_panels, 0.0);
+    EXPECT_EQ(fast.input_to_panels, slow.input_to_panels);
+    EXPECT_EQ(fast.panels_to_input, slow.panels_to_input);
+    EXPECT_EQ(fast.input_worst_point, slow.input_worst_point);
+    EXPECT_EQ(fast.panels_worst_point, slow.panels_worst_point);
+  }
+}
+
 TEST(Quality, HausdorffOnA100kTriangleInput) {
   const int n = grid_resolution_for(100000);
   const TriMesh input = make_roof(n, n);
