@@ -18,20 +18,29 @@ struct Shape {
   Vec2 lo = Vec2::Zero(), hi = Vec2::Zero();
 };
 
-Shape make_shape(const PanelOutline& o, double angle, const Vec2& offset) {
+// Into `s`, reusing its vectors' capacity (the candidate checks make one per candidate).
+void place_shape(const PanelOutline& o, double angle, const Vec2& offset, Shape& s) {
   const Eigen::Rotation2Dd r(angle);
-  Shape s;
   s.lo = Vec2::Constant(std::numeric_limits<double>::infinity());
   s.hi = -s.lo;
+  std::size_t count = 0;
   for (const std::vector<Vec2>* face : {&o.outer, &o.inner}) {
     if (face->empty()) continue;
-    s.faces.emplace_back();
+    if (s.faces.size() <= count) s.faces.emplace_back();
+    std::vector<Vec2>& out = s.faces[count++];
+    out.clear();
     for (const Vec2& p : *face) {
-      s.faces.back().push_back(r * p + offset);
-      s.lo = s.lo.cwiseMin(s.faces.back().back());
-      s.hi = s.hi.cwiseMax(s.faces.back().back());
+      out.push_back(r * p + offset);
+      s.lo = s.lo.cwiseMin(out.back());
+      s.hi = s.hi.cwiseMax(out.back());
     }
   }
+  s.faces.resize(count);
+}
+
+Shape make_shape(const PanelOutline& o, double angle, const Vec2& offset) {
+  Shape s;
+  place_shape(o, angle, offset, s);
   return s;
 }
 
@@ -49,7 +58,7 @@ bool apart(const Shape& a, const Shape& b, double spacing) {
   if (a.faces.empty() || b.faces.empty()) return false;
   for (const auto& fa : a.faces) {
     for (const auto& fb : b.faces) {
-      if (polygon_distance(fa, fb) < spacing) return false;
+      if (polygons_closer_than(fa, fb, spacing)) return false;
     }
   }
   return true;
@@ -141,7 +150,7 @@ class GapFiller {
 
  private:
   // Boxes first (cheap), the polygons only where the boxes come closer than the spacing.
-  bool fits_at(const PanelOutline& o, double angle, const Vec2& offset, const Shape& at_origin, int sheet) const {
+  bool fits_at(const PanelOutline& o, double angle, const Vec2& offset, const Shape& at_origin, int sheet) {
     Shape box;
     box.lo = at_origin.lo + offset;
     box.hi = at_origin.hi + offset;
@@ -151,14 +160,16 @@ class GapFiller {
     }
     // Overlapping and touching both measure 0: without spacing, ask for a hair more.
     const double spacing = std::max(options_.spacing - tol_, tol_);
-    Shape exact;
+    bool placed = false;
     for (const Shape& q : shapes_[sheet]) {
       if (apart(box, q, spacing)) continue;  // no faces: boxes decide
-      if (exact.faces.empty()) exact = make_shape(o, angle, offset);
-      if (!apart(exact, q, spacing)) return false;
+      if (!placed) place_shape(o, angle, offset, exact_), placed = true;
+      if (!apart(exact_, q, spacing)) return false;
     }
     return true;
   }
+
+  Shape exact_;  // fits_at's candidate, kept for its vectors' capacity
 
   const std::vector<PanelOutline>& outlines_;
   const SheetOptions& options_;
@@ -186,6 +197,31 @@ double polygon_distance(const std::vector<Vec2>& a, const std::vector<Vec2>& b) 
     }
   }
   return d;
+}
+
+// Answers at the first pair of edges that proves it. A pair whose boxes are more than the
+// spacing apart on an axis is skipped unmeasured: its four point-segment distances are at
+// least that gap. The margin of 1e-9 of the spacing keeps the answer polygon_distance's
+// where rounding could put a measured distance a hair below the gap.
+bool polygons_closer_than(const std::vector<Vec2>& a, const std::vector<Vec2>& b, double spacing) {
+  if (a.empty() || b.empty()) return false;
+  if (point_in_polygon(a, b[0]) || point_in_polygon(b, a[0])) return true;
+  const double skip = spacing * (1.0 + 1e-9);
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const Vec2 &p = a[i], &q = a[(i + 1) % a.size()];
+    const Vec2 lo = p.cwiseMin(q), hi = p.cwiseMax(q);
+    for (std::size_t j = 0; j < b.size(); ++j) {
+      const Vec2 &r = b[j], &s = b[(j + 1) % b.size()];
+      if (std::min(r.x(), s.x()) - hi.x() > skip || lo.x() - std::max(r.x(), s.x()) > skip ||
+          std::min(r.y(), s.y()) - hi.y() > skip || lo.y() - std::max(r.y(), s.y()) > skip)
+        continue;
+      if (segments_cross(p, q, r, s)) return true;
+      if (distance_point_segment(p, r, s) < spacing || distance_point_segment(q, r, s) < spacing ||
+          distance_point_segment(r, p, q) < spacing || distance_point_segment(s, p, q) < spacing)
+        return true;
+    }
+  }
+  return false;
 }
 
 void fill_gaps(const std::vector<PanelOutline>& outlines, const SheetOptions& options, SheetLayout* layout) {

@@ -12,6 +12,10 @@ namespace ff {
 // touch or one contains the other.
 double polygon_distance(const std::vector<Vec2>& a, const std::vector<Vec2>& b);
 
+// polygon_distance(a, b) < spacing, for spacing > 0, without measuring every pair of edges:
+// the candidate checks of the gap filling ask this millions of times.
+bool polygons_closer_than(const std::vector<Vec2>& a, const std::vector<Vec2>& b, double spacing);
+
 // Moves parts from the last sheet onto earlier ones wherever their outer and inner faces
 // keep the spacing to everything there and stay inside the margins, lowest then leftmost
 // first, trying the part's placed angle turned by 0, 90, 180 and 270 degrees, biggest part
