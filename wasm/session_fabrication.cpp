@@ -57,7 +57,8 @@ ThickOptions thick_options(const PanelMesh& pm, const FabricationSettings& f) {
   o.side = f.options.side;
   o.boundary = f.options.boundary;
   if (!f.options.panel_thickness.empty())
-    for (const PartRow& row : make_parts_list(pm, f.options).rows) o.panel_thickness.push_back(row.outline.thickness * scale);
+    for (const PartRow& row : make_parts_list(pm, f.options).rows)
+      o.panel_thickness.push_back(row.outline.thickness * scale);
   return o;
 }
 

@@ -27,7 +27,7 @@ struct OneSided {
   Vec3 worst = Vec3::Zero();
 };
 
-// 10 bits of x, spread to every third bit.
+// The low 10 bits of v, spread out to every third bit (bit k goes to bit 3k).
 std::uint32_t spread_bits(std::uint32_t v) {
   v = (v | (v << 16)) & 0x030000FFu;
   v = (v | (v << 8)) & 0x0300F00Fu;
@@ -86,7 +86,8 @@ OneSided directed(const std::vector<Vec3>& samples, const TriangleTree& tree) {
     const ClosestPoint c = tree.closest_point(s, hint, out.distance);
     hint = c.triangle;
     // A distance equal to the maximum may be any triangle's within it: measure exactly.
-    const bool tie = c.distance == out.distance && worst >= 0 && i < worst && tree.closest_point(s).distance == out.distance;
+    const bool tie =
+        c.distance == out.distance && worst >= 0 && i < worst && tree.closest_point(s).distance == out.distance;
     if (c.distance > out.distance || tie) {
       out.distance = c.distance;
       out.worst = s;

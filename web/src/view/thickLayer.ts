@@ -12,7 +12,7 @@ import type { SolveResult } from '../protocol.ts';
 import { PROBLEM_RED } from './colors.ts';
 
 const MATERIAL_COLOUR = 0xc9a77c; // plywood
-export const FOLDED_COLOUR = 0xe040fb; // magenta (styles.css .legend-dash)
+const FOLDED_COLOUR = 0xe040fb; // magenta (styles.css .legend-dash)
 
 // Spread above this share of the thickness counts (the core lists anything above 1e-9).
 export const SPREAD_TOLERANCE = 1e-6;
@@ -22,7 +22,7 @@ export class ThickLayer {
   readonly markers: THREE.Points<THREE.BufferGeometry, THREE.PointsMaterial>;
   readonly folded: LineSegments2;
   private readonly foldedMaterial = new LineMaterial({ color: FOLDED_COLOUR, linewidth: 3, depthTest: false });
-  foldedShown = false; // some part is outlined (the viewer shows the outline with the problems)
+  private hasFolded = false;
 
   constructor() {
     this.solid = new THREE.Mesh(
@@ -60,8 +60,13 @@ export class ThickLayer {
     const outline = result !== null ? outlineSegments(result, folded, origin) : new Float32Array();
     this.folded.geometry = new LineSegmentsGeometry();
     if (outline.length >= 6) this.folded.geometry.setPositions(outline);
-    this.foldedShown = outline.length >= 6;
+    this.hasFolded = outline.length >= 6;
     return { nodes: nodes.length, folded: folded.length };
+  }
+
+  // Some part is outlined (the viewer shows the outline with the problems).
+  get foldedShown(): boolean {
+    return this.hasFolded;
   }
 
   // LineMaterial measures its width in pixels of the drawing buffer.
