@@ -7,7 +7,7 @@
 import assert from 'node:assert/strict';
 import { join } from 'node:path';
 import { test } from 'node:test';
-import { browserSuite, download, parseObj, remesh, repo, screenshot, selectExample, setPanels, solveAfter, waitForDone } from './harness.mjs';
+import { browserSuite, download, parseObj, remesh, repo, screenshot, selectExample, setPanels, solveAfter, viewPixels, waitForDone } from './harness.mjs';
 
 const suite = browserSuite();
 const { withPage } = suite;
@@ -28,27 +28,8 @@ async function setThickness(page, value) {
   });
 }
 
-// Pixels of the view near the folded parts' outline colour (thickLayer.ts, 0xe040fb), counted
-// by the browser's own PNG decoder; the legend lines over the view (whose swatch has that
-// colour) are hidden for the screenshot.
-async function magentaPixels(page) {
-  await page.evaluate(() => document.querySelector('.fab-legends').style.setProperty('visibility', 'hidden'));
-  const png = await page.locator('#viewport canvas').screenshot();
-  await page.evaluate(() => document.querySelector('.fab-legends').style.removeProperty('visibility'));
-  return page.evaluate(async (data) => {
-    const image = new Image();
-    image.src = `data:image/png;base64,${data}`;
-    await image.decode();
-    const canvas = new OffscreenCanvas(image.width, image.height);
-    const context = canvas.getContext('2d');
-    context.drawImage(image, 0, 0);
-    const pixels = context.getImageData(0, 0, image.width, image.height).data;
-    let count = 0;
-    for (let i = 0; i < pixels.length; i += 4)
-      if (Math.abs(pixels[i] - 224) < 24 && Math.abs(pixels[i + 1] - 64) < 24 && Math.abs(pixels[i + 2] - 251) < 24) count++;
-    return count;
-  }, png.toString('base64'));
-}
+// The folded parts' outline colour (thickLayer.ts, 0xe040fb).
+const MAGENTA = [224, 64, 251];
 
 async function saddle(page, panels) {
   await waitForDone(page);
@@ -150,18 +131,18 @@ test('parts too small for the thickness are named, with what to do', () =>
     const legend = page.locator('#folded-legend');
     await legend.waitFor({ state: 'visible' });
     assert.match(await legend.textContent(), new RegExp(`^\\s*${folded[1]} parts? whose inner face folds over`));
-    const outlined = await magentaPixels(page);
+    const outlined = await viewPixels(page, MAGENTA);
     assert.ok(outlined > 200, `${outlined} magenta pixels`);
     await screenshot(page, 'helicoid-40-folded-parts');
     await page.getByLabel('Show problems').uncheck();
     await page.waitForTimeout(300);
-    assert.equal(await magentaPixels(page), 0, 'the outline hides with the problems');
+    assert.equal(await viewPixels(page, MAGENTA), 0, 'the outline hides with the problems');
     await page.getByLabel('Show problems').check();
     await setThickness(page, 20);
     assert.equal(await page.locator('#fab-folded-hint').count(), 0, 'gone at a thickness the panels can take');
     assert.equal(await legend.isHidden(), true);
     await page.waitForTimeout(300);
-    assert.equal(await magentaPixels(page), 0, 'no outline at 20 mm');
+    assert.equal(await viewPixels(page, MAGENTA), 0, 'no outline at 20 mm');
   }));
 
 test('a share link carries the fabrication settings', () =>

@@ -318,6 +318,33 @@ export async function distinctColours(page, selector) {
   }, png.toString('base64'));
 }
 
+// Pixels of the view within 24 of an RGB colour per channel (markers drawn in a colour of
+// their own), decoded by the page itself; the legend lines over the view (whose swatches have
+// those colours) are hidden for the screenshot.
+export async function viewPixels(page, [r, g, b]) {
+  const legends = (visibility) =>
+    page.evaluate((v) => document.querySelector('.view-legends').style.setProperty('visibility', v), visibility);
+  await legends('hidden');
+  const png = await page.locator('#viewport canvas').screenshot();
+  await legends('visible');
+  return page.evaluate(
+    async ({ data, rgb }) => {
+      const image = new Image();
+      image.src = `data:image/png;base64,${data}`;
+      await image.decode();
+      const canvas = new OffscreenCanvas(image.width, image.height);
+      const context = canvas.getContext('2d');
+      context.drawImage(image, 0, 0);
+      const pixels = context.getImageData(0, 0, image.width, image.height).data;
+      let count = 0;
+      for (let i = 0; i < pixels.length; i += 4)
+        if (Math.abs(pixels[i] - rgb[0]) < 24 && Math.abs(pixels[i + 1] - rgb[1]) < 24 && Math.abs(pixels[i + 2] - rgb[2]) < 24) count++;
+      return count;
+    },
+    { data: png.toString('base64'), rgb: [r, g, b] },
+  );
+}
+
 export async function screenshot(page, name) {
   const dir = join(repo, 'build', 'screenshots');
   await import('node:fs').then((fs) => fs.mkdirSync(dir, { recursive: true }));

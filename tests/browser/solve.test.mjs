@@ -22,6 +22,7 @@ import {
   sharedMeshes,
   solveAfter,
   statusText,
+  viewPixels,
   waitForDone,
   waitForProgress,
   waitForSolving,
@@ -29,6 +30,7 @@ import {
 } from './harness.mjs';
 
 const suite = browserSuite();
+const CYAN = [34, 211, 238]; // the farthest point's marker (view/problemLayer.ts)
 const { withPage } = suite;
 
 test('an example remeshes to the requested count; the OBJ is planar and the parts list matches', () =>
@@ -297,6 +299,29 @@ test('screenshots of the page after a solve, in each view', () =>
     // The viewport really draws the model (many panel colours), not just its background.
     const distinct = await distinctColours(page, '#viewport canvas');
     assert.ok(distinct > 30, `the viewport shows the panels (${distinct} distinct colours)`);
+  }));
+
+// Where the panels are farthest from the design: a cyan point in the view (with the problems)
+// and a legend line giving the report's Hausdorff distance, as the Quality section does.
+test('the point farthest from the design is marked, with its distance', () =>
+  withPage(suite.url, async (page) => {
+    assert.equal(await waitForDone(page), 300);
+    const legend = page.locator('#farthest-legend');
+    await legend.waitFor({ state: 'visible' });
+    const hausdorff = (await page.locator('#stats').textContent()).match(/Hausdorff\s*([\d.]+) %/);
+    assert.ok(hausdorff, 'the Quality section gives the Hausdorff distance');
+    assert.equal((await legend.textContent()).trim(), `Farthest from the design: ${hausdorff[1]} % of the diagonal`);
+    const marked = await viewPixels(page, CYAN);
+    assert.ok(marked > 20, `${marked} cyan pixels`);
+    await screenshot(page, 'hyperboloid-300-farthest-point');
+    await page.getByLabel('Show problems').uncheck();
+    await page.waitForTimeout(300);
+    assert.equal(await viewPixels(page, CYAN), 0, 'the marker hides with the problems');
+    await page.getByLabel('Show problems').check();
+    // Another design: the legend follows its own solve.
+    assert.equal(await solveAfter(page, () => selectExample(page, 'saddle')), 120);
+    const next = (await page.locator('#stats').textContent()).match(/Hausdorff\s*([\d.]+) %/);
+    assert.match(await legend.textContent(), new RegExp(`${next[1].replace('.', '\\.')} % of the diagonal`));
   }));
 
 // A closed sphere (epcot.off) into 4 panels at seed 1: the first solve's panels stay invalid;

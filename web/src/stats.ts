@@ -71,7 +71,7 @@ export function statsRows(result: SolveResult): Row[] {
     { label: 'Panels', value: String(numberAt(report, 'panels') ?? '–'), hint: 'planar panels in the result' },
     { label: 'Planarity', value: scientific(numberAt(report, 'max_planarity')), hint: 'largest distance of a panel vertex to its plane, relative to the panel size (target ≤ 10⁻⁹)' },
     { label: 'Before the fix', value: scientific(before), hint: 'planarity of the same polygons through their mesh corners, before the planes were intersected' },
-    { label: 'Hausdorff', value: hausdorff === null ? '–' : `${(hausdorff * 100).toFixed(2)} %`, hint: 'two-sided distance to the input surface, relative to the bounding-box diagonal' },
+    { label: 'Hausdorff', value: hausdorff === null ? '–' : `${(hausdorff * 100).toFixed(2)} %`, hint: 'two-sided distance to the input surface, relative to the bounding-box diagonal; where it is largest is marked cyan in the view' },
     { label: 'Valence 3', value: share === null ? '–' : `${(share * 100).toFixed(1)} %`, hint: 'interior nodes where exactly three panels meet' },
     { label: 'Min angle', value: minAngle === null ? '–' : `${minAngle.toFixed(1)}°`, hint: 'smallest corner angle of any panel' },
     ...(minAngleTarget > 0

@@ -1,7 +1,8 @@
 // Problem markers (paper fig. 6): spike vertices as red points, flipped edges as thick red
 // lines (screen-space width, since WebGL lines are one pixel wide), corners below the minimum
-// corner angle (glass mode) as larger amber points. Invalid panels are tinted by the panel
-// layer.
+// corner angle (glass mode) as larger amber points, and where the panels are farthest from the
+// design (the Hausdorff distance's worst sample) as a cyan point. Invalid panels are tinted by
+// the panel layer.
 import * as THREE from 'three';
 import { LineMaterial } from 'three/examples/jsm/lines/LineMaterial.js';
 import { LineSegments2 } from 'three/examples/jsm/lines/LineSegments2.js';
@@ -10,6 +11,7 @@ import type { Problems } from '@flatfacet/wasm';
 
 const RED = 0xee2924;
 const AMBER = 0xffb000;
+const CYAN = 0x22d3ee; // styles.css .legend-dot.farthest
 
 function shiftedPoints(values: number[], origin: THREE.Vector3): THREE.BufferGeometry {
   const positions = new Float32Array(values.length);
@@ -24,6 +26,7 @@ export class ProblemLayer {
   private readonly spikes: THREE.Points<THREE.BufferGeometry, THREE.PointsMaterial>;
   private readonly flipped: LineSegments2;
   readonly acute: THREE.Points<THREE.BufferGeometry, THREE.PointsMaterial>;
+  private readonly farthest: THREE.Points<THREE.BufferGeometry, THREE.PointsMaterial>;
   private readonly lineMaterial: LineMaterial;
 
   constructor() {
@@ -39,13 +42,20 @@ export class ProblemLayer {
       new THREE.PointsMaterial({ color: AMBER, size: 13, sizeAttenuation: false, depthTest: false }),
     );
     this.acute.name = 'acute-corners';
+    this.farthest = new THREE.Points(new THREE.BufferGeometry(), new THREE.PointsMaterial({ color: CYAN, size: 12, sizeAttenuation: false, depthTest: false }));
+    this.farthest.name = 'farthest-point';
+    this.farthest.renderOrder = 9;
     this.spikes.renderOrder = 10;
     this.flipped.renderOrder = 10;
     this.acute.renderOrder = 9;
-    this.group.add(this.acute, this.spikes, this.flipped);
+    this.group.add(this.farthest, this.acute, this.spikes, this.flipped);
   }
 
-  set(problems: Problems | null, origin: THREE.Vector3): void {
+  set(problems: Problems | null, farthest: [number, number, number] | null, origin: THREE.Vector3): void {
+    this.farthest.geometry.dispose();
+    this.farthest.geometry = shiftedPoints(farthest ?? [], origin);
+    this.farthest.visible = farthest !== null;
+
     const spikes = problems?.spikes ?? [];
     const spikePositions = new Float32Array(spikes.length);
     for (let i = 0; i < spikes.length; i++) spikePositions[i] = spikes[i]! - origin.getComponent(i % 3);
