@@ -94,6 +94,8 @@ EMSCRIPTEN_BINDINGS(flatfacet) {
           "cornerPositions", +[](const Session& s) { return to_typed_array(s.corner_positions(), "Float64Array"); })
       .function(
           "cornerPlanarity", +[](const Session& s) { return to_typed_array(s.corner_planarity(), "Float64Array"); })
+      .function(
+          "panelDeviation", +[](const Session& s) { return to_typed_array(s.panel_deviation(), "Float64Array"); })
       .function("problems", &Session::problems)
       .function("reportJson", &Session::report_json)
       .function("objText", &Session::obj_text)

@@ -245,6 +245,9 @@ export interface Session {
   // far those are from planar (max distance to the best-fit plane / panel diameter).
   cornerPositions(): Float64Array;
   cornerPlanarity(): Float64Array;
+  // Per panel: the largest distance between it and the design near it, sampled both ways,
+  // relative to the bounding-box diagonal (core/quality/panel_deviation.h).
+  panelDeviation(): Float64Array;
   problems(): string; // Problems JSON (ok true) or a Status (ok false)
   // The quality report (DESIGN.md 4 keys plus "ok": true) of the current panels; only
   // Also "panel_area": the panels' total area in mesh units squared.

@@ -95,6 +95,8 @@ class Session {
   std::vector<double> expression_density(const std::string& expression) const;
   std::vector<double> corner_positions() const;
   std::vector<double> corner_planarity() const;
+  // Per panel: how far it is from the design near it (core/quality/panel_deviation.h).
+  std::vector<double> panel_deviation() const;
   std::string problems();
   std::string report_json();
   std::string obj_text();  // empty without panels

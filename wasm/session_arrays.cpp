@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/panels/panel_export.h"
+#include "core/quality/panel_deviation.h"
 #include "core/quality/planarity.h"
 #include "wasm/session.h"
 
@@ -88,6 +89,11 @@ std::vector<double> Session::corner_positions() const {
 std::vector<double> Session::corner_planarity() const {
   if (!remesher_) return {};
   return corner_polygon_planarity(mesh_, remesher_->panels());
+}
+
+std::vector<double> Session::panel_deviation() const {
+  if (!remesher_) return {};
+  return ff::panel_deviation(mesh_, remesher_->panels());
 }
 
 }  // namespace ff::wasm

@@ -36,36 +36,6 @@ std::uint32_t spread_bits(std::uint32_t v) {
   return v;
 }
 
-// The samples' indices along a Morton (Z-order) curve over their bounding box, 10 bits per
-// axis, by a three-pass radix sort (stable: equal codes keep their order).
-std::vector<int> morton_order(const std::vector<Vec3>& samples) {
-  Vec3 lo = samples.front(), hi = samples.front();
-  for (const Vec3& p : samples) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
-  const Vec3 extent = hi - lo;
-  double scale[3];
-  for (int k = 0; k < 3; ++k) scale[k] = extent[k] > 0.0 ? 1023.0 / extent[k] : 0.0;
-  const size_t n = samples.size();
-  std::vector<std::uint32_t> code(n);
-  for (size_t i = 0; i < n; ++i) {
-    std::uint32_t c = 0;
-    for (int k = 0; k < 3; ++k) {
-      const double t = std::clamp((samples[i][k] - lo[k]) * scale[k], 0.0, 1023.0);
-      c |= spread_bits(static_cast<std::uint32_t>(t)) << (2 - k);
-    }
-    code[i] = c;
-  }
-  std::vector<int> order(n), next(n);
-  for (size_t i = 0; i < n; ++i) order[i] = static_cast<int>(i);
-  for (int shift = 0; shift < 30; shift += 10) {
-    std::vector<size_t> start(1025, 0);
-    for (size_t i = 0; i < n; ++i) ++start[((code[i] >> shift) & 1023u) + 1];
-    for (size_t b = 1; b < start.size(); ++b) start[b] += start[b - 1];
-    for (const int i : order) next[start[(code[static_cast<size_t>(i)] >> shift) & 1023u]++] = i;
-    order.swap(next);
-  }
-  return order;
-}
-
 // Max over samples of the distance to the tree. A sample only matters if it is farther
 // than the maximum so far, so each query may stop at any triangle within that maximum. The
 // samples are visited along a Morton curve, so consecutive ones are near each other and the
@@ -98,6 +68,35 @@ OneSided directed(const std::vector<Vec3>& samples, const TriangleTree& tree) {
 }
 
 }  // namespace
+
+std::vector<int> morton_order(const std::vector<Vec3>& points) {
+  if (points.empty()) return {};
+  Vec3 lo = points.front(), hi = points.front();
+  for (const Vec3& p : points) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  const Vec3 extent = hi - lo;
+  double scale[3];
+  for (int k = 0; k < 3; ++k) scale[k] = extent[k] > 0.0 ? 1023.0 / extent[k] : 0.0;
+  const size_t n = points.size();
+  std::vector<std::uint32_t> code(n);
+  for (size_t i = 0; i < n; ++i) {
+    std::uint32_t c = 0;
+    for (int k = 0; k < 3; ++k) {
+      const double t = std::clamp((points[i][k] - lo[k]) * scale[k], 0.0, 1023.0);
+      c |= spread_bits(static_cast<std::uint32_t>(t)) << (2 - k);
+    }
+    code[i] = c;
+  }
+  std::vector<int> order(n), next(n);
+  for (size_t i = 0; i < n; ++i) order[i] = static_cast<int>(i);
+  for (int shift = 0; shift < 30; shift += 10) {
+    std::vector<size_t> start(1025, 0);
+    for (size_t i = 0; i < n; ++i) ++start[((code[i] >> shift) & 1023u) + 1];
+    for (size_t b = 1; b < start.size(); ++b) start[b] += start[b - 1];
+    for (const int i : order) next[start[(code[static_cast<size_t>(i)] >> shift) & 1023u]++] = i;
+    order.swap(next);
+  }
+  return order;
+}
 
 PlaneFrame panel_frame(const PanelMesh& panels, int panel) {
   const std::vector<int>& poly = panels.panels[static_cast<size_t>(panel)];

@@ -38,6 +38,12 @@ TriMesh triangulate_panels(const PanelMesh& panels, std::vector<int>* triangle_p
 // centroid, even beyond target).
 std::vector<Vec3> sample_surface(const TriMesh& mesh, int target, std::uint64_t seed);
 
+// The points' indices along a Morton (Z-order) curve over their bounding box, 10 bits per
+// axis (a three-pass radix sort; equal codes keep their order). Queried in this order,
+// consecutive points are near each other, so each query's answer is a good hint for the next.
+// Empty for no points.
+std::vector<int> morton_order(const std::vector<Vec3>& points);
+
 // Directed distances between two triangle meshes, absolute (not divided by anything).
 // A side with no triangles is infinitely far; an empty sample set contributes 0.
 HausdorffResult hausdorff_distance(const TriMesh& a, const TriMesh& b, int samples_per_side = 200000);

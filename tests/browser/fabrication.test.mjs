@@ -7,7 +7,7 @@
 import assert from 'node:assert/strict';
 import { join } from 'node:path';
 import { test } from 'node:test';
-import { browserSuite, download, parseObj, remesh, repo, screenshot, selectExample, setPanels, solveAfter, viewPixels, waitForDone } from './harness.mjs';
+import { browserSuite, download, parseObj, remesh, repo, screenshot, selectExample, setPanels, solveAfter, viewPixels, viewPixelsWithoutProblems, waitForDone } from './harness.mjs';
 
 const suite = browserSuite();
 const { withPage } = suite;
@@ -134,10 +134,7 @@ test('parts too small for the thickness are named, with what to do', () =>
     const outlined = await viewPixels(page, MAGENTA);
     assert.ok(outlined > 200, `${outlined} magenta pixels`);
     await screenshot(page, 'helicoid-40-folded-parts');
-    await page.getByLabel('Show problems').uncheck();
-    await page.waitForTimeout(300);
-    assert.equal(await viewPixels(page, MAGENTA), 0, 'the outline hides with the problems');
-    await page.getByLabel('Show problems').check();
+    assert.equal(await viewPixelsWithoutProblems(page, MAGENTA), 0, 'the outline hides with the problems');
     await setThickness(page, 20);
     assert.equal(await page.locator('#fab-folded-hint').count(), 0, 'gone at a thickness the panels can take');
     assert.equal(await legend.isHidden(), true);

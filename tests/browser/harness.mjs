@@ -345,6 +345,16 @@ export async function viewPixels(page, [r, g, b]) {
   );
 }
 
+// viewPixels with "Show problems" off for the screenshot (markers that go with the problems
+// must be gone); the toggle is back on afterwards.
+export async function viewPixelsWithoutProblems(page, rgb) {
+  await page.getByLabel('Show problems').uncheck();
+  await page.waitForTimeout(300);
+  const count = await viewPixels(page, rgb);
+  await page.getByLabel('Show problems').check();
+  return count;
+}
+
 export async function screenshot(page, name) {
   const dir = join(repo, 'build', 'screenshots');
   await import('node:fs').then((fs) => fs.mkdirSync(dir, { recursive: true }));

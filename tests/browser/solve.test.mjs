@@ -23,6 +23,7 @@ import {
   solveAfter,
   statusText,
   viewPixels,
+  viewPixelsWithoutProblems,
   waitForDone,
   waitForProgress,
   waitForSolving,
@@ -302,8 +303,9 @@ test('screenshots of the page after a solve, in each view', () =>
   }));
 
 // Where the panels are farthest from the design: a cyan point in the view (with the problems)
-// and a legend line giving the report's Hausdorff distance, as the Quality section does.
-test('the point farthest from the design is marked, with its distance', () =>
+// and a legend line giving the report's Hausdorff distance, as the Quality section does; and
+// the deviation view, each panel coloured by its own distance, with its scale.
+test('the point farthest from the design is marked, with its distance; the deviation view colours the panels', () =>
   withPage(suite.url, async (page) => {
     assert.equal(await waitForDone(page), 300);
     const legend = page.locator('#farthest-legend');
@@ -314,10 +316,17 @@ test('the point farthest from the design is marked, with its distance', () =>
     const marked = await viewPixels(page, CYAN);
     assert.ok(marked > 20, `${marked} cyan pixels`);
     await screenshot(page, 'hyperboloid-300-farthest-point');
-    await page.getByLabel('Show problems').uncheck();
-    await page.waitForTimeout(300);
-    assert.equal(await viewPixels(page, CYAN), 0, 'the marker hides with the problems');
-    await page.getByLabel('Show problems').check();
+    assert.equal(await viewPixelsWithoutProblems(page, CYAN), 0, 'the marker hides with the problems');
+    const panelsView = await distinctColours(page, '#viewport canvas');
+    await page.getByLabel('Show deviation from the design').check();
+    const scale = page.locator('#deviation-legend');
+    assert.equal(await scale.isVisible(), true, 'the deviation view has its legend');
+    const top = (await page.locator('#deviation-top').textContent()).match(/^([\d.]+) % of the diagonal$/);
+    assert.ok(top && Math.abs(Number(top[1]) - Number(hausdorff[1])) <= 0.1 * Number(hausdorff[1]), `scale tops at ${top?.[1]}, Hausdorff ${hausdorff[1]}`);
+    assert.notEqual(await distinctColours(page, '#viewport canvas'), panelsView, 'the deviation colours differ from the panel colours');
+    await screenshot(page, 'hyperboloid-300-deviation');
+    await page.getByLabel('Show deviation from the design').uncheck();
+    assert.equal(await scale.isHidden(), true);
     // Another design: the legend follows its own solve.
     assert.equal(await solveAfter(page, () => selectExample(page, 'saddle')), 120);
     const next = (await page.locator('#stats').textContent()).match(/Hausdorff\s*([\d.]+) %/);

@@ -56,6 +56,14 @@ test('a shape solves to valid, exactly planar panels with the requested count', 
   assert.equal(before.length, 60);
   assert.ok(Math.max(...before) > 1e-3, `corner polygons bend by at most ${Math.max(...before)}`);
   assert.equal(s.cornerPositions().length, s.panelPositions().length);
+  // Each panel's deviation from the design: the largest is the report's Hausdorff distance
+  // (at a coarser sampling), and the panels differ.
+  const deviation = s.panelDeviation();
+  assert.equal(deviation.length, 60);
+  assert.ok(deviation.every((d) => Number.isFinite(d) && d >= 0));
+  const hausdorff = json(s.reportJson()).hausdorff;
+  assert.ok(Math.abs(Math.max(...deviation) - hausdorff) <= 0.1 * hausdorff, `largest ${Math.max(...deviation)}, Hausdorff ${hausdorff}`);
+  assert.ok(Math.min(...deviation) < 0.8 * Math.max(...deviation));
   const problems = json(s.problems());
   assert.deepEqual([problems.spikes, problems.flippedEdges, problems.invalidPanels], [[], [], []]);
   s.delete();

@@ -11,7 +11,7 @@ import { ExamplePicker } from './examplePicker.ts';
 import { designStem } from './exports.ts';
 import { FabricationPanel } from './fabricationPanel.ts';
 import { clusterCount } from './edits/panelEdits.ts';
-import { renderFarthestLegend } from './farthest.ts';
+import { renderDesignDistance } from './farthest.ts';
 import { Outputs } from './outputs.ts';
 import { PanelSelection } from './panelSelection.ts';
 import type { DesignParams } from './params.ts';
@@ -104,7 +104,7 @@ export class App {
     this.preparation.onChange(() => this.opener.preparationChanged());
     this.repair.onChange(() => void this.opener.repairChanged());
     renderStats(this.statsBox, null);
-    renderFarthestLegend(null);
+    renderDesignDistance(null);
     this.updateButtons();
   }
 
@@ -242,7 +242,7 @@ export class App {
     this.viewer.setSolving(false);
     this.viewer.setResult(result);
     renderStats(this.statsBox, result);
-    renderFarthestLegend(result.report);
+    renderDesignDistance(result);
     this.status.finishProgress();
     const summary = solvedSummary(result);
     const notice = this.opener.solveNotice;

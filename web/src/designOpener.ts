@@ -11,7 +11,7 @@ import { showMeshInfo, type ExamplePicker } from './examplePicker.ts';
 import { describeDesign, findExample } from './examples.ts';
 import { checkEditsFit } from './edits/panelEdits.ts';
 import type { FabricationPanel } from './fabricationPanel.ts';
-import { renderFarthestLegend } from './farthest.ts';
+import { renderDesignDistance } from './farthest.ts';
 import type { MeshRepair } from './meshRepair.ts';
 import { payloadFromExample, payloadFromFile } from './meshFiles.ts';
 import type { Outputs } from './outputs.ts';
@@ -253,7 +253,7 @@ export class DesignOpener {
     showMeshInfo(loaded.mesh.label, loaded.mesh.info);
     rhinoLoaded(loaded.mesh.fileName, loaded.mesh.info);
     renderStats(this.host.statsBox, null);
-    renderFarthestLegend(null);
+    renderDesignDistance(null);
     this.host.fabrication.panelsChanged(false);
     this.host.updateButtons();
     // Overtaken by a later open: shown, since the worker holds it now, but that open goes on.
@@ -284,7 +284,7 @@ export class DesignOpener {
     showMeshInfo(mesh.label, mesh.info);
     this.host.preparation.show(opening.design);
     renderStats(this.host.statsBox, null);
-    renderFarthestLegend(null);
+    renderDesignDistance(null);
     this.host.fabrication.panelsChanged(false);
     let chain = [...opening.history, opening.params];
     if (opening.reprepare === 'carry' && carried) {

@@ -1,7 +1,8 @@
-// Where the panels are farthest from the design: the quality report's worst Hausdorff sample
-// (hausdorff_worst_point, on the input or on the panels), marked in the view with a legend
-// line that gives the distance.
-import type { QualityReport } from './protocol.ts';
+// How far the panels are from the design: where they are farthest (the quality report's worst
+// Hausdorff sample, hausdorff_worst_point, on the input or on the panels), marked in the view
+// with a legend line that gives the distance; and the scale of the deviation view (panels
+// coloured by their own distance, SolveResult.panelDeviation).
+import type { QualityReport, SolveResult } from './protocol.ts';
 
 // The point, in mesh coordinates, when the report has a finite one.
 export function farthestPoint(report: QualityReport): [number, number, number] | null {
@@ -20,12 +21,21 @@ export function farthestNote(report: QualityReport): string | null {
   return `Farthest from the design: ${(hausdorff * 100).toFixed(2)} % of the diagonal`;
 }
 
-// Shows or hides the view's legend line (#farthest-legend) for a report (null: no result).
-export function renderFarthestLegend(report: QualityReport | null): void {
+// The top of the deviation view's scale: the largest panel deviation, in % of the diagonal.
+export function deviationScaleTop(deviation: Float64Array): string {
+  const largest = deviation.reduce((a, b) => (Number.isFinite(b) ? Math.max(a, b) : a), 0);
+  return `${(largest * 100).toFixed(2)} % of the diagonal`;
+}
+
+// The farthest point's legend line (#farthest-legend, hidden without a result or a point) and
+// the deviation legend's scale (#deviation-top) for the result on show.
+export function renderDesignDistance(result: SolveResult | null): void {
   const legend = document.getElementById('farthest-legend');
   const text = document.getElementById('farthest-legend-text');
-  if (!legend || !text) return;
-  const note = report ? farthestNote(report) : null;
+  const top = document.getElementById('deviation-top');
+  if (!legend || !text || !top) return;
+  const note = result ? farthestNote(result.report) : null;
   legend.hidden = note === null;
   text.textContent = note ?? '';
+  top.textContent = result ? deviationScaleTop(result.panelDeviation) : '–';
 }

@@ -42,18 +42,22 @@ function bindDrop(): void {
 }
 
 function bindViewToggles(viewer: Viewer): void {
-  const ids = { clusters: 'show-clusters', panels: 'show-panels', edges: 'show-edges', problems: 'show-problems', beforeFix: 'show-before-fix', thick: 'show-thick' } as const;
+  const ids = { clusters: 'show-clusters', panels: 'show-panels', edges: 'show-edges', problems: 'show-problems', beforeFix: 'show-before-fix', deviation: 'show-deviation', thick: 'show-thick' } as const;
   const read = (): void => {
     const beforeFix = element(ids.beforeFix, HTMLInputElement).checked;
+    const deviation = element(ids.deviation, HTMLInputElement).checked;
     viewer.setToggles({
       clusters: element(ids.clusters, HTMLInputElement).checked,
       panels: element(ids.panels, HTMLInputElement).checked,
       edges: element(ids.edges, HTMLInputElement).checked,
       problems: element(ids.problems, HTMLInputElement).checked,
       beforeFix,
+      deviation,
       thick: element(ids.thick, HTMLInputElement).checked,
     });
     element('view-legend', HTMLDivElement).hidden = !beforeFix;
+    // Before the fix draws other polygons: the deviation colours are for the panels.
+    element('deviation-legend', HTMLDivElement).hidden = !deviation || beforeFix;
   };
   for (const id of Object.values(ids)) element(id, HTMLInputElement).addEventListener('change', read);
   read();

@@ -77,6 +77,7 @@ export interface SolveResult {
   // and per panel how far each is from planar (distance / diameter).
   cornerPositions: Float64Array;
   cornerPlanarity: Float64Array;
+  panelDeviation: Float64Array; // per panel: distance from the design, / bounding-box diagonal
   problems: Problems;
   report: QualityReport;
   objText: string;
@@ -128,7 +129,7 @@ export function transferablesOf(message: WorkerResponse): Transferable[] {
       return [message.clusterIds.buffer];
     case 'solved': {
       const r = message.result;
-      return [r.clusterIds, r.panelPositions, r.panelOffsets, r.panelIndices, r.panelTriangles, r.panelTriangleIds, r.facePanels, r.cornerPositions, r.cornerPlanarity].map((a) => a.buffer);
+      return [r.clusterIds, r.panelPositions, r.panelOffsets, r.panelIndices, r.panelTriangles, r.panelTriangleIds, r.facePanels, r.cornerPositions, r.cornerPlanarity, r.panelDeviation].map((a) => a.buffer);
     }
     case 'fabricated':
       return [message.result.innerPositions.buffer];

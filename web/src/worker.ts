@@ -150,6 +150,7 @@ function collectResult(target: Session, solveSeconds: number, steps: number): So
     facePanels: target.facePanels(),
     cornerPositions: target.cornerPositions(),
     cornerPlanarity: target.cornerPlanarity(),
+    panelDeviation: target.panelDeviation(),
     problems,
     report,
     objText: checkedText(target.objText(), 'the panels OBJ'),

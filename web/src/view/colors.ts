@@ -35,6 +35,20 @@ export function idColor(id: number, out: Float32Array, offset: number): void {
 
 export const PROBLEM_RED: readonly [number, number, number] = [0.93, 0.16, 0.14];
 
+// Deviation from the design as a share t (0..1) of the largest: blue through yellow to red
+// (styles.css .deviation-ramp).
+const DEVIATION_STOPS: readonly (readonly [number, number, number])[] = [
+  [0.25, 0.45, 0.85],
+  [0.95, 0.85, 0.3],
+  [0.93, 0.16, 0.14],
+];
+export function deviationColor(t: number, out: Float32Array, offset: number): void {
+  const x = Math.min(1, Math.max(0, Number.isFinite(t) ? t : 0)) * (DEVIATION_STOPS.length - 1);
+  const i = Math.min(DEVIATION_STOPS.length - 2, Math.floor(x));
+  const f = x - i;
+  for (let k = 0; k < 3; k++) out[offset + k] = DEVIATION_STOPS[i]![k]! * (1 - f) + DEVIATION_STOPS[i + 1]![k]! * f;
+}
+
 // Planarity error (distance / panel diameter) -> colour: up to the fabrication tolerance
 // (1e-4) a cool grey, then yellow to red at 1e-1 and beyond (log scale).
 export const PLANARITY_TOLERANCE = 1e-4;

@@ -1,9 +1,10 @@
 // The planar panels (triangulated in their own planes, one colour per panel, invalid panels
-// tinted red) and their polygon edges. Or, "before the fix", the same polygons through their
-// mesh corners, coloured by how far each is from planar: what intersecting planes buys.
+// tinted red; or coloured by how far each is from the design) and their polygon edges. Or,
+// "before the fix", the same polygons through their mesh corners, coloured by how far each is
+// from planar: what intersecting planes buys.
 import * as THREE from 'three';
 import type { SolveResult } from '../protocol.ts';
-import { idColor, planarityColor, PROBLEM_RED } from './colors.ts';
+import { deviationColor, idColor, planarityColor, PROBLEM_RED } from './colors.ts';
 
 export class PanelLayer {
   readonly faces: THREE.Mesh<THREE.BufferGeometry, THREE.MeshStandardMaterial>;
@@ -28,11 +29,11 @@ export class PanelLayer {
     this.edges.name = 'panel-edges';
   }
 
-  set(result: SolveResult | null, origin: THREE.Vector3, beforeFix: boolean): void {
+  set(result: SolveResult | null, origin: THREE.Vector3, beforeFix: boolean, deviation = false): void {
     this.faces.geometry.dispose();
     this.edges.geometry.dispose();
     const usable = result !== null && (!beforeFix || result.cornerPositions.length === result.panelPositions.length);
-    this.faces.geometry = usable ? faceGeometry(result, origin, beforeFix) : new THREE.BufferGeometry();
+    this.faces.geometry = usable ? faceGeometry(result, origin, beforeFix, deviation) : new THREE.BufferGeometry();
     this.edges.geometry = usable ? edgeGeometry(result, origin, beforeFix) : new THREE.BufferGeometry();
   }
 }
@@ -43,16 +44,18 @@ function shifted(positions: Float64Array, vertex: number, origin: THREE.Vector3,
   out[offset + 2] = positions[vertex * 3 + 2]! - origin.z;
 }
 
-function faceGeometry(result: SolveResult, origin: THREE.Vector3, beforeFix: boolean): THREE.BufferGeometry {
+function faceGeometry(result: SolveResult, origin: THREE.Vector3, beforeFix: boolean, deviation: boolean): THREE.BufferGeometry {
   const source = beforeFix ? result.cornerPositions : result.panelPositions;
   const triangles = Math.floor(result.panelTriangles.length / 3);
   const positions = new Float32Array(triangles * 9);
   const colors = new Float32Array(triangles * 9);
   const invalid = new Set(result.problems.invalidPanels);
   const rgb = new Float32Array(3);
+  const largest = result.panelDeviation.reduce((a, b) => Math.max(a, b), 0);
   for (let t = 0; t < triangles; t++) {
     const panel = result.panelTriangleIds[t] ?? 0;
     if (beforeFix) planarityColor(result.cornerPlanarity[panel] ?? 0, rgb, 0);
+    else if (deviation) deviationColor(largest > 0 ? (result.panelDeviation[panel] ?? 0) / largest : 0, rgb, 0);
     else if (invalid.has(panel)) rgb.set(PROBLEM_RED);
     else idColor(panel, rgb, 0);
     for (let corner = 0; corner < 3; corner++) {

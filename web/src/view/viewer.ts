@@ -18,6 +18,7 @@ export interface ViewToggles {
   edges: boolean;
   problems: boolean;
   beforeFix: boolean; // the polygons through their mesh corners, coloured by planarity
+  deviation: boolean; // the panels coloured by how far each is from the design
   thick: boolean; // the panels' inner faces and side walls (needs a thickness)
 }
 
@@ -31,7 +32,7 @@ export class Viewer {
   private readonly problems = new ProblemLayer();
   private readonly thick = new ThickLayer();
   private readonly origin = new THREE.Vector3();
-  private toggles: ViewToggles = { clusters: false, panels: true, edges: true, problems: true, beforeFix: false, thick: false };
+  private toggles: ViewToggles = { clusters: false, panels: true, edges: true, problems: true, beforeFix: false, deviation: false, thick: false };
   private result: SolveResult | null = null;
   private hasPanels = false;
   private solving = false;
@@ -184,7 +185,7 @@ export class Viewer {
 
   setResult(result: SolveResult | null): void {
     this.result = result;
-    this.panels.set(result, this.origin, this.toggles.beforeFix);
+    this.panels.set(result, this.origin, this.toggles.beforeFix, this.toggles.deviation);
     this.problems.set(result?.problems ?? null, result ? farthestPoint(result.report) : null, this.origin);
     this.container.dataset.acuteCorners = String(this.problems.acuteCorners);
     this.setSelectedPanel(null);
@@ -245,9 +246,9 @@ export class Viewer {
   }
 
   setToggles(toggles: ViewToggles): void {
-    const rebuild = toggles.beforeFix !== this.toggles.beforeFix;
+    const rebuild = toggles.beforeFix !== this.toggles.beforeFix || toggles.deviation !== this.toggles.deviation;
     this.toggles = { ...toggles };
-    if (rebuild) this.panels.set(this.result, this.origin, toggles.beforeFix);
+    if (rebuild) this.panels.set(this.result, this.origin, toggles.beforeFix, toggles.deviation);
     this.applyVisibility();
   }
 
