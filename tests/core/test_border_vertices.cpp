@@ -74,6 +74,23 @@ TEST(BorderVertices, BentBorderKeepsItsApex) {
   EXPECT_EQ(thin_border(from, lifted, to, 0.1, 0), std::vector<int>{1});
 }
 
+// The end node lands short of the last border point (the vertex rule puts it near its mesh
+// corner, not on it): the border would run out to that point and straight back, a needle.
+// The point goes, at either end; a sharp design corner (30 degrees) stays.
+TEST(BorderVertices, NoNeedleWhereAnEndLandsShortOfTheBorder) {
+  const std::vector<Vec3> points = {Vec3(1, 0, 0), Vec3(2, 0, 0), Vec3(3, 0, 0)};
+  const Vec3 from(0, 0.001, 0), short_end(2.9, 0.001, 0);
+  // Douglas-Peucker alone keeps point 2 (0.1 from the end, above the tolerance).
+  EXPECT_EQ(thin_border(from, points, short_end, 0.05, 0), std::vector<int>{});
+  EXPECT_EQ(thin_border(from, points, short_end, 0.05, 1).size(), 1u);  // min_keep still holds
+  // Mirrored: the start lands past the first point.
+  const std::vector<Vec3> reversed = {Vec3(3, 0, 0), Vec3(2, 0, 0), Vec3(1, 0, 0)};
+  EXPECT_EQ(thin_border(short_end, reversed, from, 0.05, 0), std::vector<int>{});
+  // A real corner of 30 degrees at the last point is the design's: kept.
+  const Vec3 corner_end = Vec3(3, 0, 0) + 0.5 * Vec3(-std::cos(kPi / 6), std::sin(kPi / 6), 0);
+  EXPECT_EQ(thin_border(from, points, corner_end, 0.05, 0), std::vector<int>{2});
+}
+
 TEST(BorderVertices, DroppedPointsStayWithinTolerance) {
   // A wiggly border: a sine of two periods with many points, at several tolerances.
   const Vec3 from(0, 0, 0), to(4, 0, 0);
