@@ -14,8 +14,11 @@ const { withPage } = suite;
 
 const fabrications = (page) => page.evaluate(() => Number(document.body.dataset.fabrications ?? 0));
 
-// Runs `action` and waits for the fabrication outputs it asks for.
+// Runs `action` and waits for the fabrication outputs it asks for. Outputs already asked for
+// (a solve asks for its panels' at once) arrive first: counted after them, they cannot pass
+// for the action's (CI once read the stats of the solve's outputs, without the thickness).
 async function fabricatedAfter(page, action) {
+  await page.waitForFunction(() => document.body.dataset.fabricating !== 'true', null, { timeout: 60_000, polling: 50 });
   const since = await fabrications(page);
   await action();
   await page.waitForFunction((since) => Number(document.body.dataset.fabrications ?? 0) > since, since, { timeout: 60_000, polling: 50 });

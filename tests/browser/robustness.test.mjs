@@ -75,8 +75,16 @@ test('a load overtaken by an open that fails: the page shows, and solves, the me
     for (let j = 0; j <= n; j++) for (let i = 0; i <= n; i++) lines.push(`${i} ${j} ${(((i - n / 2) ** 2 - (j - n / 2) ** 2) / (n * 10)).toFixed(4)}`);
     const faces = [];
     for (let j = 0; j < n; j++) for (let i = 0; i < n; i++) faces.push(`4 ${j * (n + 1) + i} ${j * (n + 1) + i + 1} ${(j + 1) * (n + 1) + i + 1} ${(j + 1) * (n + 1) + i}`);
+    // The load may pass between two polls (CI once missed it for 30 s polling each frame):
+    // an observer records that it reached the worker.
+    await page.evaluate(() => {
+      window.sawLoading = false;
+      new MutationObserver(() => {
+        if (document.body.dataset.opening === 'loading') window.sawLoading = true;
+      }).observe(document.body, { attributes: true, attributeFilter: ['data-opening'] });
+    });
     await drop('pringle.off', `OFF\n${lines.length} ${faces.length} 0\n${lines.join('\n')}\n${faces.join('\n')}\n`);
-    await page.waitForFunction(() => document.body.dataset.opening === 'loading', null, { timeout: 30_000, polling: 'raf' });
+    await page.waitForFunction(() => window.sawLoading, null, { timeout: 30_000, polling: 20 });
     await drop('broken.glb', 'glTF not really');
     // Which finishes first is up to the browser; wait until both have, and any solve too.
     await page
