@@ -183,25 +183,9 @@ class GapFiller {
 
 }  // namespace
 
-double polygon_distance(const std::vector<Vec2>& a, const std::vector<Vec2>& b) {
-  if (a.empty() || b.empty()) return std::numeric_limits<double>::infinity();
-  if (point_in_polygon(a, b[0]) || point_in_polygon(b, a[0])) return 0.0;
-  double d = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    const Vec2 &p = a[i], &q = a[(i + 1) % a.size()];
-    for (std::size_t j = 0; j < b.size(); ++j) {
-      const Vec2 &r = b[j], &s = b[(j + 1) % b.size()];
-      if (segments_cross(p, q, r, s)) return 0.0;
-      d = std::min({d, distance_point_segment(p, r, s), distance_point_segment(q, r, s),
-                    distance_point_segment(r, p, q), distance_point_segment(s, p, q)});
-    }
-  }
-  return d;
-}
-
 // Answers at the first pair of edges that proves it. A pair whose boxes are more than the
 // spacing apart on an axis is skipped unmeasured: its four point-segment distances are at
-// least that gap. The margin of 1e-9 of the spacing keeps the answer polygon_distance's
+// least that gap. The margin of 1e-9 of the spacing keeps the answer the full measure's
 // where rounding could put a measured distance a hair below the gap.
 bool polygons_closer_than(const std::vector<Vec2>& a, const std::vector<Vec2>& b, double spacing) {
   if (a.empty() || b.empty()) return false;

@@ -8,12 +8,9 @@
 
 namespace ff {
 
-// Distance between two polygons' regions (closed, either orientation): 0 when they cross,
-// touch or one contains the other.
-double polygon_distance(const std::vector<Vec2>& a, const std::vector<Vec2>& b);
-
-// polygon_distance(a, b) < spacing, for spacing > 0, without measuring every pair of edges:
-// the candidate checks of the gap filling ask this millions of times.
+// Whether two polygons' regions (closed, either orientation) come closer than `spacing` (> 0):
+// crossing, touching and one containing the other count as distance 0. Answered without
+// measuring every pair of edges: the gap filling's candidate checks ask it millions of times.
 bool polygons_closer_than(const std::vector<Vec2>& a, const std::vector<Vec2>& b, double spacing);
 
 // Moves parts from the last sheet onto earlier ones wherever their outer and inner faces

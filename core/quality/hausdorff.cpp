@@ -139,17 +139,20 @@ TriMesh triangulate_panels(const PanelMesh& panels, std::vector<int>* triangle_p
   return mesh;
 }
 
-std::vector<Vec3> sample_surface(const TriMesh& mesh, int target, std::uint64_t seed) {
+std::vector<Vec3> sample_surface(const TriMesh& mesh, int target, std::uint64_t seed, std::vector<int>* triangle) {
   std::vector<Vec3> samples;
-  std::vector<char> used(mesh.positions.size(), 0);
-  for (const Triangle& t : mesh.triangles) {
-    for (int v : t) {
+  std::vector<int> first_triangle(mesh.positions.size(), -1);  // -1: no triangle uses the vertex
+  for (int f = 0; f < mesh.num_faces(); ++f) {
+    for (int v : mesh.triangles[static_cast<size_t>(f)]) {
       if (v < 0 || v >= mesh.num_vertices()) throw InputError("sampling: a triangle refers to a missing vertex");
-      used[static_cast<size_t>(v)] = 1;
+      if (first_triangle[static_cast<size_t>(v)] < 0) first_triangle[static_cast<size_t>(v)] = f;
     }
   }
-  for (size_t v = 0; v < used.size(); ++v) {
-    if (used[v]) samples.push_back(mesh.positions[v]);
+  if (triangle) triangle->clear();
+  for (size_t v = 0; v < first_triangle.size(); ++v) {
+    if (first_triangle[v] < 0) continue;
+    samples.push_back(mesh.positions[v]);
+    if (triangle) triangle->push_back(first_triangle[v]);
   }
   const double total = total_area(mesh);
   const long long fixed = static_cast<long long>(samples.size()) + mesh.num_faces();
@@ -168,12 +171,14 @@ std::vector<Vec3> sample_surface(const TriMesh& mesh, int target, std::uint64_t 
     const Vec3& b = mesh.positions[static_cast<size_t>(t[1])];
     const Vec3& c = mesh.positions[static_cast<size_t>(t[2])];
     samples.push_back((a + b + c) / 3.0);
+    if (triangle) triangle->push_back(f);
     cumulative += face_area(mesh, f);
     const bool last = f + 1 == mesh.num_faces();
     while (j < random && (next_position < cumulative || last)) {
       // Uniform in the triangle: sqrt warps the first coordinate so density is even.
       const double s = std::sqrt(rng.uniform()), r = rng.uniform();
       samples.push_back((1.0 - s) * a + s * (1.0 - r) * b + s * r * c);
+      if (triangle) triangle->push_back(f);
       ++j;
       next_position = (static_cast<double>(j) + rng.uniform()) / static_cast<double>(random) * total;
     }

@@ -35,8 +35,10 @@ std::vector<Vec2> panel_polygon_2d(const PanelMesh& panels, int panel, const Pla
 TriMesh triangulate_panels(const PanelMesh& panels, std::vector<int>* triangle_panel = nullptr);
 
 // The deterministic sample set described above (at least every referenced vertex and every
-// centroid, even beyond target).
-std::vector<Vec3> sample_surface(const TriMesh& mesh, int target, std::uint64_t seed);
+// centroid, even beyond target). `triangle` (optional) receives, per sample, the triangle it
+// lies on (for a vertex: the first triangle that refers to it).
+std::vector<Vec3> sample_surface(const TriMesh& mesh, int target, std::uint64_t seed,
+                                 std::vector<int>* triangle = nullptr);
 
 // The points' indices along a Morton (Z-order) curve over their bounding box, 10 bits per
 // axis (a three-pass radix sort; equal codes keep their order). Queried in this order,

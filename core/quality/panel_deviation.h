@@ -15,7 +15,8 @@ namespace ff {
 //  - points of the input triangles the panel stands for (PanelMesh::face_panel) of the
 //    distance to the nearest panel (any panel: where a neighbour is closer, the surface is
 //    covered there).
-// About samples_per_side points a side (deterministic). A panel with neither kind of sample
+// About samples_per_side points a side (sample_surface: every vertex and centroid at least;
+// deterministic). A panel with neither kind of sample
 // gets 0. The maximum over panels approximates the two-sided Hausdorff distance at this
 // sampling. Throws InputError for an input without triangles or extent, a face_panel that does
 // not match the input's triangles, or a negative sample count.

@@ -362,6 +362,17 @@ TEST(Quality, HausdorffIsDeterministicAndSamplesEnough) {
   const std::vector<Vec3> samples = sample_surface(sphere, 50000, 1);
   EXPECT_EQ(samples.size(), 50000u);
   EXPECT_EQ(samples, sample_surface(sphere, 50000, 1));
+  // Each sample names the triangle it lies on; asking for that changes no sample.
+  std::vector<int> on;
+  EXPECT_EQ(sample_surface(sphere, 50000, 1, &on), samples);
+  ASSERT_EQ(on.size(), samples.size());
+  for (size_t i = 0; i < samples.size(); ++i) {
+    const Triangle& t = sphere.triangles[static_cast<size_t>(on[i])];
+    const Vec3 x = closest_point_on_triangle(samples[i], sphere.positions[static_cast<size_t>(t[0])],
+                                             sphere.positions[static_cast<size_t>(t[1])],
+                                             sphere.positions[static_cast<size_t>(t[2])]);
+    ASSERT_LT((x - samples[i]).norm(), 1e-12) << "sample " << i;
+  }
   // Fewer samples asked than vertices + centroids: those are always there.
   EXPECT_EQ(sample_surface(sphere, 10, 1).size(), static_cast<size_t>(sphere.num_vertices() + sphere.num_faces()));
   const HausdorffResult a = hausdorff_distance(sphere, icosahedron(), 30000);

@@ -21,10 +21,15 @@ export function farthestNote(report: QualityReport): string | null {
   return `Farthest from the design: ${(hausdorff * 100).toFixed(2)} % of the diagonal`;
 }
 
-// The top of the deviation view's scale: the largest panel deviation, in % of the diagonal.
+// The largest finite panel deviation (0 for none): the top of the deviation view's colours and
+// of its legend's scale.
+export function largestDeviation(deviation: Float64Array): number {
+  return deviation.reduce((a, b) => (Number.isFinite(b) ? Math.max(a, b) : a), 0);
+}
+
+// The top of the deviation view's scale, in % of the diagonal.
 export function deviationScaleTop(deviation: Float64Array): string {
-  const largest = deviation.reduce((a, b) => (Number.isFinite(b) ? Math.max(a, b) : a), 0);
-  return `${(largest * 100).toFixed(2)} % of the diagonal`;
+  return `${(largestDeviation(deviation) * 100).toFixed(2)} % of the diagonal`;
 }
 
 // The farthest point's legend line (#farthest-legend, hidden without a result or a point) and

@@ -3,6 +3,7 @@
 // "before the fix", the same polygons through their mesh corners, coloured by how far each is
 // from planar: what intersecting planes buys.
 import * as THREE from 'three';
+import { largestDeviation } from '../farthest.ts';
 import type { SolveResult } from '../protocol.ts';
 import { deviationColor, idColor, planarityColor, PROBLEM_RED } from './colors.ts';
 
@@ -51,7 +52,7 @@ function faceGeometry(result: SolveResult, origin: THREE.Vector3, beforeFix: boo
   const colors = new Float32Array(triangles * 9);
   const invalid = new Set(result.problems.invalidPanels);
   const rgb = new Float32Array(3);
-  const largest = result.panelDeviation.reduce((a, b) => Math.max(a, b), 0);
+  const largest = largestDeviation(result.panelDeviation);
   for (let t = 0; t < triangles; t++) {
     const panel = result.panelTriangleIds[t] ?? 0;
     if (beforeFix) planarityColor(result.cornerPlanarity[panel] ?? 0, rgb, 0);
@@ -72,23 +73,29 @@ function faceGeometry(result: SolveResult, origin: THREE.Vector3, beforeFix: boo
 }
 
 function edgeGeometry(result: SolveResult, origin: THREE.Vector3, beforeFix: boolean): THREE.BufferGeometry {
+  const all = Array.from({ length: Math.max(0, result.panelOffsets.length - 1) }, (_, panel) => panel);
+  const geometry = new THREE.BufferGeometry();
+  geometry.setAttribute('position', new THREE.BufferAttribute(outlineSegments(result, all, origin, beforeFix), 3));
+  return geometry;
+}
+
+// The polygon sides of `panels` as line segments (corner to next corner), shifted by `origin`;
+// through the mesh corners ("before the fix") or through the panel vertices.
+export function outlineSegments(result: SolveResult, panels: readonly number[], origin: THREE.Vector3, beforeFix = false): Float32Array {
   const { panelOffsets, panelIndices } = result;
   const source = beforeFix ? result.cornerPositions : result.panelPositions;
-  const segments = panelIndices.length; // one per polygon side
-  const positions = new Float32Array(segments * 6);
+  let sides = 0;
+  for (const panel of panels) sides += panelOffsets[panel + 1]! - panelOffsets[panel]!;
+  const positions = new Float32Array(sides * 6);
   let s = 0;
-  for (let panel = 0; panel + 1 < panelOffsets.length; panel++) {
+  for (const panel of panels) {
     const begin = panelOffsets[panel]!;
     const end = panelOffsets[panel + 1]!;
     for (let i = begin; i < end; i++) {
-      const a = panelIndices[i]!;
-      const b = panelIndices[i + 1 < end ? i + 1 : begin]!;
-      shifted(source, a, origin, positions, s * 6);
-      shifted(source, b, origin, positions, s * 6 + 3);
+      shifted(source, panelIndices[i]!, origin, positions, s * 6);
+      shifted(source, panelIndices[i + 1 < end ? i + 1 : begin]!, origin, positions, s * 6 + 3);
       s += 1;
     }
   }
-  const geometry = new THREE.BufferGeometry();
-  geometry.setAttribute('position', new THREE.BufferAttribute(positions.subarray(0, s * 6), 3));
-  return geometry;
+  return positions;
 }

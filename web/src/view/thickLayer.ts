@@ -10,6 +10,7 @@ import { LineSegmentsGeometry } from 'three/examples/jsm/lines/LineSegmentsGeome
 import type { SpreadNodes } from '@flatfacet/wasm';
 import type { SolveResult } from '../protocol.ts';
 import { PROBLEM_RED } from './colors.ts';
+import { outlineSegments } from './panelLayer.ts';
 
 const MATERIAL_COLOUR = 0xc9a77c; // plywood
 const FOLDED_COLOUR = 0xe040fb; // magenta (styles.css .legend-dash)
@@ -73,27 +74,6 @@ export class ThickLayer {
   setResolution(width: number, height: number): void {
     this.foldedMaterial.resolution.set(width, height);
   }
-}
-
-// Each panel's boundary as line segments (corner to next corner), shifted by `origin`.
-function outlineSegments(result: SolveResult, panels: number[], origin: THREE.Vector3): Float32Array {
-  let corners = 0;
-  for (const p of panels) corners += result.panelOffsets[p + 1]! - result.panelOffsets[p]!;
-  const out = new Float32Array(corners * 6);
-  let i = 0;
-  const push = (corner: number): void => {
-    const v = result.panelIndices[corner]!;
-    for (let k = 0; k < 3; k++) out[i++] = result.panelPositions[v * 3 + k]! - origin.getComponent(k);
-  };
-  for (const p of panels) {
-    const start = result.panelOffsets[p]!;
-    const end = result.panelOffsets[p + 1]!;
-    for (let a = start; a < end; a++) {
-      push(a);
-      push(a + 1 < end ? a + 1 : start);
-    }
-  }
-  return out;
 }
 
 function solidGeometry(result: SolveResult, inner: Float64Array, origin: THREE.Vector3): THREE.BufferGeometry {
