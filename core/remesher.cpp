@@ -63,6 +63,8 @@ constexpr size_t kMaxSplitsPerRound = 3;
 // 87.7 -> 79.7 s (every mesh 0-29% less; bunny 200 1.41 -> 1.25 s), Hausdorff geometric
 // mean 0.996.
 constexpr int kMendEarlyAt = 3;
+// Corners below this at split nodes get the group's other pairings tried (widen_needle_corners.cpp).
+constexpr double kNeedleCornerDeg = 5.0;
 // An invalid cluster with fewer faces than the mean cluster's over this cannot be split near
 // its problem (a split needs a face at the problem corner other than the seed): when the
 // rounds stall with no split to make, it moves elsewhere instead, as an enclosed one does.
@@ -397,7 +399,8 @@ void Remesher::end_panels() {
   progress_.energy = clustering_.energy * faces_.area_to_world();
   panels_ = best_->layout().to_panel_mesh(faces_);
   progress_.invalid_panels = panels_.num_invalid();
-  const bool optimize = (params_.optimize_planes || params_.single_point_nodes) && panels_.num_invalid() == 0;
+  // Valid panels always go on: the needle widening runs even without the plane fit.
+  const bool optimize = panels_.num_invalid() == 0;
   progress_.stage = optimize ? Stage::Optimize : Stage::Done;
   if (optimize) progress_ = Progress{Stage::Optimize, 0, 1, progress_.energy, 0};
   if (!optimize) record_planes(), cut_glass();
@@ -448,6 +451,9 @@ void Remesher::optimize_planes() {
     layout.try_planes(fitted, 2);
     for (double step : {0.5, 0.25}) layout.try_planes(planes_toward(layout.planes().planes, fitted, step));
   }
+  // Then the needles the fit leaves at split nodes (a pairing only moves nodes along their
+  // planes' lines, so the planes stay as fitted).
+  layout.widen_needle_corners(kNeedleCornerDeg);
   // Last: it pins planes to points, which the fit above would undo.
   if (params_.single_point_nodes) layout.make_single_point_nodes();
   panels_ = layout.to_panel_mesh(faces_);

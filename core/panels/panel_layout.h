@@ -112,6 +112,11 @@ class PanelLayout {
   // (aim_face_normals.cpp). fixed_masters (per master, empty for none) and
   // single-point masters stay. Returns the turns kept.
   int aim_face_normals(const std::vector<char>& fixed_masters = {});
+  // At node groups of four or more clusters (not held, not single) where a corner at or next
+  // to one of the group's nodes is below below_deg: tries the group's other pairings and
+  // keeps the one whose smallest such corner is widest, as long as no more panels around it
+  // are invalid (widen_needle_corners.cpp). Returns the number of groups changed.
+  int widen_needle_corners(double below_deg);
   // The masters whose planes pass through the point of a single-point group, sorted.
   std::vector<int> single_point_masters() const;
   // Replaces the plane of each master with `candidates[m]`, one at a time, keeping each
@@ -165,6 +170,9 @@ class PanelLayout {
   // After planes_ changed from `old`; all_panels: every panel built, not only those changed.
   void rebuild_changed(const std::vector<Plane>& old, bool all_panels = false);
   std::vector<int> clusters_of_group(int group) const;
+  // The smallest interior angle (degrees) of these panels at the group's nodes and at the
+  // vertices next to them (360 when there is none).
+  double smallest_corner_near_group(int group, const std::vector<int>& clusters) const;
   std::vector<int> distinct_masters(int group) const;  // the masters of its clusters, in their order
   std::vector<int> masters_of_node(size_t node) const;
   // The groups a master's plane places and the panels they (and its own) build, sorted.
