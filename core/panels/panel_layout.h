@@ -115,7 +115,9 @@ class PanelLayout {
   // At node groups of four or more clusters (not held, not single) where a corner at or next
   // to one of the group's nodes is below below_deg: tries the group's other pairings and
   // keeps the one whose smallest such corner is widest, as long as no more panels around it
-  // are invalid (widen_needle_corners.cpp). Returns the number of groups changed.
+  // are invalid; where still below, makes the group one vertex (make_group_single) when that
+  // widens it and narrows and invalidates nothing its planes reach (widen_needle_corners.cpp).
+  // Returns the number of groups changed.
   int widen_needle_corners(double below_deg);
   // The masters whose planes pass through the point of a single-point group, sorted.
   std::vector<int> single_point_masters() const;
@@ -174,6 +176,15 @@ class PanelLayout {
   // vertices next to them (360 when there is none).
   double smallest_corner_near_group(int group, const std::vector<int>& clusters) const;
   std::vector<int> distinct_masters(int group) const;  // the masters of its clusters, in their order
+  // Group g (interior, four or more distinct masters, none of them through another group's
+  // point, not held) made one vertex: its masters translated through their least-squares
+  // point, which must be within the spike distance of the group's reference; nodes and
+  // panels rebuilt. `old` gets the planes before. False (nothing changed) when it cannot be.
+  bool make_group_single(int g, std::vector<Plane>& old);
+  // Back to the planes `old` and the split group, exactly as before make_group_single().
+  void undo_group_single(int g, const std::vector<Plane>& old);
+  // The smallest interior angle (degrees) of these panels' corners (360 when none).
+  double smallest_corner(const std::vector<int>& clusters) const;
   std::vector<int> masters_of_node(size_t node) const;
   // The groups a master's plane places and the panels they (and its own) build, sorted.
   void master_reach(int master, std::vector<int>& groups, std::vector<int>& clusters) const;

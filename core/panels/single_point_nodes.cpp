@@ -212,6 +212,40 @@ int PanelLayout::single_point_fix(const std::vector<char>& fixed_masters) {
   return made;
 }
 
+bool PanelLayout::make_group_single(int g, std::vector<Plane>& old) {
+  const NodeGroup& group = groups_.groups[static_cast<size_t>(g)];
+  if (group.on_boundary || single_[static_cast<size_t>(g)] || held_group_[static_cast<size_t>(g)]) return false;
+  const std::vector<int> masters = distinct_masters(g);
+  if (masters.size() < 4) return false;
+  // A plane through another group's point already would have to turn to keep it.
+  const std::vector<int> pinned = single_point_masters();
+  for (int m : masters) {
+    if (std::binary_search(pinned.begin(), pinned.end(), m)) return false;
+  }
+  const Vec3 x = least_squares_point(planes_.planes, masters, group.reference);
+  if (!x.allFinite() || !((x - group.reference).norm() <= options_.spike_distance)) return false;
+  old = planes_.planes;
+  for (int m : masters) {
+    Plane& p = planes_.planes[static_cast<size_t>(m)];
+    p = Plane::through(x, p.normal);
+  }
+  single_[static_cast<size_t>(g)] = 1;
+  single_point_[static_cast<size_t>(g)] = x;
+  rebuild_changed(old);
+  place_group_nodes(g);
+  rebuild(clusters_of_group(g));
+  return true;
+}
+
+void PanelLayout::undo_group_single(int g, const std::vector<Plane>& old) {
+  const std::vector<Plane> changed = planes_.planes;
+  planes_.planes = old;
+  single_[static_cast<size_t>(g)] = 0;
+  rebuild_changed(changed);
+  place_group_nodes(g);
+  rebuild(clusters_of_group(g));
+}
+
 std::vector<int> PanelLayout::distinct_masters(int group) const {
   std::vector<int> masters;
   for (int c : clusters_of_group(group)) {

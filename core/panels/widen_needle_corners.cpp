@@ -4,8 +4,11 @@
 // although the panel is simple, star-shaped and spike-free. Over the sweep's cases at seeds
 // 1-2, 44 of 128 runs had a corner below 1 degree, four in five of them at a split node.
 // Another pairing of the same group often has no needle: the nodes move along the same
-// planes' lines by about the short edge between them. This runs on a layout whose panels are
-// final (Remesher::optimize_planes), so the rounds and which runs end valid are unchanged.
+// planes' lines by about the short edge between them. Where none is, the group becomes one
+// vertex (the paper's single-point option, 2.2, here only where it removes a needle): four or
+// five panels meet at a point instead of a needle, which a fabricator can make. This runs on a
+// layout whose panels are final (Remesher::optimize_planes), so the rounds and which runs end
+// valid are unchanged.
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
@@ -88,8 +91,44 @@ int PanelLayout::widen_needle_corners(double below_deg) {
     place_group_nodes(group);
     rebuild(around);
     if (best != original) ++changes;
+    if (!(widest < below_deg)) continue;
+    // No pairing is needle-free: the group as one point (paper 2.2's option, here only where
+    // it removes a needle), its planes translated through their least-squares point. That
+    // moves every node on those planes, so it is judged on all the panels they reach: none
+    // more invalid, none narrower than before (to the margin), and the group's needle wider.
+    std::vector<int> reach, groups, clusters;
+    for (int m : distinct_masters(group)) {
+      master_reach(m, groups, clusters);
+      reach.insert(reach.end(), clusters.begin(), clusters.end());
+    }
+    std::sort(reach.begin(), reach.end());
+    reach.erase(std::unique(reach.begin(), reach.end()), reach.end());
+    const int invalid_reach = invalid_among(reach);
+    const double narrowest = smallest_corner(reach);
+    std::vector<Plane> old;
+    if (!make_group_single(group, old)) continue;
+    if (invalid_among(reach) <= invalid_reach && smallest_corner(reach) >= narrowest - kWiderByDeg &&
+        smallest_corner_near_group(group, around) > widest + kWiderByDeg) {
+      ++changes;
+    } else {
+      undo_group_single(group, old);
+    }
   }
   return changes;
+}
+
+double PanelLayout::smallest_corner(const std::vector<int>& clusters) const {
+  double smallest = 360.0;
+  for (int c : clusters) {
+    const PanelPolygon& poly = polygons_[static_cast<size_t>(c)];
+    const size_t n = poly.points.size();
+    if (n < 3) continue;
+    const Vec3& normal = planes_.plane_of(c).normal;
+    for (size_t i = 0; i < n; ++i)
+      smallest = std::min(smallest,
+                          corner_deg(poly.points[(i + n - 1) % n], poly.points[i], poly.points[(i + 1) % n], normal));
+  }
+  return smallest;
 }
 
 }  // namespace ff
