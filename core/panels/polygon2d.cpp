@@ -318,23 +318,26 @@ std::vector<std::array<int, 3>> triangulate_polygon(const std::vector<Vec2>& pol
   return tris;
 }
 
-double min_interior_angle_deg(const std::vector<Vec2>& polygon) {
+PolygonCorner smallest_interior_angle(const std::vector<Vec2>& polygon) {
   const size_t k = polygon.size();
-  if (k < 3) return 0.0;
+  if (k < 3) return {};
   const double sign = signed_area(polygon) >= 0.0 ? 1.0 : -1.0;
-  double best = 360.0;
+  PolygonCorner best{360.0, -1};
   for (size_t i = 0; i < k; ++i) {
     const Vec2& b = polygon[i];
     const Vec2 to_next = at(polygon, i + 1) - b;
     const Vec2 to_prev = at(polygon, i + k - 1) - b;
-    if (to_next.squaredNorm() == 0.0 || to_prev.squaredNorm() == 0.0) return 0.0;
+    if (to_next.squaredNorm() == 0.0 || to_prev.squaredNorm() == 0.0) return {0.0, static_cast<int>(i)};
     // Interior angle: from the outgoing edge, turning towards the interior, to the incoming one.
     const double cross = sign * (to_next.x() * to_prev.y() - to_next.y() * to_prev.x());
     double angle = std::atan2(cross, to_next.dot(to_prev));
     if (angle < 0.0) angle += 2.0 * kPi;
-    best = std::min(best, angle * 180.0 / kPi);
+    const double deg = angle * 180.0 / kPi;
+    if (deg < best.angle_deg) best = {deg, static_cast<int>(i)};
   }
   return best;
 }
+
+double min_interior_angle_deg(const std::vector<Vec2>& polygon) { return smallest_interior_angle(polygon).angle_deg; }
 
 }  // namespace ff

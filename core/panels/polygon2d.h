@@ -100,5 +100,11 @@ std::vector<std::array<int, 3>> triangulate_polygon(const std::vector<Vec2>& pol
 // 180. The interior is the left side for CCW polygons, the right side for CW ones. A corner
 // with a zero-length edge counts as 0. Returns 0 for fewer than 3 vertices.
 double min_interior_angle_deg(const std::vector<Vec2>& polygon);
+// The same with its corner: the vertex index (the first on ties; -1 for fewer than 3 vertices).
+struct PolygonCorner {
+  double angle_deg = 0.0;
+  int index = -1;
+};
+PolygonCorner smallest_interior_angle(const std::vector<Vec2>& polygon);
 
 }  // namespace ff

@@ -274,7 +274,13 @@ QualityReport measure_quality(const TriMesh& input, const MeshTopology& input_to
     for (const int i : flipped_starts)
       r.flipped_edge_vertices.push_back(
           {poly[static_cast<size_t>(i)], poly[(static_cast<size_t>(i) + 1) % poly.size()]});
-    min_angle = std::min(min_angle, min_interior_angle_deg(poly2d));
+    const PolygonCorner sharpest = smallest_interior_angle(poly2d);
+    if (sharpest.angle_deg < min_angle) {  // (a panel of fewer than 3 vertices: 0, at its first)
+      min_angle = sharpest.angle_deg;
+      r.min_corner_angle_panel = p;
+      const size_t at = static_cast<size_t>(std::max(sharpest.index, 0));
+      if (at < poly.size()) r.min_corner_angle_point = panels.vertices[static_cast<size_t>(poly[at])];
+    }
     // Glass: judged on the counter-clockwise outline (a clockwise one is flipped anyway).
     const bool concave = signed_area(poly2d) > 0.0 && !reflex_corners(poly2d).empty();
     int acute = 0;

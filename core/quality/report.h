@@ -71,6 +71,10 @@ struct QualityReport {
   double valence3_share = 1.0;  // share of interior vertices with valence 3; 1 when none
   // Smallest interior corner angle over all panels, in each panel's plane; 0 without panels.
   double min_corner_angle_deg = 0.0;
+  // Where it is (world coordinates, for visualisation: the page marks the sharpest corner) and
+  // its panel; -1 without panels.
+  Vec3 min_corner_angle_point = Vec3::Zero();
+  int min_corner_angle_panel = -1;
   // Panels with a reflex corner (invalid in glass mode), corners below the minimum angle of
   // the options (each an invalid panel's problem), and that minimum.
   int concave_panels = 0;

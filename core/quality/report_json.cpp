@@ -50,6 +50,10 @@ void write_quality_fields(JsonWriter& j, const QualityReport& q) {
   j.end_object();
   j.value("valence3_share", q.valence3_share);
   j.value("min_corner_angle_deg", q.min_corner_angle_deg);
+  j.begin_array("min_corner_angle_point");
+  for (int k = 0; k < 3; ++k) j.value(nullptr, q.min_corner_angle_point[k]);
+  j.end_array();
+  j.value("min_corner_angle_panel", q.min_corner_angle_panel);
   j.value("min_corner_angle_target_deg", q.min_corner_angle_target_deg);
   j.value("acute_corners", q.acute_corners);
   j.value("concave_panels", q.concave_panels);

@@ -32,6 +32,7 @@ import {
 
 const suite = browserSuite();
 const CYAN = [34, 211, 238]; // the farthest point's marker (view/problemLayer.ts)
+const VIOLET = [168, 85, 247]; // the sharpest corner's marker (view/problemLayer.ts)
 const { withPage } = suite;
 
 test('an example remeshes to the requested count; the OBJ is planar and the parts list matches', () =>
@@ -303,9 +304,10 @@ test('screenshots of the page after a solve, in each view', () =>
   }));
 
 // Where the panels are farthest from the design: a cyan point in the view (with the problems)
-// and a legend line giving the report's Hausdorff distance, as the Quality section does; and
+// and a legend line giving the report's Hausdorff distance, as the Quality section does; the
+// sharpest corner the same way (violet, the Quality section's "Min angle"); and
 // the deviation view, each panel coloured by its own distance, with its scale.
-test('the point farthest from the design is marked, with its distance; the deviation view colours the panels', () =>
+test('the point farthest from the design and the sharpest corner are marked, with their values; the deviation view colours the panels', () =>
   withPage(suite.url, async (page) => {
     assert.equal(await waitForDone(page), 300);
     const legend = page.locator('#farthest-legend');
@@ -315,8 +317,15 @@ test('the point farthest from the design is marked, with its distance; the devia
     assert.equal((await legend.textContent()).trim(), `Farthest from the design: ${hausdorff[1]} % of the diagonal`);
     const marked = await viewPixels(page, CYAN);
     assert.ok(marked > 20, `${marked} cyan pixels`);
+    // The sharpest corner: a violet point, and a legend line giving the Quality section's angle.
+    const minAngle = (await page.locator('#stats').textContent()).match(/Min angle\s*([\d.]+)°/);
+    assert.ok(minAngle, 'the Quality section gives the smallest corner angle');
+    assert.equal((await page.locator('#sharpest-legend').textContent()).trim(), `Sharpest corner: ${minAngle[1]}°`);
+    const sharpest = await viewPixels(page, VIOLET);
+    assert.ok(sharpest > 20, `${sharpest} violet pixels`);
     await screenshot(page, 'hyperboloid-300-farthest-point');
     assert.equal(await viewPixelsWithoutProblems(page, CYAN), 0, 'the marker hides with the problems');
+    assert.equal(await viewPixelsWithoutProblems(page, VIOLET), 0, 'the corner marker hides with the problems');
     const panelsView = await distinctColours(page, '#viewport canvas');
     await page.getByLabel('Show deviation from the design').check();
     const scale = page.locator('#deviation-legend');
@@ -331,6 +340,8 @@ test('the point farthest from the design is marked, with its distance; the devia
     assert.equal(await solveAfter(page, () => selectExample(page, 'saddle')), 120);
     const next = (await page.locator('#stats').textContent()).match(/Hausdorff\s*([\d.]+) %/);
     assert.match(await legend.textContent(), new RegExp(`${next[1].replace('.', '\\.')} % of the diagonal`));
+    const nextAngle = (await page.locator('#stats').textContent()).match(/Min angle\s*([\d.]+)°/);
+    assert.equal((await page.locator('#sharpest-legend').textContent()).trim(), `Sharpest corner: ${nextAngle[1]}°`);
   }));
 
 // A closed sphere (epcot.off) into 4 panels at seed 1: the first solve's panels stay invalid;

@@ -316,6 +316,24 @@ TEST(Quality, ConcavePanelWithCollinearVertices) {
   EXPECT_NEAR(r.min_corner_angle_deg, 90.0, 1e-9);
 }
 
+// The sharpest corner and where it is (the page marks it): a trapezoid in two triangles, whose
+// smallest angle is atan(1/4) at the origin, in panel 0; the other triangle's smallest is 21.2.
+TEST(Quality, SharpestCornerIsLocated) {
+  TriMesh input;
+  input.positions = {Vec3(0, 0, 0), Vec3(4, 0, 0), Vec3(4, 1, 0), Vec3(0, 1.5, 0)};
+  input.triangles = {{0, 1, 2}, {0, 2, 3}};
+  const PanelMesh pm = make_panels(input.positions, {{0, 1, 2}, {0, 2, 3}}, {0, 1, 2, 3}, {0, 1});
+  const QualityReport r = measure(input, pm);
+  EXPECT_NEAR(r.min_corner_angle_deg, std::atan(0.25) * 45.0 / std::atan(1.0), 1e-9);
+  EXPECT_EQ(r.min_corner_angle_panel, 0);
+  EXPECT_EQ(r.min_corner_angle_point, Vec3(0, 0, 0));
+  // The other way round, the sharpest is in panel 1, still at the origin.
+  const PanelMesh swapped = make_panels(input.positions, {{0, 2, 3}, {0, 1, 2}}, {0, 1, 2, 3}, {1, 0});
+  const QualityReport s = measure(input, swapped);
+  EXPECT_EQ(s.min_corner_angle_panel, 1);
+  EXPECT_EQ(s.min_corner_angle_point, Vec3(0, 0, 0));
+}
+
 TEST(Quality, PinchedVertexIsNotManifold) {
   // Two triangles sharing only a vertex: each fan is fine alone, together two half-disks.
   const std::vector<Vec3> v = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(-1, 0, 0), Vec3(0, -1, 0)};

@@ -11,7 +11,6 @@ import { ExamplePicker } from './examplePicker.ts';
 import { designStem } from './exports.ts';
 import { FabricationPanel } from './fabricationPanel.ts';
 import { clusterCount } from './edits/panelEdits.ts';
-import { renderDesignDistance } from './farthest.ts';
 import { Outputs } from './outputs.ts';
 import { PanelSelection } from './panelSelection.ts';
 import type { DesignParams } from './params.ts';
@@ -19,10 +18,10 @@ import { ParamsForm } from './paramsForm.ts';
 import { PrepareControl } from './prepareControl.ts';
 import { RepairControl } from './repairControl.ts';
 import type { SolveResult, WorkerResponse } from './protocol.ts';
+import { renderQuality } from './qualityViews.ts';
 import { saveSession } from './sessionStore.ts';
 import { MAX_HISTORY, type DesignState } from './share.ts';
 import { SolverClient, solverTestHooks, type Crash } from './solverClient.ts';
-import { renderStats } from './stats.ts';
 import { solvedSummary, StatusView } from './statusView.ts';
 import { Viewer } from './view/viewer.ts';
 
@@ -103,8 +102,7 @@ export class App {
     this.form.onChange(() => this.parametersChanged());
     this.preparation.onChange(() => this.opener.preparationChanged());
     this.repair.onChange(() => void this.opener.repairChanged());
-    renderStats(this.statsBox, null);
-    renderDesignDistance(null);
+    renderQuality(this.statsBox, null);
     this.updateButtons();
   }
 
@@ -241,8 +239,7 @@ export class App {
     countOutcome('solves');
     this.viewer.setSolving(false);
     this.viewer.setResult(result);
-    renderStats(this.statsBox, result);
-    renderDesignDistance(result);
+    renderQuality(this.statsBox, result);
     this.status.finishProgress();
     const summary = solvedSummary(result);
     const notice = this.opener.solveNotice;

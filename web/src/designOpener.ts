@@ -11,7 +11,6 @@ import { showMeshInfo, type ExamplePicker } from './examplePicker.ts';
 import { describeDesign, findExample } from './examples.ts';
 import { checkEditsFit } from './edits/panelEdits.ts';
 import type { FabricationPanel } from './fabricationPanel.ts';
-import { renderDesignDistance } from './farthest.ts';
 import type { MeshRepair } from './meshRepair.ts';
 import { payloadFromExample, payloadFromFile } from './meshFiles.ts';
 import type { Outputs } from './outputs.ts';
@@ -21,10 +20,10 @@ import type { PrepareControl } from './prepareControl.ts';
 import type { RepairControl } from './repairControl.ts';
 import { carriedParams, editFaces, preparationNeeded, refusedPreparation } from './preparation.ts';
 import type { Carry, SolveResult } from './protocol.ts';
+import { renderQuality } from './qualityViews.ts';
 import { rhinoLoaded } from './rhino/rhinoOpen.ts';
 import type { DesignMesh, DesignState, MeshPrepare } from './share.ts';
 import type { SolverClient } from './solverClient.ts';
-import { renderStats } from './stats.ts';
 import type { StatusView } from './statusView.ts';
 import { guessUpAxis } from './view/upAxis.ts';
 import type { Viewer } from './view/viewer.ts';
@@ -252,8 +251,7 @@ export class DesignOpener {
     this.host.preparation.show(opening.design); // what this mesh was prepared with
     showMeshInfo(loaded.mesh.label, loaded.mesh.info);
     rhinoLoaded(loaded.mesh.fileName, loaded.mesh.info);
-    renderStats(this.host.statsBox, null);
-    renderDesignDistance(null);
+    renderQuality(this.host.statsBox, null);
     this.host.fabrication.panelsChanged(false);
     this.host.updateButtons();
     // Overtaken by a later open: shown, since the worker holds it now, but that open goes on.
@@ -283,8 +281,7 @@ export class DesignOpener {
     const mesh = this.host.machine.mesh!;
     showMeshInfo(mesh.label, mesh.info);
     this.host.preparation.show(opening.design);
-    renderStats(this.host.statsBox, null);
-    renderDesignDistance(null);
+    renderQuality(this.host.statsBox, null);
     this.host.fabrication.panelsChanged(false);
     let chain = [...opening.history, opening.params];
     if (opening.reprepare === 'carry' && carried) {

@@ -3,14 +3,11 @@
 // with a legend line that gives the distance; and the scale of the deviation view (panels
 // coloured by their own distance, SolveResult.panelDeviation).
 import type { QualityReport, SolveResult } from './protocol.ts';
+import { reportPoint } from './reportPoint.ts';
 
 // The point, in mesh coordinates, when the report has a finite one.
 export function farthestPoint(report: QualityReport): [number, number, number] | null {
-  const value = report.hausdorff_worst_point;
-  if (!Array.isArray(value) || value.length !== 3) return null;
-  const [x, y, z] = value as unknown[];
-  if (typeof x !== 'number' || typeof y !== 'number' || typeof z !== 'number') return null;
-  return Number.isFinite(x) && Number.isFinite(y) && Number.isFinite(z) ? [x, y, z] : null;
+  return reportPoint(report, 'hausdorff_worst_point');
 }
 
 // The legend line for it, or null when there is nothing to mark (no point, or panels that

@@ -73,7 +73,7 @@ export function statsRows(result: SolveResult): Row[] {
     { label: 'Before the fix', value: scientific(before), hint: 'planarity of the same polygons through their mesh corners, before the planes were intersected' },
     { label: 'Hausdorff', value: hausdorff === null ? '–' : `${(hausdorff * 100).toFixed(2)} %`, hint: 'two-sided distance to the input surface, relative to the bounding-box diagonal; where it is largest is marked cyan in the view' },
     { label: 'Valence 3', value: share === null ? '–' : `${(share * 100).toFixed(1)} %`, hint: 'interior nodes where exactly three panels meet' },
-    { label: 'Min angle', value: minAngle === null ? '–' : `${minAngle.toFixed(1)}°`, hint: 'smallest corner angle of any panel' },
+    { label: 'Min angle', value: minAngle === null ? '–' : `${minAngle.toFixed(1)}°`, hint: 'smallest corner angle of any panel; where it is is marked violet in the view' },
     ...(minAngleTarget > 0
       ? [{ label: 'Acute corners', value: acute === null ? '–' : String(acute), hint: `panel corners below the minimum corner angle of ${minAngleTarget}° (marked amber)`, warn: (acute ?? 0) > 0 }]
       : []),

@@ -1,8 +1,8 @@
 // Problem markers (paper fig. 6): spike vertices as red points, flipped edges as thick red
 // lines (screen-space width, since WebGL lines are one pixel wide), corners below the minimum
 // corner angle (glass mode) as larger amber points, and where the panels are farthest from the
-// design (the Hausdorff distance's worst sample) as a cyan point. Invalid panels are tinted by
-// the panel layer.
+// design (the Hausdorff distance's worst sample) as a cyan point, and the sharpest corner of
+// any panel as a violet one. Invalid panels are tinted by the panel layer.
 import * as THREE from 'three';
 import { LineMaterial } from 'three/examples/jsm/lines/LineMaterial.js';
 import { LineSegments2 } from 'three/examples/jsm/lines/LineSegments2.js';
@@ -12,6 +12,9 @@ import type { Problems } from '@flatfacet/wasm';
 const RED = 0xee2924;
 const AMBER = 0xffb000;
 const CYAN = 0x22d3ee; // styles.css .legend-dot.farthest
+const VIOLET = 0xa855f7; // styles.css .legend-dot.sharpest
+
+type Point = [number, number, number];
 
 function shiftedPoints(values: number[], origin: THREE.Vector3): THREE.BufferGeometry {
   const positions = new Float32Array(values.length);
@@ -27,6 +30,7 @@ export class ProblemLayer {
   private readonly flipped: LineSegments2;
   readonly acute: THREE.Points<THREE.BufferGeometry, THREE.PointsMaterial>;
   private readonly farthest: THREE.Points<THREE.BufferGeometry, THREE.PointsMaterial>;
+  private readonly sharpest: THREE.Points<THREE.BufferGeometry, THREE.PointsMaterial>;
   private readonly lineMaterial: LineMaterial;
 
   constructor() {
@@ -45,16 +49,25 @@ export class ProblemLayer {
     this.farthest = new THREE.Points(new THREE.BufferGeometry(), new THREE.PointsMaterial({ color: CYAN, size: 12, sizeAttenuation: false, depthTest: false }));
     this.farthest.name = 'farthest-point';
     this.farthest.renderOrder = 9;
+    this.sharpest = new THREE.Points(new THREE.BufferGeometry(), new THREE.PointsMaterial({ color: VIOLET, size: 12, sizeAttenuation: false, depthTest: false }));
+    this.sharpest.name = 'sharpest-corner';
+    this.sharpest.renderOrder = 9;
     this.spikes.renderOrder = 10;
     this.flipped.renderOrder = 10;
     this.acute.renderOrder = 9;
-    this.group.add(this.farthest, this.acute, this.spikes, this.flipped);
+    this.group.add(this.farthest, this.sharpest, this.acute, this.spikes, this.flipped);
   }
 
-  set(problems: Problems | null, farthest: [number, number, number] | null, origin: THREE.Vector3): void {
-    this.farthest.geometry.dispose();
-    this.farthest.geometry = shiftedPoints(farthest ?? [], origin);
-    this.farthest.visible = farthest !== null;
+  // farthest, sharpest: the report's points (mesh coordinates), or null.
+  set(problems: Problems | null, farthest: Point | null, sharpest: Point | null, origin: THREE.Vector3): void {
+    for (const [layer, point] of [
+      [this.farthest, farthest],
+      [this.sharpest, sharpest],
+    ] as const) {
+      layer.geometry.dispose();
+      layer.geometry = shiftedPoints(point ?? [], origin);
+      layer.visible = point !== null;
+    }
 
     const spikes = problems?.spikes ?? [];
     const spikePositions = new Float32Array(spikes.length);

@@ -5,6 +5,7 @@ import * as THREE from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import type { SpreadNodes } from '@flatfacet/wasm';
 import { farthestPoint } from '../farthest.ts';
+import { sharpestCornerPoint } from '../sharpestCorner.ts';
 import type { SolveResult } from '../protocol.ts';
 import { isSoftwareRenderer } from './gpu.ts';
 import { InputLayer } from './inputLayer.ts';
@@ -186,7 +187,12 @@ export class Viewer {
   setResult(result: SolveResult | null): void {
     this.result = result;
     this.panels.set(result, this.origin, this.toggles.beforeFix, this.toggles.deviation);
-    this.problems.set(result?.problems ?? null, result ? farthestPoint(result.report) : null, this.origin);
+    this.problems.set(
+      result?.problems ?? null,
+      result ? farthestPoint(result.report) : null,
+      result ? sharpestCornerPoint(result.report) : null,
+      this.origin,
+    );
     this.container.dataset.acuteCorners = String(this.problems.acuteCorners);
     this.setSelectedPanel(null);
     this.thick.set(null, null, null, this.origin); // until the fabrication of these panels arrives
