@@ -185,6 +185,9 @@ class PanelLayout {
   void undo_group_single(int g, const std::vector<Plane>& old);
   // The smallest interior angle (degrees) of these panels' corners (360 when none).
   double smallest_corner(const std::vector<int>& clusters) const;
+  // The same over the corners `take(polygon, before, at, after)` (vertex indices) accepts.
+  template <typename Take>
+  double smallest_corner_among(const std::vector<int>& clusters, Take take) const;
   std::vector<int> masters_of_node(size_t node) const;
   // The groups a master's plane places and the panels they (and its own) build, sorted.
   void master_reach(int master, std::vector<int>& groups, std::vector<int>& clusters) const;

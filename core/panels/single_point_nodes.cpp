@@ -196,12 +196,7 @@ int PanelLayout::single_point_fix(const std::vector<char>& fixed_masters) {
       ++made;
       continue;
     }
-    const std::vector<Plane> changed = planes_.planes;
-    planes_.planes = old;
-    single_[static_cast<size_t>(g)] = 0;
-    rebuild_changed(changed);
-    place_group_nodes(g);
-    rebuild(clusters_of_group(g));
+    undo_group_single(g, old);
   }
   if (made > 0 && num_invalid() >= start) {
     planes_.planes = start_planes;

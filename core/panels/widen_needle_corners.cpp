@@ -41,9 +41,8 @@ double corner_deg(const Vec3& prev, const Vec3& at, const Vec3& next, const Vec3
 
 }  // namespace
 
-double PanelLayout::smallest_corner_near_group(int g, const std::vector<int>& clusters) const {
-  const int first = node_offset_[static_cast<size_t>(g)], end = node_offset_[static_cast<size_t>(g) + 1];
-  const auto in_group = [&](int node) { return node >= first && node < end; };
+template <typename Take>
+double PanelLayout::smallest_corner_among(const std::vector<int>& clusters, Take take) const {
   double smallest = 360.0;
   for (int c : clusters) {
     const PanelPolygon& poly = polygons_[static_cast<size_t>(c)];
@@ -52,13 +51,25 @@ double PanelLayout::smallest_corner_near_group(int g, const std::vector<int>& cl
     const Vec3& normal = planes_.plane_of(c).normal;
     for (size_t i = 0; i < n; ++i) {
       const size_t before = (i + n - 1) % n, after = (i + 1) % n;
-      // The group's nodes move with its pairing, and so do the corners at them and at
-      // their neighbours along the outline.
-      if (!in_group(poly.node[i]) && !in_group(poly.node[before]) && !in_group(poly.node[after])) continue;
-      smallest = std::min(smallest, corner_deg(poly.points[before], poly.points[i], poly.points[after], normal));
+      if (take(poly, before, i, after))
+        smallest = std::min(smallest, corner_deg(poly.points[before], poly.points[i], poly.points[after], normal));
     }
   }
   return smallest;
+}
+
+double PanelLayout::smallest_corner_near_group(int g, const std::vector<int>& clusters) const {
+  const int first = node_offset_[static_cast<size_t>(g)], end = node_offset_[static_cast<size_t>(g) + 1];
+  const auto in_group = [&](int node) { return node >= first && node < end; };
+  // The group's nodes move with its pairing, and so do the corners at them and at their
+  // neighbours along the outline.
+  return smallest_corner_among(clusters, [&](const PanelPolygon& poly, size_t before, size_t i, size_t after) {
+    return in_group(poly.node[i]) || in_group(poly.node[before]) || in_group(poly.node[after]);
+  });
+}
+
+double PanelLayout::smallest_corner(const std::vector<int>& clusters) const {
+  return smallest_corner_among(clusters, [](const PanelPolygon&, size_t, size_t, size_t) { return true; });
 }
 
 int PanelLayout::widen_needle_corners(double below_deg) {
@@ -115,20 +126,6 @@ int PanelLayout::widen_needle_corners(double below_deg) {
     }
   }
   return changes;
-}
-
-double PanelLayout::smallest_corner(const std::vector<int>& clusters) const {
-  double smallest = 360.0;
-  for (int c : clusters) {
-    const PanelPolygon& poly = polygons_[static_cast<size_t>(c)];
-    const size_t n = poly.points.size();
-    if (n < 3) continue;
-    const Vec3& normal = planes_.plane_of(c).normal;
-    for (size_t i = 0; i < n; ++i)
-      smallest = std::min(smallest,
-                          corner_deg(poly.points[(i + n - 1) % n], poly.points[i], poly.points[(i + 1) % n], normal));
-  }
-  return smallest;
 }
 
 }  // namespace ff

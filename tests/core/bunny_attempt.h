@@ -71,4 +71,15 @@ inline void expect_same_panels(const PanelLayout& layout, const PanelLayout& fre
   }
 }
 
+// Every panel of `layout` against a rebuild of all of them: the planes moved away and back
+// (set_planes builds every group and panel a changed plane reaches, here all).
+inline void expect_as_built_fresh(const PanelLayout& layout) {
+  PanelLayout fresh = layout;
+  std::vector<Plane> moved = layout.planes().planes;
+  for (Plane& p : moved) p.offset += 1e-3;
+  fresh.set_planes(moved);
+  fresh.set_planes(layout.planes().planes);
+  expect_same_panels(layout, fresh);
+}
+
 }  // namespace ff::test

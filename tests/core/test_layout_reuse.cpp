@@ -15,17 +15,6 @@
 namespace ff {
 namespace {
 
-// Every panel of `layout` against a rebuild of all of them: the planes moved away and back
-// (set_planes builds every group and panel a changed plane reaches, here all).
-void expect_as_built_fresh(const PanelLayout& layout) {
-  PanelLayout fresh = layout;
-  std::vector<Plane> moved = layout.planes().planes;
-  for (Plane& p : moved) p.offset += 1e-3;
-  fresh.set_planes(moved);
-  fresh.set_planes(layout.planes().planes);
-  test::expect_same_panels(layout, fresh);
-}
-
 TEST(LayoutReuse, TryPlanesLeavesPanelsAsAFreshBuild) {
   test::BunnyAttempt b;
   const PanelLayout& start = b.attempt->layout();
@@ -44,9 +33,9 @@ TEST(LayoutReuse, TryPlanesLeavesPanelsAsAFreshBuild) {
   }
   EXPECT_GT(refused, 0);
   EXPECT_LE(layout.num_invalid(), invalid);  // a plane is kept only where it adds none
-  expect_as_built_fresh(layout);
+  test::expect_as_built_fresh(layout);
   layout.try_planes(planes_toward(layout.planes().planes, fitted, 0.5));
-  expect_as_built_fresh(layout);
+  test::expect_as_built_fresh(layout);
 }
 
 TEST(LayoutReuse, TryPlanesTwoPassesAsTwoCalls) {
@@ -70,7 +59,7 @@ TEST(LayoutReuse, SwitchPairingsLeavesPanelsAsAFreshBuild) {
   const int invalid = layout.num_invalid();
   layout.switch_pairings();
   EXPECT_LE(layout.num_invalid(), invalid);
-  expect_as_built_fresh(layout);
+  test::expect_as_built_fresh(layout);
 }
 
 }  // namespace
