@@ -451,9 +451,9 @@ void Remesher::optimize_planes() {
     layout.try_planes(fitted, 2);
     for (double step : {0.5, 0.25}) layout.try_planes(planes_toward(layout.planes().planes, fitted, step));
   }
-  // Then the needles the fit leaves at split nodes (a pairing only moves nodes along their
-  // planes' lines, so the planes stay as fitted).
-  layout.widen_needle_corners(kNeedleCornerDeg);
+  // Then the needles the fit leaves at split nodes: another pairing, or the group as one
+  // point (which moves planes: not those of locked panels and their neighbours).
+  layout.widen_needle_corners(kNeedleCornerDeg, held_clusters());
   // Last: it pins planes to points, which the fit above would undo.
   if (params_.single_point_nodes) layout.make_single_point_nodes();
   panels_ = layout.to_panel_mesh(faces_);

@@ -117,8 +117,9 @@ class PanelLayout {
   // keeps the one whose smallest such corner is widest, as long as no more panels around it
   // are invalid; where still below, makes the group one vertex (make_group_single) when that
   // widens it and narrows and invalidates nothing its planes reach (widen_needle_corners.cpp).
-  // Returns the number of groups changed.
-  int widen_needle_corners(double below_deg);
+  // fixed_clusters (per cluster, empty for none): their planes stay (locked panels), so no
+  // group on one of their masters is made one vertex. Returns the number of groups changed.
+  int widen_needle_corners(double below_deg, const std::vector<char>& fixed_clusters = {});
   // The masters whose planes pass through the point of a single-point group, sorted.
   std::vector<int> single_point_masters() const;
   // Replaces the plane of each master with `candidates[m]`, one at a time, keeping each

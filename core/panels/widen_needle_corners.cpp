@@ -72,7 +72,11 @@ double PanelLayout::smallest_corner(const std::vector<int>& clusters) const {
   return smallest_corner_among(clusters, [](const PanelPolygon&, size_t, size_t, size_t) { return true; });
 }
 
-int PanelLayout::widen_needle_corners(double below_deg) {
+int PanelLayout::widen_needle_corners(double below_deg, const std::vector<char>& fixed_clusters) {
+  std::vector<char> fixed_master(planes_.planes.size(), 0);
+  for (size_t c = 0; c < fixed_clusters.size() && c < planes_.master_of.size(); ++c) {
+    if (fixed_clusters[c]) fixed_master[static_cast<size_t>(planes_.master_of[c])] = 1;
+  }
   int changes = 0;
   std::vector<std::vector<Pairing>> pairings;  // per k, node_pairings(k) once per call
   for (size_t g = 0; g < groups_.groups.size(); ++g) {
@@ -107,8 +111,11 @@ int PanelLayout::widen_needle_corners(double below_deg) {
     // it removes a needle), its planes translated through their least-squares point. That
     // moves every node on those planes, so it is judged on all the panels they reach: none
     // more invalid, none narrower than before (to the margin), and the group's needle wider.
+    const std::vector<int> masters = distinct_masters(group);
+    if (std::any_of(masters.begin(), masters.end(), [&](int m) { return fixed_master[static_cast<size_t>(m)] != 0; }))
+      continue;
     std::vector<int> reach, groups, clusters;
-    for (int m : distinct_masters(group)) {
+    for (int m : masters) {
       master_reach(m, groups, clusters);
       reach.insert(reach.end(), clusters.begin(), clusters.end());
     }

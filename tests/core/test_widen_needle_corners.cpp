@@ -49,6 +49,28 @@ TEST(WidenNeedleCorners, WidensWithoutInvalidatingOrNarrowingAnything) {
   test::expect_as_built_fresh(layout);
 }
 
+// Fixed clusters (locked panels and their neighbours) keep their planes: no group on one of
+// their masters is made one vertex. With none fixed, the widening moves planes on this attempt.
+TEST(WidenNeedleCorners, FixedClustersKeepTheirPlanes) {
+  test::BunnyAttempt b;
+  const std::vector<Plane> before = b.attempt->layout().planes().planes;
+  const auto moved = [&](const PanelLayout& layout) {
+    int count = 0;
+    for (size_t m = 0; m < before.size(); ++m) {
+      const Plane& p = layout.planes().planes[m];
+      count += p.normal == before[m].normal && p.offset == before[m].offset ? 0 : 1;
+    }
+    return count;
+  };
+  PanelLayout free = b.attempt->layout();
+  free.widen_needle_corners(30.0);
+  EXPECT_GT(moved(free), 0) << "some group should be made one vertex";
+  PanelLayout fixed = b.attempt->layout();
+  fixed.widen_needle_corners(30.0, std::vector<char>(static_cast<size_t>(fixed.num_clusters()), 1));
+  EXPECT_EQ(moved(fixed), 0);
+  EXPECT_LE(fixed.num_invalid(), b.attempt->layout().num_invalid());
+}
+
 TEST(WidenNeedleCorners, NothingBelowAZeroThreshold) {
   test::BunnyAttempt b;
   PanelLayout layout = b.attempt->layout();
