@@ -9,35 +9,23 @@
 // five panels meet at a point instead of a needle, which a fabricator can make. This runs on a
 // layout whose panels are final (Remesher::optimize_planes), so the rounds and which runs end
 // valid are unchanged.
-#include <Eigen/Geometry>
 #include <algorithm>
-#include <cmath>
 #include <vector>
 
+#include "core/panels/panel_check.h"
 #include "core/panels/panel_layout.h"
+#include "core/panels/polygon2d.h"
 
 namespace ff {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 // Another pairing must widen the smallest corner by this much (degrees) to be taken. Often the
 // smallest corner is one no pairing moves (at a vertex next to the group, its node moving
 // along the edge's line), and then the pairings tie to the last bits, which differ between
 // builds (native SSE sums, wasm without SIMD): without a margin hyperboloid_s4.off at 500
 // panels, seed 5 had different panels in the CLI and on the page.
 constexpr double kWiderByDeg = 0.01;
-
-// The interior angle at `at` (degrees, 0-360), from the outgoing edge counter-clockwise to the
-// incoming one seen from the side `normal` points to: core/panels/panel_check.cpp's
-// corner_angle_deg in the panel's own plane.
-double corner_deg(const Vec3& prev, const Vec3& at, const Vec3& next, const Vec3& normal) {
-  const Vec3 a = prev - at, b = next - at;
-  if (a.squaredNorm() == 0.0 || b.squaredNorm() == 0.0) return 0.0;
-  double angle = std::atan2(b.cross(a).dot(normal), b.dot(a)) * 180.0 / kPi;
-  if (angle < 0.0) angle += 360.0;
-  return angle;
-}
 
 }  // namespace
 
@@ -48,11 +36,14 @@ double PanelLayout::smallest_corner_among(const std::vector<int>& clusters, Take
     const PanelPolygon& poly = polygons_[static_cast<size_t>(c)];
     const size_t n = poly.points.size();
     if (n < 3) continue;
-    const Vec3& normal = planes_.plane_of(c).normal;
+    // In the panel's own plane, as the panel checks measure corners (problem_corners).
+    const Plane& plane = planes_.plane_of(c);
+    const PlaneFrame frame = make_plane_frame(plane.offset * plane.normal, plane.normal);
     for (size_t i = 0; i < n; ++i) {
       const size_t before = (i + n - 1) % n, after = (i + 1) % n;
       if (take(poly, before, i, after))
-        smallest = std::min(smallest, corner_deg(poly.points[before], poly.points[i], poly.points[after], normal));
+        smallest = std::min(smallest, corner_angle_deg(frame.to_2d(poly.points[before]), frame.to_2d(poly.points[i]),
+                                                       frame.to_2d(poly.points[after])));
     }
   }
   return smallest;
