@@ -256,6 +256,13 @@ QualityReport measure_quality(const TriMesh& input, const MeshTopology& input_to
     for (size_t p = 0; p < np; ++p) face_normal_sum[p] = by_source[static_cast<size_t>(panels.panel_source[p])];
   }
 
+  // Coverage, per source panel (a glass piece adds its area to the panel it was cut from).
+  // (Sources were validated above when the panels name their faces; coverage needs those.)
+  const bool by_source = !panels.face_panel.empty() && panels.panel_source.size() == np;
+  const auto source_of = [&](size_t p) { return by_source ? static_cast<size_t>(panels.panel_source[p]) : p; };
+  std::vector<double> covered(np, 0.0), faces_projected(np, 0.0);
+  std::vector<int> first_piece(np, -1);
+
   const double tol = options.tolerance * bbox_diagonal(input);
   double min_angle = np > 0 ? 360.0 : 0.0;
   for (int p = 0; p < r.panels; ++p) {
@@ -291,6 +298,10 @@ QualityReport measure_quality(const TriMesh& input, const MeshTopology& input_to
     }
     r.concave_panels += concave;
     r.acute_corners += acute;
+    const size_t source = source_of(static_cast<size_t>(p));
+    covered[source] += signed_area(poly2d);
+    faces_projected[source] = frame.normal.dot(face_normal_sum[static_cast<size_t>(p)]);
+    if (first_piece[source] < 0) first_piece[source] = p;
 
     bool has_spike = false;
     for (int v : poly) has_spike = has_spike || spike[static_cast<size_t>(v)];
@@ -313,6 +324,17 @@ QualityReport measure_quality(const TriMesh& input, const MeshTopology& input_to
   // A cluster that could not become a panel leaves its faces uncovered: it counts as an
   // invalid panel too, so the count never hides it (write_invalid_panels lists it).
   r.invalid_panels = static_cast<int>(r.invalid_panel_ids.size() + panels.unbuilt_clusters.size());
+  if (!panels.face_panel.empty()) {
+    std::vector<char> collapsed(np, 0);
+    for (size_t q = 0; q < np; ++q) {
+      if (first_piece[q] < 0 || !(faces_projected[q] > 0.0)) continue;
+      const double coverage = covered[q] / faces_projected[q];
+      collapsed[q] = coverage < kMinCoveredShare;
+      if (r.min_panel_coverage_panel < 0 || coverage < r.min_panel_coverage)
+        r.min_panel_coverage = coverage, r.min_panel_coverage_panel = first_piece[q];
+    }
+    for (size_t p = 0; p < np; ++p) r.collapsed_panels += collapsed[source_of(p)];
+  }
   r.min_corner_angle_deg = min_angle;
   r.min_corner_angle_target_deg = options.min_corner_angle_deg;
   return r;

@@ -57,6 +57,9 @@ void write_quality_fields(JsonWriter& j, const QualityReport& q) {
   j.value("min_corner_angle_target_deg", q.min_corner_angle_target_deg);
   j.value("acute_corners", q.acute_corners);
   j.value("concave_panels", q.concave_panels);
+  j.value("min_panel_coverage", q.min_panel_coverage);
+  j.value("min_panel_coverage_panel", q.min_panel_coverage_panel);
+  j.value("collapsed_panels", q.collapsed_panels);
 }
 
 void write_invalid_panels(JsonWriter& j, const PanelMesh& pm, const QualityReport& q) {

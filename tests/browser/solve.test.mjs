@@ -323,6 +323,9 @@ test('the point farthest from the design and the sharpest corner are marked, wit
     assert.equal((await page.locator('#sharpest-legend').textContent()).trim(), `Sharpest corner: ${minAngle[1]}°`);
     const sharpest = await viewPixels(page, VIOLET);
     assert.ok(sharpest > 20, `${sharpest} violet pixels`);
+    // Coverage: no collapsed panel in this design, so no warning.
+    assert.match(await page.locator('#stats').textContent(), /Coverage\s*\d+ % \(P\d+\)/);
+    assert.equal(await page.locator('#stats dd.warn').count(), 0, 'nothing to warn about');
     await screenshot(page, 'hyperboloid-300-farthest-point');
     assert.equal(await viewPixelsWithoutProblems(page, CYAN), 0, 'the marker hides with the problems');
     assert.equal(await viewPixelsWithoutProblems(page, VIOLET), 0, 'the corner marker hides with the problems');
@@ -343,6 +346,21 @@ test('the point farthest from the design and the sharpest corner are marked, wit
     const nextAngle = (await page.locator('#stats').textContent()).match(/Min angle\s*([\d.]+)°/);
     assert.equal((await page.locator('#sharpest-legend').textContent()).trim(), `Sharpest corner: ${nextAngle[1]}°`);
   }));
+
+// A collapsed panel: epcot.off into 34 panels at seed 2 ends valid by the paper's checks, but
+// panel 14 is a sliver triangle covering 0.3 % of its own triangles (the CLI's report says
+// the same: min_panel_coverage_panel 13). The Coverage row warns and names it.
+test('a collapsed panel is named in the Quality section', async () => {
+  const params = { panels: 34, seed: 2, weights: { euclidean: 1, l2: 1, l21: 1, boundary: 1 }, lloydIterations: 20, panelRounds: 100, seeding: 'farthest', teleport: true, singlePointNodes: false, optimizePlanes: true };
+  await suite.withPage(exampleLink(suite.url, 'epcot', params), async (page) => {
+    assert.equal(await waitForDone(page), 34);
+    const row = page.locator('#stats dd.warn', { hasText: '% (P' });
+    assert.equal((await row.textContent()).trim(), '0 % (P14)');
+    assert.match(await row.getAttribute('title'), /1 here\. Select P14 and merge it with a neighbour/);
+    await row.scrollIntoViewIfNeeded();  // the Quality section, beside the sliver's violet corner
+    await screenshot(page, 'epcot-34-collapsed-panel');
+  });
+});
 
 // A closed sphere (epcot.off) into 4 panels at seed 1: the first solve's panels stay invalid;
 // the retry from a new seeding (RemeshParams.retries, default 4) makes a valid tetrahedron.

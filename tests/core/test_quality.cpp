@@ -334,6 +334,45 @@ TEST(Quality, SharpestCornerIsLocated) {
   EXPECT_EQ(s.min_corner_angle_point, Vec3(0, 0, 0));
 }
 
+// Coverage: a panel's area over its faces' area on its plane. Two unit squares of two
+// triangles each; panel 0 is the left square, panel 1 a sliver on the right square's bottom
+// edge (area 0.05 of 1): collapsed, reported but not invalid (the paper's checks pass it).
+TEST(Quality, CoverageFindsCollapsedPanels) {
+  TriMesh input;
+  input.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(2, 0, 0), Vec3(2, 1, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)};
+  input.triangles = {{0, 1, 4}, {0, 4, 5}, {1, 2, 3}, {1, 3, 4}};
+  std::vector<Vec3> vertices = input.positions;
+  vertices.push_back(Vec3(1, 0.1, 0));
+  const PanelMesh pm = make_panels(vertices, {{0, 1, 4, 5}, {1, 2, 6}}, {0, 1, 2, 3, 4, 5, 1}, {0, 0, 1, 1});
+  const QualityReport r = measure(input, pm);
+  EXPECT_NEAR(r.min_panel_coverage, 0.05, 1e-12);
+  EXPECT_EQ(r.min_panel_coverage_panel, 1);
+  EXPECT_EQ(r.collapsed_panels, 1);
+  EXPECT_EQ(r.invalid_panels, 0);
+
+  // The right square whole: everything covered once.
+  const PanelMesh whole = make_panels(input.positions, {{0, 1, 4, 5}, {1, 2, 3, 4}}, {0, 1, 2, 3, 4, 5}, {0, 0, 1, 1});
+  const QualityReport w = measure(input, whole);
+  EXPECT_NEAR(w.min_panel_coverage, 1.0, 1e-12);
+  EXPECT_EQ(w.collapsed_panels, 0);
+
+  // Glass pieces count as the panel they were cut from: the right square as two triangles,
+  // all its faces under the first piece; per piece that would be 0.5 and 0.
+  PanelMesh pieces =
+      make_panels(input.positions, {{0, 1, 4, 5}, {1, 2, 3}, {1, 3, 4}}, {0, 1, 2, 3, 4, 5}, {0, 0, 1, 1});
+  pieces.panel_source = {0, 1, 1};
+  const QualityReport g = measure(input, pieces);
+  EXPECT_NEAR(g.min_panel_coverage, 1.0, 1e-12);
+  EXPECT_EQ(g.collapsed_panels, 0);
+
+  // Without faces per panel there is nothing to cover.
+  PanelMesh no_faces = pm;
+  no_faces.face_panel.clear();
+  const QualityReport n = measure(input, no_faces);
+  EXPECT_EQ(n.min_panel_coverage_panel, -1);
+  EXPECT_EQ(n.collapsed_panels, 0);
+}
+
 TEST(Quality, PinchedVertexIsNotManifold) {
   // Two triangles sharing only a vertex: each fan is fine alone, together two half-disks.
   const std::vector<Vec3> v = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(-1, 0, 0), Vec3(0, -1, 0)};

@@ -1,5 +1,6 @@
 // The quality panel: the report's numbers in words a designer reads (DESIGN.md 5 targets).
 import type { QualityReport, SolveResult } from './protocol.ts';
+import { coverageRow } from './coverage.ts';
 import { statsList, type StatRow } from './statsList.ts';
 
 function numberAt(report: QualityReport, key: string): number | null {
@@ -65,6 +66,7 @@ export function statsRows(result: SolveResult): Row[] {
   const hausdorff = numberAt(report, 'hausdorff');
   const minAngleTarget = numberAt(report, 'min_corner_angle_target_deg') ?? 0;
   const acute = numberAt(report, 'acute_corners');
+  const coverage = coverageRow(report);
   const undirected = numberAt(report, 'anisotropy_isotropic_faces');
   const before = result.cornerPlanarity.length > 0 ? result.cornerPlanarity.reduce((worst, value) => Math.max(worst, value), 0) : null;
   return [
@@ -74,6 +76,7 @@ export function statsRows(result: SolveResult): Row[] {
     { label: 'Hausdorff', value: hausdorff === null ? '–' : `${(hausdorff * 100).toFixed(2)} %`, hint: 'two-sided distance to the input surface, relative to the bounding-box diagonal; where it is largest is marked cyan in the view' },
     { label: 'Valence 3', value: share === null ? '–' : `${(share * 100).toFixed(1)} %`, hint: 'interior nodes where exactly three panels meet' },
     { label: 'Min angle', value: minAngle === null ? '–' : `${minAngle.toFixed(1)}°`, hint: 'smallest corner angle of any panel; where it is is marked violet in the view' },
+    ...(coverage ? [coverage] : []),
     ...(minAngleTarget > 0
       ? [{ label: 'Acute corners', value: acute === null ? '–' : String(acute), hint: `panel corners below the minimum corner angle of ${minAngleTarget}° (marked amber)`, warn: (acute ?? 0) > 0 }]
       : []),
