@@ -72,6 +72,8 @@ constexpr double kNeedleCornerDeg = 5.0;
 // for 50 rounds; now valid within 7. Only when no split is asked: relocating tiny clusters
 // at every stall reshuffled cow.off's chaotic runs (at seeds 1-6, 379 -> 377 valid).
 constexpr int kTinyClusterShare = 20;
+// Panel rounds after the first valid attempt with collapsed panels (coverage_round), at most.
+constexpr int kCoverageRounds = 8;
 // The fewest panels a valid result can have (fewest_panels(), topology.h): fewer is refused at
 // once rather than solved three times (retries) into panels that must stay invalid.
 void check_enough_panels(const MeshTopology& topology, int panels) {
@@ -135,6 +137,7 @@ void Remesher::start_lloyd() {
   converged_ = false;
   best_.reset();
   polish_ = PolishState{};
+  coverage_ = CoverageState{};
   settled_.clear();
   settled_planes_.clear();
   panel_rounds_done_ = 0;
@@ -223,22 +226,52 @@ void Remesher::panel_round() {
   ++panel_rounds_done_;
   progress_.iteration = panel_rounds_done_;
   progress_.invalid_panels = invalid;
+  if (invalid == 0 && coverage_round(attempt)) return;
   const bool improved = !best_ || invalid < best_->num_invalid();
   stalled_rounds_ = improved ? 0 : stalled_rounds_ + 1;
   if (improved) best_round_ = panel_rounds_done_;
   // k2 is the hard limit; before it, a run whose fewest invalid panels has not gone down for
   // kPanelPatience rounds stops: inputs that cannot get better end early.
+  // After a valid fallback, only the coverage rounds' budget.
   const bool last = invalid == 0 || panel_rounds_done_ >= std::max(1, params_.panel_rounds) ||
-                    panel_rounds_done_ - best_round_ >= kPanelPatience;
+                    panel_rounds_done_ - best_round_ >= kPanelPatience ||
+                    (coverage_.fallback && panel_rounds_done_ - coverage_.first_round >= kCoverageRounds);
   if (last) {
     if (!best_ || invalid <= best_->num_invalid()) std::swap(best_, attempt);
     keep_alternate(std::move(attempt));
+    if (best_->num_invalid() > 0 && coverage_.fallback) {  // valid, with collapsed panels
+      best_ = std::move(coverage_.fallback);
+      alternates_.clear();
+    }
     finish_panels();
     return;
   }
   fix_panels(*attempt);
   if (improved) std::swap(best_, attempt);
   keep_alternate(std::move(attempt));
+}
+
+// A valid attempt (judged as the end judges it) whose panels include collapsed ones: the
+// paper's checks pass it, but a collapsed panel is a sliver over its neighbours' faces (no
+// part to cut), so while the coverage rounds last its collapsed clusters move elsewhere and
+// the rounds go on; it is kept as the fallback when it has the fewest collapsed panels so
+// far. The last coverage round ends the run with the fallback. False (an ordinary round's
+// end) when nothing collapsed, with locked panels (their clusters stay where they are) or
+// after the designer's edits (a cluster they split off stays where they asked for it).
+bool Remesher::coverage_round(std::unique_ptr<PanelAttempt>& attempt) {
+  const int collapsed = attempt->layout().num_collapsed();
+  if (collapsed == 0 || !locks_.empty() || next_edit_ > 0) return false;
+  if (!coverage_.fallback) coverage_.first_round = panel_rounds_done_;
+  const bool fewer = !coverage_.fallback || collapsed < coverage_.fallback->layout().num_collapsed();
+  const bool more = panel_rounds_done_ < std::max(1, params_.panel_rounds) &&
+                    panel_rounds_done_ - coverage_.first_round < kCoverageRounds;
+  if (more) fix_panels(*attempt, /*coverage=*/true);
+  if (fewer) coverage_.fallback = std::move(attempt);
+  if (more) return true;
+  best_ = std::move(coverage_.fallback);
+  alternates_.clear();
+  finish_panels();
+  return true;
 }
 
 // Attempts that did not become the best but came close, for mend_best(): the last fixes
@@ -264,10 +297,10 @@ void Remesher::keep_alternate(std::unique_ptr<PanelAttempt> attempt) {
   if (alternates_.size() > kAlternates) alternates_.pop_back();
 }
 
-void Remesher::fix_panels(const PanelAttempt& attempt) {
+void Remesher::fix_panels(const PanelAttempt& attempt, bool coverage) {
   // Settled clusters (valid among valid) keep their faces and planes from now on, so each
   // round works where panels are still invalid and does not undo progress elsewhere.
-  settled_ = attempt.settled_clusters();
+  settled_ = attempt.settled_clusters(coverage);
   settled_planes_ = attempt.cluster_planes();
   hold(settled_, settled_planes_);
   const std::vector<char> held = held_clusters();
@@ -305,6 +338,10 @@ void Remesher::fix_panels(const PanelAttempt& attempt) {
     split_near(metric_, topology_, clustering_, requests, protect, 3, /*reflood_after=*/false);
   }
   std::vector<int> enclosed = enclosed_clusters(attempt);
+  if (coverage) {  // collapsed clusters: their faces are under their neighbours' panels already
+    for (size_t c = 0; c < attempt.layout().issues().size(); ++c)
+      if (attempt.layout().issues()[c].collapsed) enclosed.push_back(static_cast<int>(c));
+  }
   if (stalled && requests.empty()) {  // a stall with no split to make: tiny clusters move
     const std::vector<int> tiny = tiny_invalid_clusters(attempt, kTinyClusterShare);
     enclosed.insert(enclosed.end(), tiny.begin(), tiny.end());

@@ -172,7 +172,9 @@ class Remesher {
   void start_lloyd();
   void after_lloyd();
   void panel_round();
-  void fix_panels(const PanelAttempt& attempt);
+  // coverage: a valid attempt's coverage round (its collapsed clusters move elsewhere).
+  void fix_panels(const PanelAttempt& attempt, bool coverage = false);
+  bool coverage_round(std::unique_ptr<PanelAttempt>& attempt);  // true: the round is done
   void optimize_planes();
   void finish_panels();
   void end_panels();  // the panel phase's result: the best attempt's panels, then Optimize or Done
@@ -258,6 +260,14 @@ class Remesher {
     std::unique_ptr<PanelAttempt> from;
   };
   PolishState polish_;
+  // Coverage rounds: a valid attempt with collapsed panels (PanelIssues::collapsed) is kept
+  // as the fallback, and up to kCoverageRounds more rounds move its collapsed clusters
+  // elsewhere; the run ends valid with the fewest collapsed panels found. Reset with best_.
+  struct CoverageState {
+    std::unique_ptr<PanelAttempt> fallback;
+    int first_round = 0;  // the round of the first fallback
+  };
+  CoverageState coverage_;
   // The best solve before the current retry (retry_if_invalid), with what the report says
   // about it. Empty outside a retry.
   struct EarlierSolve {

@@ -82,6 +82,7 @@ void Remesher::restore(const EditState& s) {
   base_ = s.base;
   best_.reset();
   polish_ = PolishState{};
+  coverage_ = CoverageState{};
 }
 
 void Remesher::clear_edits() {
@@ -132,6 +133,7 @@ void Remesher::start_edited_panels(const std::vector<int>& edited) {
   hold(settled_, settled_planes_);
   best_.reset();
   polish_ = PolishState{};
+  coverage_ = CoverageState{};
   panel_rounds_done_ = 0;
   stalled_rounds_ = 0;
   progress_ = Progress{Stage::Panels, 0, std::max(1, params_.panel_rounds), progress_.energy, 0};

@@ -268,10 +268,11 @@ std::vector<Plane> PanelAttempt::cluster_planes() const {
   return out;
 }
 
-std::vector<char> PanelAttempt::settled_clusters() const {
+std::vector<char> PanelAttempt::settled_clusters(bool coverage) const {
   const size_t n = static_cast<size_t>(clustering_.num_clusters());
   std::vector<char> valid(n, 0);
-  for (size_t c = 0; c < n; ++c) valid[c] = layout_->issues()[c].valid();
+  for (size_t c = 0; c < n; ++c)
+    valid[c] = layout_->issues()[c].valid() && !(coverage && layout_->issues()[c].collapsed);
   std::vector<char> settled = valid;
   for (const auto& [a, b] : neighbours_) {
     if (!valid[static_cast<size_t>(a)]) settled[static_cast<size_t>(b)] = 0;

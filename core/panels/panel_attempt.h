@@ -63,8 +63,9 @@ class PanelAttempt {
   const PanelGraph& graph() const { return graph_; }
   // Per cluster: its plane in this attempt (its master's).
   std::vector<Plane> cluster_planes() const;
-  // Per cluster: its panel and every panel around it are valid.
-  std::vector<char> settled_clusters() const;
+  // Per cluster: its panel and every panel around it are valid (and, with `coverage`, none
+  // of them collapsed).
+  std::vector<char> settled_clusters(bool coverage = false) const;
   // Clusters that are not disks get no panel (PanelIssues::not_disk); the rest are laid out.
   PanelLayout& layout() { return *layout_; }
   const PanelLayout& layout() const { return *layout_; }

@@ -138,6 +138,12 @@ int PanelLayout::invalid_among(const std::vector<int>& clusters) const {
   return invalid;
 }
 
+int PanelLayout::collapsed_among(const std::vector<int>& clusters) const {
+  int collapsed = 0;
+  for (int c : clusters) collapsed += issues_[static_cast<size_t>(c)].collapsed ? 1 : 0;
+  return collapsed;
+}
+
 void PanelLayout::set_master_plane(int m, const Plane& plane, const std::vector<int>& groups,
                                    const std::vector<int>& clusters) {
   planes_.planes[static_cast<size_t>(m)] = plane;
@@ -206,6 +212,7 @@ int PanelLayout::try_planes(const std::vector<Plane>& candidates, int passes) {
         if (!moved) continue;
       }
       const int before = invalid_among(clusters);
+      const int collapsed_before = collapsed_among(clusters);
       // The panels as they are, to put back if the plane is refused (swapped, not copied: the
       // vectors' memory is reused by the rebuild).
       if (saved_polygons.size() < clusters.size()) saved_polygons.resize(clusters.size());
@@ -224,7 +231,8 @@ int PanelLayout::try_planes(const std::vector<Plane>& candidates, int passes) {
         after += issues_[static_cast<size_t>(clusters[i])].valid() ? 0 : 1;
       }
       ++clock;
-      if (after <= before) {
+      // Not at the cost of a collapsed panel (its plane fit would make a sliver of it).
+      if (after <= before && collapsed_among(clusters) <= collapsed_before) {
         ++kept;
         for (int c : clusters) changed_at[static_cast<size_t>(c)] = clock;
       } else {

@@ -121,6 +121,12 @@ int PanelLayout::num_invalid() const {
   return count;
 }
 
+int PanelLayout::num_collapsed() const {
+  int count = 0;
+  for (const PanelIssues& i : issues_) count += i.collapsed ? 1 : 0;
+  return count;
+}
+
 bool PanelLayout::touches_boundary(int g, int node) const {
   const NodeGroup& group = groups_.groups[static_cast<size_t>(g)];
   const NodeTriangle& tri =
@@ -354,6 +360,15 @@ void PanelLayout::build_panel(int c) {
       issues.spike_vertices += (poly.points[i] - poly.reference[i]).norm() <= spike_limit(poly, i, c) ? 0 : 1;
   }
   issues.spike_vertices = std::max(issues.spike_vertices, inexact);
+  // Coverage: judged on panels that pass the paper's checks (the others are invalid anyway,
+  // and a flipped panel's signed area says nothing).
+  if (issues.valid() && faces.squaredNorm() > 0.0) {
+    const Vec3& origin = poly.points.front();  // relative to a vertex: no cancellation far out
+    Vec3 twice_area = Vec3::Zero();
+    for (size_t i = 1; i + 1 < poly.points.size(); ++i)
+      twice_area += (poly.points[i] - origin).cross(poly.points[i + 1] - origin);
+    issues.collapsed = is_collapsed(plane.normal.dot(twice_area), plane.normal.dot(faces));
+  }
 }
 
 double PanelLayout::spike_limit(const PanelPolygon& poly, size_t i, int cluster) const {

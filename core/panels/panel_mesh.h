@@ -18,6 +18,9 @@ struct PanelIssues {
   bool too_few_vertices = false;  // fewer than 3 vertices
   bool not_disk = false;          // its cluster has a hole, is enclosed, pinches or touches a neighbour twice
   bool acute_corner = false;      // a corner below the designer's minimum angle (glass mode, DESIGN.md 3)
+  // Covers under kMinCoveredShare of its faces' area (panel_check.h). Not a validity check
+  // (the paper's pass it): the panel rounds move such a cluster elsewhere while they can.
+  bool collapsed = false;
 
   bool valid() const {
     return !not_simple && !flipped && !not_star && spike_vertices == 0 && !too_few_vertices && !not_disk &&

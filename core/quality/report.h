@@ -84,16 +84,13 @@ struct QualityReport {
   std::vector<int> acute_corner_vertex_ids;
   // Coverage: a panel's area over its input faces' area projected on its plane (glass pieces
   // together, as the panel they were cut from). The smallest and its panel (-1 when the
-  // panels name no faces), and the panels below kMinCoveredShare: collapsed, their planes
-  // meet nearly in a line or point and their faces lie under the neighbours' panels. The
-  // paper's checks let such a panel through; it is reported, not counted invalid.
+  // panels name no faces), and the panels below kMinCoveredShare (panel_check.h): collapsed,
+  // their planes meet nearly in a line or point and their faces lie under the neighbours'
+  // panels. The paper's checks let such a panel through; it is reported, not counted invalid.
   double min_panel_coverage = 1.0;
   int min_panel_coverage_panel = -1;
   int collapsed_panels = 0;
 };
-
-// Below this coverage a panel has collapsed (QualityReport::collapsed_panels).
-constexpr double kMinCoveredShare = 0.1;
 
 // input_topology = build_topology(input). D = sqrt(total_area(input) / panels). Throws
 // InputError for inconsistent PanelMesh sizes or indices (per-panel arrays must be empty or
