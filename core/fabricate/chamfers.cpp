@@ -3,10 +3,11 @@
 #include <Eigen/Geometry>
 #include <cmath>
 
+#include "core/util/angles.h"
+
 namespace ff {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kDeg = 180.0 / kPi;
 }  // namespace
 

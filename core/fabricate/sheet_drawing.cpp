@@ -5,12 +5,11 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/util/angles.h"
 #include "core/util/error.h"
 
 namespace ff {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 std::vector<Vec2> transform(const std::vector<Vec2>& points, const PlacedOutline& p) {
   const Eigen::Rotation2Dd r(p.angle_rad);

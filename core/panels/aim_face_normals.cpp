@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "core/panels/panel_layout.h"
+#include "core/util/angles.h"
 
 namespace ff {
 
@@ -50,7 +51,7 @@ int PanelLayout::aim_face_normals(const std::vector<char>& fixed_masters) {
     // the plane normal to it (the same tilt, facing the faces); smallest turn first.
     std::vector<std::pair<double, Vec3>> normals;
     for (double left_deg : {80.0, 60.0, 30.0, 0.0})
-      normals.emplace_back(0.0, Eigen::AngleAxisd(angle - left_deg * M_PI / 180.0, axis) * old.normal);
+      normals.emplace_back(0.0, Eigen::AngleAxisd(angle - left_deg * kPi / 180.0, axis) * old.normal);
     normals.emplace_back(0.0, old.normal - 2.0 * old.normal.dot(toward) * toward);
     for (auto& [turn, normal] : normals) normal.normalize(), turn = -normal.dot(old.normal);
     std::stable_sort(normals.begin(), normals.end(), [](const auto& l, const auto& r) { return l.first < r.first; });

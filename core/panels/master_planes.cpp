@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numeric>
 
+#include "core/util/angles.h"
+
 namespace ff {
 
 namespace {
@@ -30,7 +32,7 @@ MasterPlanes snap_master_planes(const std::vector<Plane>& planes, const std::vec
                                 const std::vector<double>& areas, const std::vector<std::pair<int, int>>& neighbours,
                                 double max_angle_deg, const std::vector<char>& fixed, const std::vector<char>& alone) {
   const size_t n = planes.size();
-  const double cos_max = std::cos(max_angle_deg * M_PI / 180.0);
+  const double cos_max = std::cos(max_angle_deg * kPi / 180.0);
   std::vector<Group> groups(n);
   std::vector<int> parent(n);
   std::iota(parent.begin(), parent.end(), 0);

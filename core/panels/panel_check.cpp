@@ -4,12 +4,9 @@
 
 #include "core/panels/glass_split.h"
 #include "core/panels/polygon2d.h"
+#include "core/util/angles.h"
 
 namespace ff {
-
-namespace {
-constexpr double kPi = 3.14159265358979323846;
-}  // namespace
 
 PanelIssues check_panel(const std::vector<Vec3>& points, const std::vector<Vec3>& references, const Plane& plane,
                         double spike_distance, double tolerance, double min_corner_angle_deg, bool glass) {

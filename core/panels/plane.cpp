@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "core/util/angles.h"
+
 namespace ff {
 
 bool turn_plane_through(const Plane& plane, const Vec3& p, const Vec3& q, double length, double max_turn_deg,
@@ -12,7 +14,7 @@ bool turn_plane_through(const Plane& plane, const Vec3& p, const Vec3& q, double
   Vec3 normal = plane.normal - plane.normal.dot(dir) * dir;  // drop the part along the line
   if (!(normal.norm() > 1e-6)) return false;
   normal.normalize();
-  if (!(normal.dot(plane.normal) >= std::cos(max_turn_deg * M_PI / 180.0))) return false;
+  if (!(normal.dot(plane.normal) >= std::cos(max_turn_deg * kPi / 180.0))) return false;
   out = Plane::through(p, normal);
   return true;
 }

@@ -5,13 +5,12 @@
 #include <cmath>
 #include <limits>
 
+#include "core/util/angles.h"
 #include "core/util/error.h"
 
 namespace ff {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 const Vec2& at(const std::vector<Vec2>& p, size_t i) { return p[i % p.size()]; }
 

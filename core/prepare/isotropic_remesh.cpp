@@ -7,6 +7,7 @@
 
 #include "core/prepare/remesh_ops.h"
 #include "core/prepare/surface_projector.h"
+#include "core/util/angles.h"
 #include "core/util/error.h"
 
 namespace ff {
@@ -18,7 +19,6 @@ namespace {
 
 size_t at(int i) { return static_cast<size_t>(i); }
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kMaxLengthRatio = 8.0;           // density moves the local target by at most this factor
 constexpr double kMaxEstimatedTriangles = 2.0e7;  // refuse targets that would need more (memory)
 constexpr double kMinCreaseLength = 3.0;          // crease networks shorter than this many L are noise

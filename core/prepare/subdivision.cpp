@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "core/prepare/subdivision_edges.h"
+#include "core/util/angles.h"
 #include "core/util/error.h"
 
 namespace ff {
@@ -16,7 +17,6 @@ namespace {
 
 using detail::PolyEdges;
 
-constexpr double kPi = 3.14159265358979323846;
 // Index space: every vertex number must fit an int with room to spare.
 constexpr long long kHardTriangleLimit = 1LL << 28;
 

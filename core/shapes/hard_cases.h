@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/mesh/tri_mesh.h"
+#include "core/util/angles.h"
 
 namespace ff {
 
@@ -26,7 +27,7 @@ TriMesh make_helicoid(int triangles, double inner_radius = 4.0, double outer_rad
 // Twisted strip (fig. 9's "surface twist"): a straight band along x whose straight cross
 // sections turn about the x axis from -twist/2 to +twist/2, i.e. a helicoid through its
 // axis. Normals stay up while twist < pi. 1 loop.
-TriMesh make_twisted_strip(int triangles, double length = 24.0, double width = 6.0, double twist = M_PI / 2);
+TriMesh make_twisted_strip(int triangles, double length = 24.0, double width = 6.0, double twist = kPi / 2);
 
 // Bump on a plane (fig. 11): the flat square [-size/2, size/2]^2 with a Gaussian bump
 // height * exp(-(x^2 + y^2) / (2 sigma^2)) in the middle. 1 loop.

@@ -7,6 +7,7 @@
 
 #include "core/shapes/hard_cases.h"
 #include "core/shapes/shapes.h"
+#include "core/util/angles.h"
 #include "core/util/error.h"
 
 namespace ff {
@@ -34,8 +35,8 @@ TriMesh make_helicoid(int triangles, double inner_radius, double outer_radius, d
   require(inner_radius > 0.0 && outer_radius > inner_radius,
           "helicoid: need 0 < inner radius < outer radius (a band off the axis)");
   require(turns > 0.0, "helicoid: the number of turns must be positive");
-  const double sweep = 2.0 * M_PI * turns;
-  const double pitch = rise_per_turn / (2.0 * M_PI);
+  const double sweep = 2.0 * kPi * turns;
+  const double pitch = rise_per_turn / (2.0 * kPi);
   // Cells about square: across the band vs along its middle helix.
   const double mid = (inner_radius + outer_radius) / 2.0;
   const double along = sweep * std::hypot(mid, pitch);
@@ -71,14 +72,14 @@ TriMesh make_bump(int triangles, double size, double height, double sigma) {
 
 TriMesh make_torus(int triangles, double major_radius, double minor_radius) {
   require(minor_radius > 0.0 && major_radius > minor_radius, "torus: need 0 < minor radius < major radius");
-  const auto [nu, nv] = grid_dims_for(triangles, 2.0 * M_PI * major_radius, 2.0 * M_PI * minor_radius, 2, 2);
+  const auto [nu, nv] = grid_dims_for(triangles, 2.0 * kPi * major_radius, 2.0 * kPi * minor_radius, 2, 2);
   // Both directions wrap in the index grid, so the seams are exact; at least 3 around each
   // circle keeps it a manifold.
   const int around = std::max(nu, 4), tube = std::max(nv, 4);
   return make_grid_surface(
       around, tube,
       [&](double u, double v) {
-        const double a = 2.0 * M_PI * u, b = 2.0 * M_PI * v;
+        const double a = 2.0 * kPi * u, b = 2.0 * kPi * v;
         const double ring = major_radius + minor_radius * std::cos(b);
         return Vec3(ring * std::cos(a), ring * std::sin(a), minor_radius * std::sin(b));
       },

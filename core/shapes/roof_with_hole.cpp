@@ -6,6 +6,7 @@
 
 #include "core/shapes/hard_cases.h"
 #include "core/shapes/shapes.h"
+#include "core/util/angles.h"
 #include "core/util/error.h"
 
 namespace ff {
@@ -31,7 +32,7 @@ TriMesh make_roof_with_hole(int triangles, double size, double hole_radius, doub
   // Cells about square: radial depth (between the sides' and the corners') vs the mean of
   // the two boundaries' lengths. A multiple of 8 around puts the corners on grid columns.
   const double depth = (half * (1.0 + std::sqrt(2.0))) / 2.0 - hole_radius;
-  const double around = (2.0 * M_PI * hole_radius + 8.0 * half) / 2.0;
+  const double around = (2.0 * kPi * hole_radius + 8.0 * half) / 2.0;
   const auto [n_radial, n_around] = grid_dims_for(triangles, depth, around, 1, 8);
   // u = radial, v = around (counter-clockwise): d/du x d/dv points up.
   return make_grid_surface(

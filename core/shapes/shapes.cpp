@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/util/angles.h"
+
 namespace ff {
 
 TriMesh make_grid_surface(int nu, int nv, const std::function<Vec3(double, double)>& map, bool wrap_u, bool wrap_v) {
@@ -41,8 +43,8 @@ TriMesh make_plane(int nu, int nv, double width, double height) {
 TriMesh make_roof(int nu, int nv) {
   return make_grid_surface(nu, nv, [](double u, double v) {
     const double x = 40.0 * u, y = 25.0 * v;
-    const double z = 6.0 * std::sin(M_PI * u) * std::sin(M_PI * v) + 2.0 * std::sin(3.0 * M_PI * u) * v * v +
-                     1.5 * std::cos(2.0 * M_PI * v) * u;
+    const double z = 6.0 * std::sin(kPi * u) * std::sin(kPi * v) + 2.0 * std::sin(3.0 * kPi * u) * v * v +
+                     1.5 * std::cos(2.0 * kPi * v) * u;
     return Vec3(x, y, z);
   });
 }

@@ -11,11 +11,11 @@
 #include <vector>
 
 #include "core/fabricate/cut_sheets.h"
+#include "core/util/angles.h"
 #include "core/util/random.h"
 
 namespace ff::cut_sheet_test {
 
-inline constexpr double kPi = 3.14159265358979323846;
 using Poly = std::vector<Vec2>;
 
 inline double uniform(SplitMix64& rng, double lo, double hi) { return lo + (hi - lo) * rng.uniform(); }

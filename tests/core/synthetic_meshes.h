@@ -6,10 +6,9 @@
 
 #include "core/mesh/topology.h"
 #include "core/mesh/tri_mesh.h"
+#include "core/util/angles.h"
 
 namespace ff::test {
-
-inline constexpr double kPi = 3.14159265358979323846;
 
 // Appends `part`, moved by `shift`, to `mesh` as a separate component.
 inline void append_shifted(TriMesh& mesh, const TriMesh& part, const Vec3& shift) {

@@ -9,11 +9,10 @@
 #include <vector>
 
 #include "core/panels/border_vertices.h"
+#include "core/util/angles.h"
 
 namespace ff {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 double segment_distance(const Vec3& p, const Vec3& a, const Vec3& b) {
   const Vec3 ab = b - a;

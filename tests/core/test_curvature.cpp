@@ -7,11 +7,10 @@
 #include "core/mesh/curvature.h"
 #include "core/mesh/topology.h"
 #include "core/shapes/shapes.h"
+#include "core/util/angles.h"
 
 namespace ff {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // A latitude band of a sphere (no poles), normals outward.
 TriMesh sphere_band(double radius, int nu, int nv) {

@@ -12,6 +12,7 @@
 #include "core/remesh_params_json.h"
 #include "core/remesher.h"
 #include "core/shapes/shapes.h"
+#include "core/util/angles.h"
 #include "core/util/error.h"
 #include "input_error_message.h"
 #include "panel_checks.h"
@@ -53,7 +54,7 @@ std::pair<double, double> mean_areas(const Remesher& r, double split) {
   double area[2] = {0, 0};
   int count[2] = {0, 0};
   for (const ClusterShape& s : shapes) {
-    const double radius = std::sqrt(s.area / M_PI);
+    const double radius = std::sqrt(s.area / kPi);
     if (std::abs(s.centroid.x() - split) < radius) continue;
     const int side = s.centroid.x() < split ? 0 : 1;
     area[side] += s.area;
@@ -114,7 +115,7 @@ TEST(DensityControl, StretchAlongXElongatesPanelsAlongX) {
       const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(s.cov);
       const Vec3 l = eig.eigenvalues();  // ascending; l[0] ~ 0 (flat)
       mean_aspect[run] += std::sqrt(l[2] / std::max(l[1], 1e-300));
-      mean_angle[run] += std::acos(std::min(1.0, std::abs(eig.eigenvectors().col(2).x()))) * 180.0 / M_PI;
+      mean_angle[run] += std::acos(std::min(1.0, std::abs(eig.eigenvectors().col(2).x()))) * 180.0 / kPi;
       ++n;
     }
     mean_aspect[run] /= n;
@@ -166,7 +167,7 @@ TEST(DensityControl, AnisotropicEnergyFromMomentsIsExactAndTheFitMinimisesIt) {
 
 TEST(DensityControl, MinCurvatureStretchElongatesPanelsAlongACylinder) {
   const TriMesh mesh = make_grid_surface(
-      120, 80, [](double s, double t) { return Vec3(std::cos(2 * M_PI * s), std::sin(2 * M_PI * s), 4.0 * t); },
+      120, 80, [](double s, double t) { return Vec3(std::cos(2 * kPi * s), std::sin(2 * kPi * s), 4.0 * t); },
       /*wrap_u=*/true);
   RemeshParams p;
   p.panels = 60;
@@ -193,9 +194,8 @@ TEST(DensityControl, MinCurvatureStretchElongatesPanelsAlongACylinder) {
 
 TEST(DensityControl, DensityAndStretchStillGiveValidPanels) {
   // A gentle doubly curved patch, 2 x 1.5, rising 0.15.
-  const TriMesh mesh = make_grid_surface(80, 60, [](double s, double t) {
-    return Vec3(2.0 * s, 1.5 * t, 0.15 * std::sin(M_PI * s) * std::sin(M_PI * t));
-  });
+  const TriMesh mesh = make_grid_surface(
+      80, 60, [](double s, double t) { return Vec3(2.0 * s, 1.5 * t, 0.15 * std::sin(kPi * s) * std::sin(kPi * t)); });
   RemeshParams p;
   p.panels = 60;
   p.density_expression = "1 + 3 * smoothstep(0.4, 0.6, u)";

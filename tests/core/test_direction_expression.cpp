@@ -14,6 +14,7 @@
 #include "core/remesh_params_json.h"
 #include "core/remesher.h"
 #include "core/shapes/shapes.h"
+#include "core/util/angles.h"
 #include "core/util/error.h"
 #include "input_error_message.h"
 
@@ -68,13 +69,13 @@ TEST(DirectionExpression, VortexElongatesPanelsTangentially) {
       if (!(area[c] > 0.0)) continue;
       const Vec3 centre = first[c] / area[c];
       // A panel around the axis has no tangential direction to follow.
-      if (centre.head<2>().norm() < std::sqrt(area[c] / M_PI)) continue;
+      if (centre.head<2>().norm() < std::sqrt(area[c] / kPi)) continue;
       const Eigen::Matrix3d cov = second[c] / area[c] - centre * centre.transpose();
       const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
       const Vec3 l = eig.eigenvalues();  // ascending; l[0] ~ 0 (flat)
       const Vec3 tangent = Vec3(-centre.y(), centre.x(), 0.0).normalized();
       mean_aspect[run] += std::sqrt(l[2] / std::max(l[1], 1e-300));
-      mean_angle[run] += std::acos(std::min(1.0, std::abs(eig.eigenvectors().col(2).dot(tangent)))) * 180.0 / M_PI;
+      mean_angle[run] += std::acos(std::min(1.0, std::abs(eig.eigenvectors().col(2).dot(tangent)))) * 180.0 / kPi;
       ++n;
     }
     ASSERT_GE(n, 90);
@@ -92,7 +93,7 @@ TEST(DirectionExpression, VortexElongatesPanelsTangentially) {
 TEST(DirectionExpression, ConstantExpressionIsExactlyTheAxis) {
   // Curved, so the projection into each face matters.
   const TriMesh mesh = make_grid_surface(40, 30, [](double s, double t) {
-    return Vec3(2.0 * s, 1.5 * t, 0.3 * std::sin(M_PI * s) * std::cos(M_PI * t));
+    return Vec3(2.0 * s, 1.5 * t, 0.3 * std::sin(kPi * s) * std::cos(kPi * t));
   });
   RemeshParams p;
   p.panels = 25;

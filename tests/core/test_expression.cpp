@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/density/expression.h"
+#include "core/util/angles.h"
 #include "core/util/error.h"
 #include "input_error_message.h"
 
@@ -32,7 +33,7 @@ TEST(Expression, ArithmeticAndPrecedence) {
   EXPECT_DOUBLE_EQ(eval("7 % 3"), 1.0);
   EXPECT_DOUBLE_EQ(eval("-1 % 3"), 2.0);  // floored
   EXPECT_DOUBLE_EQ(eval("1.5e2 + .5"), 150.5);
-  EXPECT_DOUBLE_EQ(eval("2 * pi"), 2.0 * M_PI);
+  EXPECT_DOUBLE_EQ(eval("2 * pi"), 2.0 * kPi);
   EXPECT_DOUBLE_EQ(eval("e"), std::exp(1.0));
 }
 
@@ -53,7 +54,7 @@ TEST(Expression, ComparisonsLogicAndConditionals) {
 
 TEST(Expression, Functions) {
   EXPECT_NEAR(eval("sin(pi / 2) + cos(0) + tan(0)"), 2.0, 1e-15);
-  EXPECT_NEAR(eval("atan2(1, 1)"), M_PI / 4, 1e-15);
+  EXPECT_NEAR(eval("atan2(1, 1)"), kPi / 4, 1e-15);
   EXPECT_DOUBLE_EQ(eval("sqrt(16) + abs(-2) + exp(0) + log(e) + log10(100)"), 10.0);
   EXPECT_DOUBLE_EQ(eval("pow(2, 10)"), 1024.0);
   EXPECT_DOUBLE_EQ(eval("min(3, 1, 2) + max(3, 9, 2)"), 10.0);

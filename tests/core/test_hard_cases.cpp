@@ -10,12 +10,11 @@
 #include "core/mesh/clean.h"
 #include "core/mesh/topology.h"
 #include "core/shapes/hard_cases.h"
+#include "core/util/angles.h"
 #include "core/util/error.h"
 
 namespace ff {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // Two vertices closer than `tolerance`, by a sweep along x.
 bool has_near_duplicate_vertices(const TriMesh& m, double tolerance) {

@@ -11,6 +11,7 @@
 #include "core/quality/closest_point.h"
 #include "core/mesh/topology.h"
 #include "core/shapes/hard_cases.h"
+#include "core/util/angles.h"
 #include "core/util/error.h"
 #include "remesh_checks.h"
 #include "test_meshes.h"
@@ -54,7 +55,7 @@ std::vector<std::array<Vec3, 2>> crease_segments(const TriMesh& m, double angle_
   for (int e = 0; e < t.num_edges(); ++e) {
     if (t.is_boundary_edge(e)) continue;
     const auto& f = t.edge_faces[static_cast<size_t>(e)];
-    if (face_normal(m, f[0]).dot(face_normal(m, f[1])) < std::cos(angle_deg * M_PI / 180.0)) {
+    if (face_normal(m, f[0]).dot(face_normal(m, f[1])) < std::cos(angle_deg * kPi / 180.0)) {
       const auto& v = t.edge_vertices[static_cast<size_t>(e)];
       out.push_back({m.positions[static_cast<size_t>(v[0])], m.positions[static_cast<size_t>(v[1])]});
     }

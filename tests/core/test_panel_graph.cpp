@@ -264,13 +264,13 @@ void expect_ccw_fans(const TriMesh& mesh, bool planar) {
         const Vec3 d = face_centroid(mesh, fan[k]) - mesh.positions[static_cast<size_t>(v)];
         const double angle = std::atan2(d.y(), d.x());
         if (k > 0) {
-          const double step = std::remainder(angle - prev, 2 * test::kPi);
+          const double step = std::remainder(angle - prev, 2 * kPi);
           EXPECT_GT(step, 0.0) << "vertex " << v;
           total += step;
         }
         prev = angle;
       }
-      EXPECT_LT(total, 2 * test::kPi);
+      EXPECT_LT(total, 2 * kPi);
     }
   }
 }

@@ -8,13 +8,13 @@
 #include <vector>
 
 #include "core/panels/polygon2d.h"
+#include "core/util/angles.h"
 #include "core/util/error.h"
 #include "core/util/random.h"
 
 namespace ff {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 using Poly = std::vector<Vec2>;
 
 Poly square() { return {Vec2(0, 0), Vec2(1, 0), Vec2(1, 1), Vec2(0, 1)}; }

@@ -213,7 +213,7 @@ TEST(Repair, HolesOfFortyEdgesAreFilledUpToTheLimit) {
   double added = 0.0;
   for (size_t f = static_cast<size_t>(m.num_faces()); f < capped.mesh.triangles.size(); ++f)
     added += face_area(capped.mesh, static_cast<int>(f));
-  EXPECT_NEAR(added, 2.0 * 20.0 * std::sin(2.0 * test::kPi / 40.0), 1e-9);
+  EXPECT_NEAR(added, 2.0 * 20.0 * std::sin(2.0 * kPi / 40.0), 1e-9);
   CleanOptions bad;
   bad.fill_holes_max_edges = 501;
   EXPECT_THROW(clean_mesh(m, bad), InputError);

@@ -19,7 +19,7 @@ TEST(SheetNesting, QuickProximityTestAgreesWithTheDistance) {
   const auto star = [&](const Vec2& centre, double radius, int n) {
     cut_sheet_test::Poly p;
     for (int i = 0; i < n; ++i) {
-      const double angle = 2.0 * cut_sheet_test::kPi * i / n, r = radius * (0.4 + 0.6 * rng.uniform());
+      const double angle = 2.0 * kPi * i / n, r = radius * (0.4 + 0.6 * rng.uniform());
       p.push_back(centre + r * Vec2(std::cos(angle), std::sin(angle)));
     }
     return p;

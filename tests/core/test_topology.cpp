@@ -179,7 +179,7 @@ TEST(Topology, StripWithTouchingEndsIsOneLoop) {
   TriMesh m;
   const int n = 6;
   for (int s = 0; s < n; ++s) {
-    const double a = 2.0 * test::kPi * s / n;
+    const double a = 2.0 * kPi * s / n;
     m.positions.emplace_back(std::cos(a), std::sin(a), 0.0);
     m.positions.emplace_back(2 * std::cos(a), 2 * std::sin(a), 0.0);
   }
