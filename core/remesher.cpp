@@ -14,6 +14,7 @@
 #include "core/density/density_field.h"
 #include "core/panels/boundary_term.h"
 #include "core/panels/glass_split.h"
+#include "core/panels/panel_check.h"
 #include "core/panels/plane_fit.h"
 #include "core/panels/split_requests.h"
 #include "core/quality/report.h"
@@ -63,8 +64,6 @@ constexpr size_t kMaxSplitsPerRound = 3;
 // 87.7 -> 79.7 s (every mesh 0-29% less; bunny 200 1.41 -> 1.25 s), Hausdorff geometric
 // mean 0.996.
 constexpr int kMendEarlyAt = 3;
-// Corners below this at split nodes get the group's other pairings tried (widen_needle_corners.cpp).
-constexpr double kNeedleCornerDeg = 5.0;
 // An invalid cluster with fewer faces than the mean cluster's over this cannot be split near
 // its problem (a split needs a face at the problem corner other than the seed): when the
 // rounds stall with no split to make, it moves elsewhere instead, as an enclosed one does.
@@ -488,8 +487,9 @@ void Remesher::optimize_planes() {
     layout.try_planes(fitted, 2);
     for (double step : {0.5, 0.25}) layout.try_planes(planes_toward(layout.planes().planes, fitted, step));
   }
-  // Then the needles the fit leaves at split nodes: another pairing, or the group as one
-  // point (which moves planes: not those of locked panels and their neighbours).
+  // Then the needles (corners below kNeedleCornerDeg) the fit leaves at split nodes: another
+  // pairing, or the group as one point (which moves planes: not those of locked panels and
+  // their neighbours).
   layout.widen_needle_corners(kNeedleCornerDeg, held_clusters());
   // Last: it pins planes to points, which the fit above would undo.
   if (params_.single_point_nodes) layout.make_single_point_nodes();

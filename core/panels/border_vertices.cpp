@@ -1,13 +1,14 @@
 #include "core/panels/border_vertices.h"
 
 #include <algorithm>
+#include <cmath>
+
+#include "core/panels/panel_check.h"
+#include "core/util/angles.h"
 
 namespace ff {
 
 namespace {
-
-// A corner sharper than 5 degrees at an end of a border run is a needle, not a design corner.
-constexpr double kNeedleCos = 0.99619469809174553;  // cos(5 degrees)
 
 double distance_to_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
   const Vec3 ab = b - a;
@@ -62,10 +63,12 @@ std::vector<int> thin_border(const Vec3& from, const std::vector<Vec3>& points, 
   // The end nodes are placed by the vertex rule, near their mesh corner but not on it: one can
   // land short of the last border point (or past the first), and keeping that point sends the
   // panel's border out and straight back, a needle of no width (hyperboloid_s4.off at 300
-  // panels, seed 1: a 0.01 degree corner 24 units long). Such an end point goes.
-  const auto needle = [](const Vec3& before, const Vec3& p, const Vec3& after) {
+  // panels, seed 1: a 0.01 degree corner 24 units long). Such an end point goes (a corner
+  // below kNeedleCornerDeg).
+  const double needle_cos = std::cos(kNeedleCornerDeg * kPi / 180.0);
+  const auto needle = [needle_cos](const Vec3& before, const Vec3& p, const Vec3& after) {
     const Vec3 a = before - p, b = after - p;
-    return a.dot(b) > kNeedleCos * a.norm() * b.norm();
+    return a.dot(b) > needle_cos * a.norm() * b.norm();
   };
   const size_t keep_at_least = static_cast<size_t>(std::max(min_keep, 0));
   while (out.size() > keep_at_least) {

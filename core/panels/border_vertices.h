@@ -10,8 +10,9 @@ namespace ff {
 
 // The indices (increasing) of `points` to keep between the fixed ends `from` and `to`: every
 // dropped point lies within `tolerance` of the kept polyline, except a first or last point
-// that would make a corner below 5 degrees with its end (the end landed short of it: the
-// border would run out and back). At least `min_keep` (0 or 1) when there are points at all.
+// that would make a corner below kNeedleCornerDeg (panel_check.h) with its end (the end landed
+// short of it: the border would run out and back). At least `min_keep` (0 or 1) when there
+// are points at all.
 std::vector<int> thin_border(const Vec3& from, const std::vector<Vec3>& points, const Vec3& to, double tolerance,
                              int min_keep);
 

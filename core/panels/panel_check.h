@@ -22,6 +22,11 @@ namespace ff {
 // triangle for a cluster of 91 faces). The quality report counts them (collapsed_panels).
 constexpr double kMinCoveredShare = 0.1;
 
+// A panel corner below this (degrees) is a needle, not a design corner: a border run drops
+// an end point that would make one (border_vertices.cpp), and the finish widens those at
+// split nodes (widen_needle_corners.cpp).
+constexpr double kNeedleCornerDeg = 5.0;
+
 // Whether a panel of (twice) signed area `panel_area2` on its plane, whose cluster's faces
 // have (twice) the area `faces_area2` projected on that plane, has collapsed. Both doubled:
 // the sums of cross products, as they are gathered.
