@@ -231,7 +231,7 @@ void Remesher::panel_round() {
   if (improved) best_round_ = panel_rounds_done_;
   // k2 is the hard limit; before it, a run whose fewest invalid panels has not gone down for
   // kPanelPatience rounds stops: inputs that cannot get better end early.
-  // After a valid fallback, only the coverage rounds' budget.
+  // After a valid fallback (coverage_round), also at most kCoverageRounds rounds from the first.
   const bool last = invalid == 0 || panel_rounds_done_ >= std::max(1, params_.panel_rounds) ||
                     panel_rounds_done_ - best_round_ >= kPanelPatience ||
                     (coverage_.fallback && panel_rounds_done_ - coverage_.first_round >= kCoverageRounds);

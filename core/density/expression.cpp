@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "core/util/angles.h"
 #include "core/util/error.h"
 
 namespace ff {
@@ -344,7 +345,7 @@ class ExpressionParser {
         if (id == v) fail("calls '" + std::string(id) + "' at column " + column(t) + ", which is not a function");
       unknown();
     }
-    if (id == "pi") return emit(Op::Number, 0, 3.14159265358979323846);
+    if (id == "pi") return emit(Op::Number, 0, kPi);
     if (id == "e") return emit(Op::Number, 0, 2.71828182845904523536);
     for (int v = 0; v < kNumExprVars; ++v) {
       if (id != kVarNames[v]) continue;

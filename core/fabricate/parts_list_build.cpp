@@ -4,13 +4,14 @@
 
 #include "core/fabricate/parts_list.h"
 #include "core/panels/polygon2d.h"
+#include "core/util/angles.h"
 #include "core/util/error.h"
 
 namespace ff {
 
 namespace {
 
-constexpr double kDeg = 180.0 / 3.14159265358979323846;
+constexpr double kDeg = 180.0 / kPi;
 
 // Interior angle at each corner of a counter-clockwise polygon, in (0, 360).
 std::vector<double> corner_angles(const std::vector<Vec2>& poly) {

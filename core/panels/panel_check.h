@@ -27,11 +27,11 @@ constexpr double kMinCoveredShare = 0.1;
 // split nodes (widen_needle_corners.cpp).
 constexpr double kNeedleCornerDeg = 5.0;
 
-// Whether a panel of (twice) signed area `panel_area2` on its plane, whose cluster's faces
-// have (twice) the area `faces_area2` projected on that plane, has collapsed. Both doubled:
-// the sums of cross products, as they are gathered.
-inline bool is_collapsed(double panel_area2, double faces_area2) {
-  return faces_area2 > 0.0 && panel_area2 < kMinCoveredShare * faces_area2;
+// Whether a panel of signed area `panel_area` on its plane, whose cluster's faces have the
+// area `faces_area` projected on that plane, has collapsed. Any one scale for both (the
+// layout passes them doubled, as sums of cross products).
+inline bool is_collapsed(double panel_area, double faces_area) {
+  return faces_area > 0.0 && panel_area < kMinCoveredShare * faces_area;
 }
 
 // points: the panel's vertices (on `plane`); references[i]: where points[i] belongs (its

@@ -116,16 +116,17 @@ class PanelLayout {
   // At node groups of four or more clusters (not held, not single) where a corner at or next
   // to one of the group's nodes is below below_deg: tries the group's other pairings and
   // keeps the one whose smallest such corner is widest, as long as no more panels around it
-  // are invalid; where still below, makes the group one vertex (make_group_single) when that
-  // widens it and narrows and invalidates nothing its planes reach (widen_needle_corners.cpp).
+  // are invalid or collapsed; where still below, makes the group one vertex (make_group_single)
+  // when that widens it and narrows, invalidates and collapses nothing more of what its planes
+  // reach (widen_needle_corners.cpp).
   // fixed_clusters (per cluster, empty for none): their planes stay (locked panels), so no
   // group on one of their masters is made one vertex. Returns the number of groups changed.
   int widen_needle_corners(double below_deg, const std::vector<char>& fixed_clusters = {});
   // The masters whose planes pass through the point of a single-point group, sorted.
   std::vector<int> single_point_masters() const;
   // Replaces the plane of each master with `candidates[m]`, one at a time, keeping each
-  // change that does not add invalid panels around it (beyond the paper: planes fitted to
-  // the surface). Returns how many it kept.
+  // change that adds neither invalid nor collapsed panels around it (beyond the paper: planes
+  // fitted to the surface). Returns how many it kept.
   // Masters pinned through a single point (single_point_fix) keep their planes.
   // passes: up to this many passes over the masters, another only after one kept any (a
   // plane refused while its neighbours were elsewhere may pass once they moved); a plane is

@@ -262,6 +262,7 @@ QualityReport measure_quality(const TriMesh& input, const MeshTopology& input_to
   const auto source_of = [&](size_t p) { return by_source ? static_cast<size_t>(panels.panel_source[p]) : p; };
   std::vector<double> covered(np, 0.0), faces_projected(np, 0.0);
   std::vector<int> first_piece(np, -1);
+  std::vector<char> source_invalid(np, 0);  // judged only on valid panels, as the layout judges it
 
   const double tol = options.tolerance * bbox_diagonal(input);
   double min_angle = np > 0 ? 360.0 : 0.0;
@@ -319,6 +320,7 @@ QualityReport measure_quality(const TriMesh& input, const MeshTopology& input_to
     const bool glass_invalid = (options.glass && concave) || acute > 0;
     if (producer_invalid || !simple || kernel.empty() || flipped > 0 || has_spike || misoriented || glass_invalid) {
       r.invalid_panel_ids.push_back(p);
+      source_invalid[source_of(static_cast<size_t>(p))] = 1;
     }
   }
   // A cluster that could not become a panel leaves its faces uncovered: it counts as an
@@ -327,13 +329,13 @@ QualityReport measure_quality(const TriMesh& input, const MeshTopology& input_to
   if (!panels.face_panel.empty()) {
     std::vector<char> collapsed(np, 0);
     for (size_t q = 0; q < np; ++q) {
-      if (first_piece[q] < 0 || !(faces_projected[q] > 0.0)) continue;
+      if (first_piece[q] < 0 || source_invalid[q] || !(faces_projected[q] > 0.0)) continue;
       const double coverage = covered[q] / faces_projected[q];
-      collapsed[q] = coverage < kMinCoveredShare;
+      collapsed[q] = is_collapsed(covered[q], faces_projected[q]);
       if (r.min_panel_coverage_panel < 0 || coverage < r.min_panel_coverage)
         r.min_panel_coverage = coverage, r.min_panel_coverage_panel = first_piece[q];
     }
-    for (size_t p = 0; p < np; ++p) r.collapsed_panels += collapsed[source_of(p)];
+    for (size_t p = 0; p < np; ++p) r.collapsed_panels += collapsed[source_of(p)];  // each glass piece
   }
   r.min_corner_angle_deg = min_angle;
   r.min_corner_angle_target_deg = options.min_corner_angle_deg;

@@ -87,6 +87,8 @@ struct QualityReport {
   // panels name no faces), and the panels below kMinCoveredShare (panel_check.h): collapsed,
   // their planes meet nearly in a line or point and their faces lie under the neighbours'
   // panels. The paper's checks let such a panel through; it is reported, not counted invalid.
+  // Judged on valid panels only (an invalid one's area says nothing), as the panel phase
+  // judges it; every glass piece of a collapsed panel counts.
   double min_panel_coverage = 1.0;
   int min_panel_coverage_panel = -1;
   int collapsed_panels = 0;

@@ -50,7 +50,20 @@ TEST(CoverageRounds, WhatRemainsIsValidAndReported) {
   EXPECT_EQ(q.collapsed_panels, 1);
   EXPECT_EQ(flagged_collapsed(r->panels()), q.collapsed_panels);
   EXPECT_LT(q.min_panel_coverage, kMinCoveredShare);
+  ASSERT_GE(q.min_panel_coverage_panel, 0);
   EXPECT_TRUE(r->panels().issues[static_cast<size_t>(q.min_panel_coverage_panel)].collapsed);
+}
+
+// The coverage rounds keep to k2: the same run with 3 panel rounds ends valid within them
+// (its first valid round, the second, has the collapsed panel; the third is the budget's last).
+TEST(CoverageRounds, KeepToThePanelRoundBudget) {
+  auto r = test::remesher("epcot.off", 44, 5);
+  RemeshParams p = r->params();
+  p.panel_rounds = 3;
+  Remesher limited(r->mesh(), p);
+  limited.run();
+  EXPECT_TRUE(test::valid_panels(limited, 44, 0.08));
+  EXPECT_LE(limited.panel_rounds_done(), 3);
 }
 
 // Runs of the sweep (bench/sweep_validity.sh's counts) that ended with a collapsed panel, one

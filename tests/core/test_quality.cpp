@@ -357,13 +357,36 @@ TEST(Quality, CoverageFindsCollapsedPanels) {
   EXPECT_EQ(w.collapsed_panels, 0);
 
   // Glass pieces count as the panel they were cut from: the right square as two triangles,
-  // all its faces under the first piece; per piece that would be 0.5 and 0.
+  // all its faces under the first piece; per piece the first would cover 0.5 (the second,
+  // with no faces, would not be judged).
   PanelMesh pieces =
       make_panels(input.positions, {{0, 1, 4, 5}, {1, 2, 3}, {1, 3, 4}}, {0, 1, 2, 3, 4, 5}, {0, 0, 1, 1});
   pieces.panel_source = {0, 1, 1};
   const QualityReport g = measure(input, pieces);
   EXPECT_NEAR(g.min_panel_coverage, 1.0, 1e-12);
   EXPECT_EQ(g.collapsed_panels, 0);
+
+  // A collapsed panel cut into two pieces (glass): each piece counts; together they cover 0.04.
+  std::vector<Vec3> cut_vertices = input.positions;
+  cut_vertices.push_back(Vec3(1, 0.04, 0));
+  cut_vertices.push_back(Vec3(2, 0.04, 0));
+  PanelMesh cut =
+      make_panels(cut_vertices, {{0, 1, 4, 5}, {1, 2, 7}, {1, 7, 6}}, {0, 1, 2, 3, 4, 5, 1, 2}, {0, 0, 1, 1});
+  cut.panel_source = {0, 1, 1};
+  const QualityReport c = measure(input, cut);
+  EXPECT_EQ(c.invalid_panels, 0);
+  EXPECT_NEAR(c.min_panel_coverage, 0.04, 1e-12);
+  EXPECT_EQ(c.min_panel_coverage_panel, 1);
+  EXPECT_EQ(c.collapsed_panels, 2);
+
+  // An invalid panel is not judged: the sliver turned clockwise (misoriented, flipped).
+  PanelMesh flipped = pm;
+  flipped.panels[1] = {1, 6, 2};
+  const QualityReport f = measure(input, flipped);
+  EXPECT_GT(f.invalid_panels, 0);
+  EXPECT_EQ(f.collapsed_panels, 0);
+  EXPECT_EQ(f.min_panel_coverage_panel, 0);
+  EXPECT_NEAR(f.min_panel_coverage, 1.0, 1e-12);
 
   // Without faces per panel there is nothing to cover.
   PanelMesh no_faces = pm;
