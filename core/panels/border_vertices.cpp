@@ -10,6 +10,9 @@ namespace ff {
 
 namespace {
 
+// cos(kNeedleCornerDeg), computed once rather than per border run.
+const double kNeedleCos = std::cos(kNeedleCornerDeg * kPi / 180.0);
+
 double distance_to_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
   const Vec3 ab = b - a;
   const double len2 = ab.squaredNorm();
@@ -65,10 +68,9 @@ std::vector<int> thin_border(const Vec3& from, const std::vector<Vec3>& points, 
   // panel's border out and straight back, a needle of no width (hyperboloid_s4.off at 300
   // panels, seed 1: a 0.01 degree corner 24 units long). Such an end point goes (a corner
   // below kNeedleCornerDeg).
-  const double needle_cos = std::cos(kNeedleCornerDeg * kPi / 180.0);
-  const auto needle = [needle_cos](const Vec3& before, const Vec3& p, const Vec3& after) {
+  const auto needle = [](const Vec3& before, const Vec3& p, const Vec3& after) {
     const Vec3 a = before - p, b = after - p;
-    return a.dot(b) > needle_cos * a.norm() * b.norm();
+    return a.dot(b) > kNeedleCos * a.norm() * b.norm();
   };
   const size_t keep_at_least = static_cast<size_t>(std::max(min_keep, 0));
   while (out.size() > keep_at_least) {

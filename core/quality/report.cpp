@@ -244,8 +244,11 @@ QualityReport measure_quality(const TriMesh& input, const MeshTopology& input_to
   // Glass pieces (panel_source) are judged as the panel they were cut from, on all of its
   // faces: the pieces share its plane, and the faces under one piece alone can face away on a
   // sharply curved part (cow.off in glass mode: a sliver piece on a leg) although the panel
-  // as a whole faces its faces, as the panel phase judged it before the cut.
-  if (!panels.face_panel.empty() && panels.panel_source.size() == np) {
+  // as a whole faces its faces, as the panel phase judged it before the cut. Coverage below
+  // too: a piece adds its area to the panel it was cut from.
+  const bool pieces = !panels.face_panel.empty() && panels.panel_source.size() == np;
+  const auto source_of = [&](size_t p) { return pieces ? static_cast<size_t>(panels.panel_source[p]) : p; };
+  if (pieces) {
     std::vector<Vec3> by_source(np, Vec3::Zero());
     for (size_t p = 0; p < np; ++p) {
       const int source = panels.panel_source[p];
@@ -253,13 +256,10 @@ QualityReport measure_quality(const TriMesh& input, const MeshTopology& input_to
         throw InputError("quality: panel_source names a missing panel");
       by_source[static_cast<size_t>(source)] += face_normal_sum[p];
     }
-    for (size_t p = 0; p < np; ++p) face_normal_sum[p] = by_source[static_cast<size_t>(panels.panel_source[p])];
+    for (size_t p = 0; p < np; ++p) face_normal_sum[p] = by_source[source_of(p)];
   }
 
-  // Coverage, per source panel (a glass piece adds its area to the panel it was cut from).
-  // (Sources were validated above when the panels name their faces; coverage needs those.)
-  const bool by_source = !panels.face_panel.empty() && panels.panel_source.size() == np;
-  const auto source_of = [&](size_t p) { return by_source ? static_cast<size_t>(panels.panel_source[p]) : p; };
+  // Coverage, per source panel (sources validated above; coverage needs the faces too).
   std::vector<double> covered(np, 0.0), faces_projected(np, 0.0);
   std::vector<int> first_piece(np, -1);
   std::vector<char> source_invalid(np, 0);  // judged only on valid panels, as the layout judges it
