@@ -320,8 +320,9 @@ export async function distinctColours(page, selector) {
 
 // Pixels of the view within 24 of an RGB colour per channel (markers drawn in a colour of
 // their own), decoded by the page itself; the legend lines over the view (whose swatches have
-// those colours) are hidden for the screenshot.
-export async function viewPixels(page, [r, g, b]) {
+// those colours) are hidden for the screenshot. Returns their count and their centre as
+// fractions of the view's size (NaN without pixels), for clickView-style clicks near a marker.
+export async function viewColour(page, [r, g, b]) {
   const legends = (visibility) =>
     page.evaluate((v) => document.querySelector('.view-legends').style.setProperty('visibility', v), visibility);
   await legends('hidden');
@@ -337,12 +338,22 @@ export async function viewPixels(page, [r, g, b]) {
       context.drawImage(image, 0, 0);
       const pixels = context.getImageData(0, 0, image.width, image.height).data;
       let count = 0;
+      let x = 0;
+      let y = 0;
       for (let i = 0; i < pixels.length; i += 4)
-        if (Math.abs(pixels[i] - rgb[0]) < 24 && Math.abs(pixels[i + 1] - rgb[1]) < 24 && Math.abs(pixels[i + 2] - rgb[2]) < 24) count++;
-      return count;
+        if (Math.abs(pixels[i] - rgb[0]) < 24 && Math.abs(pixels[i + 1] - rgb[1]) < 24 && Math.abs(pixels[i + 2] - rgb[2]) < 24) {
+          count++;
+          x += (i / 4) % image.width;
+          y += Math.floor(i / 4 / image.width);
+        }
+      return { count, fx: (x / count + 0.5) / image.width, fy: (y / count + 0.5) / image.height };
     },
     { data: png.toString('base64'), rgb: [r, g, b] },
   );
+}
+
+export async function viewPixels(page, rgb) {
+  return (await viewColour(page, rgb)).count;
 }
 
 // viewPixels with "Show problems" off for the screenshot (markers that go with the problems

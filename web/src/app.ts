@@ -3,6 +3,7 @@
 // belongs to which request) live in designMachine.ts; opening a design and preparing its mesh
 // again in designOpener.ts; downloads, links and the session note in outputs.ts; this file
 // wires them to the worker, the view and the status line.
+import { collapsedPanel, faceOfPanel } from './collapsedPanel.ts';
 import { countOutcome, element } from './dom.ts';
 import { DesignEditor } from './designEditor.ts';
 import { DesignMachine, type ChainLoss } from './designMachine.ts';
@@ -47,6 +48,7 @@ export class App {
   private readonly exportObjButton = element('export-obj', HTMLButtonElement);
   private readonly shareButton = element('share', HTMLButtonElement);
   private readonly statsBox = element('stats', HTMLDivElement);
+  private readonly collapsedSelectButton = element('collapsed-select', HTMLButtonElement);
   // One selected panel for the panel edits and the per-panel thickness.
   private readonly selection = new PanelSelection();
   private readonly fabrication = new FabricationPanel({
@@ -99,6 +101,7 @@ export class App {
     this.cancelButton.addEventListener('click', () => this.cancel());
     this.exportObjButton.addEventListener('click', () => this.exportFile('obj'));
     this.shareButton.addEventListener('click', () => void this.share());
+    this.collapsedSelectButton.addEventListener('click', () => this.selectCollapsedPanel());
     this.form.onChange(() => this.parametersChanged());
     this.preparation.onChange(() => this.opener.preparationChanged());
     this.repair.onChange(() => void this.opener.repairChanged());
@@ -353,6 +356,18 @@ export class App {
     this.save({ mesh: mesh.design, params, history: solved?.chain ? solved.chain.slice(0, -1) : [], fabrication: this.fabrication.current });
   }
 
+  // The collapsed panel's legend button: selects it for the panel edits, as a click on it in
+  // the view would (it is usually too small to click), and moves the focus to the next step,
+  // "Merge with neighbour" (which brings the Panel edits section into view).
+  private selectCollapsedPanel(): void {
+    const result = this.machine.solving ? null : (this.machine.solved?.result ?? null);
+    const panel = result ? collapsedPanel(result.report) : null;
+    const face = result && panel !== null ? faceOfPanel(result.facePanels, panel) : null;
+    if (face === null) return;
+    this.selection.select(face);
+    element('merge-panel', HTMLButtonElement).focus();
+  }
+
   private exportFile(kind: 'obj'): void {
     const mesh = this.machine.mesh;
     const solved = this.machine.solved;
@@ -379,6 +394,7 @@ export class App {
     this.cancelButton.disabled = !solving;
     this.exportObjButton.disabled = !this.machine.canExport;
     this.shareButton.disabled = !this.machine.canShare;
+    this.collapsedSelectButton.disabled = solving;
     document.body.dataset.solving = String(solving);
     const opening = this.machine.opening;
     document.body.dataset.opening = opening === null ? 'false' : opening.job === null ? 'reading' : 'loading';

@@ -1,6 +1,7 @@
 // Everything on the page that shows a solve's quality report, in one call: the Quality section,
-// the legend of the point farthest from the design and that of the sharpest corner (their
-// markers are the viewer's). null clears them (a new design, nothing solved yet).
+// the legends of the point farthest from the design, of the sharpest corner and of a collapsed
+// panel (their markers are the viewer's). null clears them (a new design, nothing solved yet).
+import { renderCollapsedPanel } from './collapsedPanel.ts';
 import { renderDesignDistance } from './farthest.ts';
 import type { SolveResult } from './protocol.ts';
 import { renderSharpestCorner } from './sharpestCorner.ts';
@@ -10,4 +11,5 @@ export function renderQuality(statsBox: HTMLElement, result: SolveResult | null)
   renderStats(statsBox, result);
   renderDesignDistance(result);
   renderSharpestCorner(result);
+  renderCollapsedPanel(result);
 }

@@ -1,8 +1,9 @@
 // Problem markers (paper fig. 6): spike vertices as red points, flipped edges as thick red
 // lines (screen-space width, since WebGL lines are one pixel wide), corners below the minimum
 // corner angle (glass mode) as larger amber points, and where the panels are farthest from the
-// design (the Hausdorff distance's worst sample) as a cyan point, and the sharpest corner of
-// any panel as a violet one. Invalid panels are tinted by the panel layer.
+// design (the Hausdorff distance's worst sample) as a cyan point, the sharpest corner of any
+// panel as a violet one, and a collapsed panel's centre (collapsedPanel.ts) as a lime one.
+// Invalid panels are tinted by the panel layer.
 import * as THREE from 'three';
 import { LineMaterial } from 'three/examples/jsm/lines/LineMaterial.js';
 import { LineSegments2 } from 'three/examples/jsm/lines/LineSegments2.js';
@@ -13,8 +14,16 @@ const RED = 0xee2924;
 const AMBER = 0xffb000;
 const CYAN = 0x22d3ee; // styles.css .legend-dot.farthest
 const VIOLET = 0xa855f7; // styles.css .legend-dot.sharpest
+const LIME = 0xa3e635; // styles.css .legend-dot.collapsed
 
 type Point = [number, number, number];
+
+// The report's points to mark (mesh coordinates), each null when there is none.
+export interface MarkedPoints {
+  farthest: Point | null;
+  sharpest: Point | null;
+  collapsed: Point | null;
+}
 
 function shiftedPoints(values: number[], origin: THREE.Vector3): THREE.BufferGeometry {
   const positions = new Float32Array(values.length);
@@ -31,6 +40,7 @@ export class ProblemLayer {
   readonly acute: THREE.Points<THREE.BufferGeometry, THREE.PointsMaterial>;
   private readonly farthest: THREE.Points<THREE.BufferGeometry, THREE.PointsMaterial>;
   private readonly sharpest: THREE.Points<THREE.BufferGeometry, THREE.PointsMaterial>;
+  private readonly collapsed: THREE.Points<THREE.BufferGeometry, THREE.PointsMaterial>;
   private readonly lineMaterial: LineMaterial;
 
   constructor() {
@@ -52,17 +62,20 @@ export class ProblemLayer {
     this.sharpest = new THREE.Points(new THREE.BufferGeometry(), new THREE.PointsMaterial({ color: VIOLET, size: 12, sizeAttenuation: false, depthTest: false }));
     this.sharpest.name = 'sharpest-corner';
     this.sharpest.renderOrder = 9;
+    this.collapsed = new THREE.Points(new THREE.BufferGeometry(), new THREE.PointsMaterial({ color: LIME, size: 14, sizeAttenuation: false, depthTest: false }));
+    this.collapsed.name = 'collapsed-panel';
+    this.collapsed.renderOrder = 9;
     this.spikes.renderOrder = 10;
     this.flipped.renderOrder = 10;
     this.acute.renderOrder = 9;
-    this.group.add(this.farthest, this.sharpest, this.acute, this.spikes, this.flipped);
+    this.group.add(this.collapsed, this.farthest, this.sharpest, this.acute, this.spikes, this.flipped);
   }
 
-  // farthest, sharpest: the report's points (mesh coordinates), or null.
-  set(problems: Problems | null, farthest: Point | null, sharpest: Point | null, origin: THREE.Vector3): void {
+  set(problems: Problems | null, points: MarkedPoints, origin: THREE.Vector3): void {
     for (const [layer, point] of [
-      [this.farthest, farthest],
-      [this.sharpest, sharpest],
+      [this.farthest, points.farthest],
+      [this.sharpest, points.sharpest],
+      [this.collapsed, points.collapsed],
     ] as const) {
       layer.geometry.dispose();
       layer.geometry = shiftedPoints(point ?? [], origin);

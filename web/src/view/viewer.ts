@@ -4,6 +4,7 @@
 import * as THREE from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import type { SpreadNodes } from '@flatfacet/wasm';
+import { collapsedPanel, panelCentre } from '../collapsedPanel.ts';
 import { farthestPoint } from '../farthest.ts';
 import { sharpestCornerPoint } from '../sharpestCorner.ts';
 import type { SolveResult } from '../protocol.ts';
@@ -187,10 +188,14 @@ export class Viewer {
   setResult(result: SolveResult | null): void {
     this.result = result;
     this.panels.set(result, this.origin, this.toggles.beforeFix, this.toggles.deviation);
+    const collapsed = result ? collapsedPanel(result.report) : null;
     this.problems.set(
       result?.problems ?? null,
-      result ? farthestPoint(result.report) : null,
-      result ? sharpestCornerPoint(result.report) : null,
+      {
+        farthest: result ? farthestPoint(result.report) : null,
+        sharpest: result ? sharpestCornerPoint(result.report) : null,
+        collapsed: result && collapsed !== null ? panelCentre(result, collapsed) : null,
+      },
       this.origin,
     );
     this.container.dataset.acuteCorners = String(this.problems.acuteCorners);

@@ -1,0 +1,58 @@
+// A collapsed panel (coverage.ts: below a tenth of its own triangles' area) is often too small
+// to see, let alone to click. So it is marked in the view at its centre, with a legend line
+// whose button selects it for the panel edits: merging it away is then "Merge with
+// neighbour" and a click on any panel beside it.
+import type { QualityReport, SolveResult } from './protocol.ts';
+
+// The panel to mark (a panel mesh id: the report's smallest coverage), or null when no panel
+// has collapsed.
+export function collapsedPanel(report: QualityReport): number | null {
+  const collapsed = report.collapsed_panels;
+  const panel = report.min_panel_coverage_panel;
+  if (typeof collapsed !== 'number' || !(collapsed > 0)) return null;
+  return typeof panel === 'number' && Number.isInteger(panel) && panel >= 0 ? panel : null;
+}
+
+// The legend line, or null without a collapsed panel. More than one: the worst is marked.
+export function collapsedNote(report: QualityReport): string | null {
+  const panel = collapsedPanel(report);
+  const coverage = report.min_panel_coverage;
+  if (panel === null || typeof coverage !== 'number' || !Number.isFinite(coverage)) return null;
+  const collapsed = report.collapsed_panels as number;
+  const others = collapsed > 1 ? ` (${collapsed} collapsed, the worst marked)` : '';
+  return `Collapsed panel P${panel + 1}: covers ${Math.round(coverage * 100)} % of its triangles${others}`;
+}
+
+// The mean of a panel's corners (mesh coordinates), or null for no such panel.
+export function panelCentre(result: Pick<SolveResult, 'panelPositions' | 'panelOffsets' | 'panelIndices'>, panel: number): [number, number, number] | null {
+  if (!(panel >= 0 && panel + 1 < result.panelOffsets.length)) return null;
+  const begin = result.panelOffsets[panel]!;
+  const end = result.panelOffsets[panel + 1]!;
+  if (end <= begin) return null;
+  const sum = [0, 0, 0];
+  for (let i = begin; i < end; i++)
+    for (let k = 0; k < 3; k++) sum[k]! += result.panelPositions[result.panelIndices[i]! * 3 + k]!;
+  const centre: [number, number, number] = [sum[0]! / (end - begin), sum[1]! / (end - begin), sum[2]! / (end - begin)];
+  return centre.every(Number.isFinite) ? centre : null;
+}
+
+// A triangle of the loaded mesh inside the panel (how the page selects a panel:
+// panelSelection.ts), or null when none is.
+export function faceOfPanel(facePanels: Int32Array, panel: number): number | null {
+  const face = facePanels.indexOf(panel);
+  return face >= 0 ? face : null;
+}
+
+// #collapsed-legend and its button for the result on show (hidden without a collapsed panel).
+export function renderCollapsedPanel(result: SolveResult | null): void {
+  const legend = document.getElementById('collapsed-legend');
+  const text = document.getElementById('collapsed-legend-text');
+  const button = document.getElementById('collapsed-select');
+  if (!legend || !text || !button) return;
+  const note = result ? collapsedNote(result.report) : null;
+  const panel = result ? collapsedPanel(result.report) : null;
+  legend.hidden = note === null;
+  text.textContent = note ?? '';
+  button.textContent = panel === null ? 'Select' : `Select P${panel + 1}`;
+  button.hidden = panel === null || faceOfPanel(result!.facePanels, panel) === null;
+}
