@@ -238,11 +238,10 @@ void Remesher::panel_round() {
   if (last) {
     if (!best_ || invalid <= best_->num_invalid()) std::swap(best_, attempt);
     keep_alternate(std::move(attempt));
-    if (best_->num_invalid() > 0 && coverage_.fallback) {  // valid, with collapsed panels
-      best_ = std::move(coverage_.fallback);
-      alternates_.clear();
-    }
-    finish_panels();
+    if (best_->num_invalid() > 0 && coverage_.fallback)  // valid, with collapsed panels
+      finish_with_fallback();
+    else
+      finish_panels();
     return;
   }
   fix_panels(*attempt);
@@ -258,19 +257,23 @@ void Remesher::panel_round() {
 // end) when nothing collapsed, with locked panels (their clusters stay where they are) or
 // after the designer's edits (a cluster they split off stays where they asked for it).
 bool Remesher::coverage_round(std::unique_ptr<PanelAttempt>& attempt) {
-  const int collapsed = attempt->layout().num_collapsed();
+  const int collapsed = attempt->layout().faults().collapsed;
   if (collapsed == 0 || !locks_.empty() || next_edit_ > 0) return false;
   if (!coverage_.fallback) coverage_.first_round = panel_rounds_done_;
-  const bool fewer = !coverage_.fallback || collapsed < coverage_.fallback->layout().num_collapsed();
+  const bool fewer = !coverage_.fallback || collapsed < coverage_.fallback->layout().faults().collapsed;
   const bool more = panel_rounds_done_ < std::max(1, params_.panel_rounds) &&
                     panel_rounds_done_ - coverage_.first_round < kCoverageRounds;
   if (more) fix_panels(*attempt, /*coverage=*/true);
   if (fewer) coverage_.fallback = std::move(attempt);
   if (more) return true;
+  finish_with_fallback();
+  return true;
+}
+
+void Remesher::finish_with_fallback() {
   best_ = std::move(coverage_.fallback);
   alternates_.clear();
   finish_panels();
-  return true;
 }
 
 // Attempts that did not become the best but came close, for mend_best(): the last fixes

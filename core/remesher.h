@@ -177,6 +177,8 @@ class Remesher {
   bool coverage_round(std::unique_ptr<PanelAttempt>& attempt);  // true: the round is done
   void optimize_planes();
   void finish_panels();
+  // finish_panels with the coverage rounds' fallback (valid, fewest collapsed) as the best.
+  void finish_with_fallback();
   void end_panels();  // the panel phase's result: the best attempt's panels, then Optimize or Done
   // At the end of a panel phase: keeps the better of this solve and the earlier ones, and
   // starts a retry from a new seeding when panels are invalid and retries are left (true).

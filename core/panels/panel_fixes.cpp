@@ -138,10 +138,14 @@ int PanelLayout::invalid_among(const std::vector<int>& clusters) const {
   return invalid;
 }
 
-int PanelLayout::collapsed_among(const std::vector<int>& clusters) const {
-  int collapsed = 0;
-  for (int c : clusters) collapsed += issues_[static_cast<size_t>(c)].collapsed ? 1 : 0;
-  return collapsed;
+PanelLayout::Faults PanelLayout::faults_among(const std::vector<int>& clusters) const {
+  Faults faults;
+  for (int c : clusters) {
+    const PanelIssues& i = issues_[static_cast<size_t>(c)];
+    faults.invalid += i.valid() ? 0 : 1;
+    faults.collapsed += i.collapsed ? 1 : 0;
+  }
+  return faults;
 }
 
 void PanelLayout::set_master_plane(int m, const Plane& plane, const std::vector<int>& groups,
@@ -211,8 +215,7 @@ int PanelLayout::try_planes(const std::vector<Plane>& candidates, int passes) {
         for (int c : clusters) moved = moved || changed_at[static_cast<size_t>(c)] > refused_at[m];
         if (!moved) continue;
       }
-      const int before = invalid_among(clusters);
-      const int collapsed_before = collapsed_among(clusters);
+      const Faults before = faults_among(clusters);
       // The panels as they are, to put back if the plane is refused (swapped, not copied: the
       // vectors' memory is reused by the rebuild).
       if (saved_polygons.size() < clusters.size()) saved_polygons.resize(clusters.size());
@@ -226,13 +229,13 @@ int PanelLayout::try_planes(const std::vector<Plane>& candidates, int passes) {
       // Built one by one, refused as soon as more are invalid than before (the rest would
       // only add to that); a refused trial is undone below either way.
       int after = 0;
-      for (size_t i = 0; i < clusters.size() && after <= before; ++i) {
+      for (size_t i = 0; i < clusters.size() && after <= before.invalid; ++i) {
         build_panel(clusters[i]);
         after += issues_[static_cast<size_t>(clusters[i])].valid() ? 0 : 1;
       }
       ++clock;
       // Not at the cost of a collapsed panel (its plane fit would make a sliver of it).
-      if (after <= before && collapsed_among(clusters) <= collapsed_before) {
+      if (after <= before.invalid && faults_among(clusters).no_worse_than(before)) {
         ++kept;
         for (int c : clusters) changed_at[static_cast<size_t>(c)] = clock;
       } else {

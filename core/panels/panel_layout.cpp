@@ -121,10 +121,13 @@ int PanelLayout::num_invalid() const {
   return count;
 }
 
-int PanelLayout::num_collapsed() const {
-  int count = 0;
-  for (const PanelIssues& i : issues_) count += i.collapsed ? 1 : 0;
-  return count;
+PanelLayout::Faults PanelLayout::faults() const {
+  Faults faults;
+  for (const PanelIssues& i : issues_) {
+    faults.invalid += i.valid() ? 0 : 1;
+    faults.collapsed += i.collapsed ? 1 : 0;
+  }
+  return faults;
 }
 
 bool PanelLayout::touches_boundary(int g, int node) const {

@@ -66,7 +66,17 @@ class PanelLayout {
   int num_clusters() const { return static_cast<int>(polygons_.size()); }
   const std::vector<PanelIssues>& issues() const { return issues_; }
   int num_invalid() const;
-  int num_collapsed() const;  // valid panels that have collapsed (PanelIssues::collapsed)
+  // What a change to the planes, nodes or pairings must not make worse (beyond the paper):
+  // invalid panels, and among the valid ones collapsed panels (PanelIssues::collapsed), a
+  // sliver over its neighbours' faces that the paper's checks let through.
+  struct Faults {
+    int invalid = 0;
+    int collapsed = 0;
+    bool no_worse_than(const Faults& before) const {
+      return invalid <= before.invalid && collapsed <= before.collapsed;
+    }
+  };
+  Faults faults() const;  // over all panels
   const MasterPlanes& planes() const { return planes_; }
   const PanelPolygon& polygon(int cluster) const { return polygons_[static_cast<size_t>(cluster)]; }
   // The clusters of a node (PanelPolygon::node), sorted (kBoundary first when there).
@@ -194,9 +204,9 @@ class PanelLayout {
   std::vector<int> masters_of_node(size_t node) const;
   // The groups a master's plane places and the panels they (and its own) build, sorted.
   void master_reach(int master, std::vector<int>& groups, std::vector<int>& clusters) const;
-  // How many of these clusters' panels are invalid; collapsed (PanelIssues::collapsed).
+  // How many of these clusters' panels are invalid; their Faults.
   int invalid_among(const std::vector<int>& clusters) const;
-  int collapsed_among(const std::vector<int>& clusters) const;
+  Faults faults_among(const std::vector<int>& clusters) const;
   // Master m gets `plane`: its groups' nodes placed again, its reach's panels rebuilt
   // (groups, clusters: from master_reach).
   void set_master_plane(int m, const Plane& plane, const std::vector<int>& groups, const std::vector<int>& clusters);

@@ -86,7 +86,7 @@ int PanelLayout::make_single_point_nodes() {
     }
     if (!turnable) continue;
     const MasterPlanes saved = planes_;
-    const int before = num_invalid(), collapsed_before = num_collapsed();
+    const Faults before = faults();
     for (int m : masters) {
       Plane& p = planes_.planes[static_cast<size_t>(m)];
       const std::vector<Vec3>& fixed = through[static_cast<size_t>(m)];
@@ -102,7 +102,7 @@ int PanelLayout::make_single_point_nodes() {
     single_[g] = 1;
     single_point_[g] = x;
     rebuild_all();
-    if (num_invalid() > before || num_collapsed() > collapsed_before) {
+    if (!faults().no_worse_than(before)) {
       planes_ = saved;
       single_[g] = 0;
       rebuild_all();

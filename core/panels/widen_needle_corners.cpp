@@ -77,8 +77,7 @@ int PanelLayout::widen_needle_corners(double below_deg, const std::vector<char>&
     const std::vector<int> around = clusters_of_group(group);
     const double now = smallest_corner_near_group(group, around);
     if (!(now < below_deg)) continue;
-    const int invalid = invalid_among(around);
-    const int collapsed = collapsed_among(around);
+    const Faults faults = faults_among(around);
     if (pairings.size() <= static_cast<size_t>(k)) pairings.resize(static_cast<size_t>(k) + 1);
     if (pairings[static_cast<size_t>(k)].empty()) pairings[static_cast<size_t>(k)] = node_pairings(k);
     const Pairing original = pairing_[g];
@@ -90,7 +89,7 @@ int PanelLayout::widen_needle_corners(double below_deg, const std::vector<char>&
       place_group_nodes(group);
       rebuild(around);
       // A needle is better than an invalid or collapsed panel.
-      if (invalid_among(around) > invalid || collapsed_among(around) > collapsed) continue;
+      if (!faults_among(around).no_worse_than(faults)) continue;
       const double angle = smallest_corner_near_group(group, around);
       if (angle > widest + kWiderByDeg) widest = angle, best = p;
     }
@@ -114,13 +113,11 @@ int PanelLayout::widen_needle_corners(double below_deg, const std::vector<char>&
     }
     std::sort(reach.begin(), reach.end());
     reach.erase(std::unique(reach.begin(), reach.end()), reach.end());
-    const int invalid_reach = invalid_among(reach);
-    const int collapsed_reach = collapsed_among(reach);
+    const Faults faults_reach = faults_among(reach);
     const double narrowest = smallest_corner(reach);
     std::vector<Plane> old;
     if (!make_group_single(group, old)) continue;
-    if (invalid_among(reach) <= invalid_reach && collapsed_among(reach) <= collapsed_reach &&
-        smallest_corner(reach) >= narrowest - kWiderByDeg &&
+    if (faults_among(reach).no_worse_than(faults_reach) && smallest_corner(reach) >= narrowest - kWiderByDeg &&
         smallest_corner_near_group(group, around) > widest + kWiderByDeg) {
       ++changes;
     } else {
