@@ -22,9 +22,10 @@ namespace {
 
 // Another pairing must widen the smallest corner by this much (degrees) to be taken. Often the
 // smallest corner is one no pairing moves (at a vertex next to the group, its node moving
-// along the edge's line), and then the pairings tie to the last bits, which differ between
-// builds (native SSE sums, wasm without SIMD): without a margin hyperboloid_s4.off at 500
-// panels, seed 5 had different panels in the CLI and on the page.
+// along the edge's line), and then the pairings tie to the last bits, which can differ between
+// builds (the corner angle is glibc's or musl's atan2; until the core stopped using Eigen's
+// SSE2 sums, core/CMakeLists.txt, its arithmetic did too): without a margin
+// hyperboloid_s4.off at 500 panels, seed 5 had different panels in the CLI and on the page.
 constexpr double kWiderByDeg = 0.01;
 
 }  // namespace

@@ -146,7 +146,8 @@ TEST(PolishBest, CowAt56PanelsSeed1EveryClusterGetsItsPanel) {
 }
 
 // The polish is resumable: each step() mends one attempt, so the worker answers a cancel
-// within one panel round's time. On cow.off at 56 panels, seed 1, it runs 10 steps;
+// within one panel round's time. On cow.off at 56 panels, seed 1, it runs 10 steps (the
+// bounds below leave room: the draws are chaotic);
 // through them the progress stays the panel stage's (its round count, at most `of`) and its
 // invalid count (the best's) never goes up; the result is the one
 // CowAt56PanelsSeed1EveryClusterGetsItsPanel checks.
@@ -171,7 +172,7 @@ TEST(PolishBest, OneAttemptPerStep) {
     last_invalid = progress.invalid_panels;
   }
   RecordProperty("polish_steps", polish);
-  EXPECT_GE(polish, 3);
+  EXPECT_GE(polish, 3);  // more than one pass
   EXPECT_LE(polish, 18);
   r.run();
   EXPECT_EQ(r.panels().num_panels(), 56);

@@ -363,9 +363,7 @@ export class App {
     const result = this.machine.solving ? null : (this.machine.solved?.result ?? null);
     const panel = result ? collapsedPanel(result.report) : null;
     const face = result && panel !== null ? faceOfPanel(result.facePanels, panel) : null;
-    if (face === null) return;
-    this.selection.select(face);
-    element('merge-panel', HTMLButtonElement).focus();
+    if (face !== null && this.editor.selectPanelFace(face)) element('merge-panel', HTMLButtonElement).focus();
   }
 
   private exportFile(kind: 'obj'): void {
@@ -394,7 +392,7 @@ export class App {
     this.cancelButton.disabled = !solving;
     this.exportObjButton.disabled = !this.machine.canExport;
     this.shareButton.disabled = !this.machine.canShare;
-    this.collapsedSelectButton.disabled = solving;
+    this.collapsedSelectButton.disabled = solving || !this.machine.canRemesh;
     document.body.dataset.solving = String(solving);
     const opening = this.machine.opening;
     document.body.dataset.opening = opening === null ? 'false' : opening.job === null ? 'reading' : 'loading';

@@ -37,7 +37,9 @@ export function panelCentre(result: Pick<SolveResult, 'panelPositions' | 'panelO
 }
 
 // A triangle of the loaded mesh inside the panel (how the page selects a panel:
-// panelSelection.ts), or null when none is.
+// panelSelection.ts), or null when none is: in glass mode the report names a panel's first
+// piece, and a triangle goes to the piece over its centroid, so that piece may have none
+// (the legend line then names the panel without a Select button).
 export function faceOfPanel(facePanels: Int32Array, panel: number): number | null {
   const face = facePanels.indexOf(panel);
   return face >= 0 ? face : null;

@@ -121,6 +121,11 @@ export class DesignEditor {
     this.surfaceChanged();
   }
 
+  // The panel of a mesh triangle selected for the panel edits (EditPanel.selectFace).
+  selectPanelFace(face: number): boolean {
+    return this.panelEdits.selectFace(face);
+  }
+
   // The mesh was prepared again (undo or redo across a re-preparation): the history stays.
   surfaceChanged(): void {
     this.density.surfaceChanged();

@@ -61,6 +61,16 @@ export class EditPanel {
     });
   }
 
+  // Selects the panel of this triangle as a click on it in the view would (the collapsed
+  // panel's legend button: a sliver is too small to click). False when no edit can be made now.
+  selectFace(face: number): boolean {
+    if (!this.host.result() || !this.host.canEdit() || this.host.painting()) return false;
+    this.merging = false;
+    this.host.selection.select(face);
+    this.show();
+    return true;
+  }
+
   // A new surface: nothing selected, picking rebuilt on first use.
   surfaceChanged(): void {
     this.bvh = null;
