@@ -1,12 +1,14 @@
 // hausdorff_where: where is the two-sided Hausdorff distance of our panels attained? For one
-// bench_remesh case (same read + clean, default RemeshParams with the case's panel count),
+// bench_remesh case (same read + clean, default RemeshParams with the case's panel count and
+// the seed, 1 unless --seed),
 // prints both directed maxima with the worst sample, the panel nearest to it, that panel's
 // shape (vertex count, diameter, boundary vertices, plane count of its vertices) and how far
 // the sample is from the input's boundary, plus the top few panels by their own worst
 // distance. A diagnostic for issue 3, not part of the table.
 //
-//   hausdorff_where [--meshes DIR] [--top K] CASE...     (CASE as in bench_remesh --cases)
+//   hausdorff_where [--meshes DIR] [--top K] [--seed S] CASE...  (CASE as in bench_remesh --cases)
 #include <algorithm>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
@@ -89,7 +91,7 @@ void describe_panel(const ff::PanelMesh& pm, int p, double diag) {
               worst_ref / diag, pm.spike_distance / diag, pm.issues[size_t(p)].valid() ? 1 : 0);
 }
 
-void run_case(const std::string& name, const std::string& meshes, int top) {
+void run_case(const std::string& name, const std::string& meshes, int top, std::uint64_t seed) {
   ff::bench::RemeshCase c;
   if (!ff::bench::parse_remesh_case(name, c)) {
     std::fprintf(stderr, "unknown case %s\n", name.c_str());
@@ -98,6 +100,7 @@ void run_case(const std::string& name, const std::string& meshes, int top) {
   ff::TriMesh input = ff::bench::load_remesh_case(c, meshes);
   ff::RemeshParams params;
   params.panels = c.panels;
+  params.seed = seed;
   ff::Remesher remesher(input, params);
   remesher.run();
   const ff::PanelMesh& pm = remesher.panels();
@@ -161,6 +164,7 @@ int main(int argc, char** argv) {
   std::string meshes = FF_DEFAULT_SHARED_MESHES;
   if (const char* env = std::getenv("FF_SHARED_MESHES")) meshes = env;
   int top = 5;
+  std::uint64_t seed = 1;
   std::vector<std::string> cases;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -168,13 +172,15 @@ int main(int argc, char** argv) {
       meshes = argv[++i];
     } else if (a == "--top" && i + 1 < argc) {
       top = std::atoi(argv[++i]);
+    } else if (a == "--seed" && i + 1 < argc) {
+      seed = std::strtoull(argv[++i], nullptr, 10);
     } else {
       cases.push_back(a);
     }
   }
   if (cases.empty()) cases.push_back("hyperboloid");
   try {
-    for (const std::string& c : cases) run_case(c, meshes, top);
+    for (const std::string& c : cases) run_case(c, meshes, top, seed);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "hausdorff_where: %s\n", e.what());
     return 1;
