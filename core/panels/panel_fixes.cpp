@@ -132,11 +132,7 @@ void PanelLayout::master_reach(int master, std::vector<int>& groups, std::vector
   clusters.erase(std::unique(clusters.begin(), clusters.end()), clusters.end());
 }
 
-int PanelLayout::invalid_among(const std::vector<int>& clusters) const {
-  int invalid = 0;
-  for (int c : clusters) invalid += issues_[static_cast<size_t>(c)].valid() ? 0 : 1;
-  return invalid;
-}
+int PanelLayout::invalid_among(const std::vector<int>& clusters) const { return faults_among(clusters).invalid; }
 
 PanelLayout::Faults PanelLayout::faults_among(const std::vector<int>& clusters) const {
   Faults faults;

@@ -115,11 +115,7 @@ std::array<int, 3> PanelLayout::node_clusters(int node) const {
   return out;
 }
 
-int PanelLayout::num_invalid() const {
-  int count = 0;
-  for (const PanelIssues& i : issues_) count += i.valid() ? 0 : 1;
-  return count;
-}
+int PanelLayout::num_invalid() const { return faults().invalid; }
 
 PanelLayout::Faults PanelLayout::faults() const {
   Faults faults;
