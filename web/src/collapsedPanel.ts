@@ -2,6 +2,7 @@
 // to see, let alone to click. So it is marked in the view at its centre, with a legend line
 // whose button selects it for the panel edits: merging it away is then "Merge with
 // neighbour" and a click on any panel beside it.
+import { showLegendLine } from './dom.ts';
 import type { QualityReport, SolveResult } from './protocol.ts';
 
 // The panel to mark (a panel mesh id: the report's smallest coverage), or null when no panel
@@ -47,14 +48,9 @@ export function faceOfPanel(facePanels: Int32Array, panel: number): number | nul
 
 // #collapsed-legend and its button for the result on show (hidden without a collapsed panel).
 export function renderCollapsedPanel(result: SolveResult | null): void {
-  const legend = document.getElementById('collapsed-legend');
-  const text = document.getElementById('collapsed-legend-text');
   const button = document.getElementById('collapsed-select');
-  if (!legend || !text || !button) return;
-  const note = result ? collapsedNote(result.report) : null;
+  if (!showLegendLine('collapsed', result ? collapsedNote(result.report) : null) || !button) return;
   const panel = result ? collapsedPanel(result.report) : null;
-  legend.hidden = note === null;
-  text.textContent = note ?? '';
   button.textContent = panel === null ? 'Select' : `Select P${panel + 1}`;
   button.hidden = panel === null || faceOfPanel(result!.facePanels, panel) === null;
 }

@@ -2,6 +2,7 @@
 // panel covers (report min_panel_coverage). Below a tenth a panel has collapsed to a sliver
 // whose triangles lie under its neighbours: valid by the paper's checks, but no part to cut,
 // so the row warns and names it (the parts list's label), for the designer to merge it away.
+import { collapsedPanel } from './collapsedPanel.ts';
 import type { QualityReport } from './protocol.ts';
 import type { StatRow } from './statsList.ts';
 
@@ -10,11 +11,12 @@ export function coverageRow(report: QualityReport): StatRow | null {
   const panel = report.min_panel_coverage_panel;
   if (typeof coverage !== 'number' || !Number.isFinite(coverage)) return null;
   if (typeof panel !== 'number' || !Number.isInteger(panel) || panel < 0) return null;
-  const collapsed = typeof report.collapsed_panels === 'number' ? report.collapsed_panels : 0;
   const name = `P${panel + 1}`;
+  // The same judgement as the view's marker (collapsedPanel.ts).
+  const warn = collapsedPanel(report) !== null;
   const hint =
     `the smallest share of its own triangles' area that a panel covers (${name}); below 10 % a panel has ` +
     `collapsed to a sliver over its neighbours' triangles` +
-    (collapsed > 0 ? `: ${collapsed} here. Select ${name} and merge it with a neighbour (Merge with neighbour).` : '');
-  return { label: 'Coverage', value: `${Math.round(coverage * 100)} % (${name})`, hint, warn: collapsed > 0 };
+    (warn ? `: ${report.collapsed_panels} here. Select ${name} and merge it with a neighbour (Merge with neighbour).` : '');
+  return { label: 'Coverage', value: `${Math.round(coverage * 100)} % (${name})`, hint, warn };
 }

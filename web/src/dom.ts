@@ -11,3 +11,14 @@ export function element<T extends HTMLElement>(id: string, type: new () => T): T
 export function countOutcome(name: 'solves' | 'errors' | 'saves' | 'fabrications' | 'strokes' | 'edits'): void {
   document.body.dataset[name] = String(Number(document.body.dataset[name] ?? '0') + 1);
 }
+
+// A legend line in the view (#NAME-legend with its text in #NAME-legend-text): shown with
+// `note`, hidden for null. False when the page has no such line (a page without a view).
+export function showLegendLine(name: string, note: string | null): boolean {
+  const legend = document.getElementById(`${name}-legend`);
+  const text = document.getElementById(`${name}-legend-text`);
+  if (!legend || !text) return false;
+  legend.hidden = note === null;
+  text.textContent = note ?? '';
+  return true;
+}

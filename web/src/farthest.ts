@@ -3,6 +3,7 @@
 // with a legend line that gives the distance; and the scale of the deviation view (panels
 // coloured by their own distance, SolveResult.panelDeviation).
 import type { QualityReport, SolveResult } from './protocol.ts';
+import { showLegendLine } from './dom.ts';
 import { reportPoint } from './reportPoint.ts';
 
 // The point, in mesh coordinates, when the report has a finite one.
@@ -32,12 +33,7 @@ export function deviationScaleTop(deviation: Float64Array): string {
 // The farthest point's legend line (#farthest-legend, hidden without a result or a point) and
 // the deviation legend's scale (#deviation-top) for the result on show.
 export function renderDesignDistance(result: SolveResult | null): void {
-  const legend = document.getElementById('farthest-legend');
-  const text = document.getElementById('farthest-legend-text');
   const top = document.getElementById('deviation-top');
-  if (!legend || !text || !top) return;
-  const note = result ? farthestNote(result.report) : null;
-  legend.hidden = note === null;
-  text.textContent = note ?? '';
+  if (!showLegendLine('farthest', result ? farthestNote(result.report) : null) || !top) return;
   top.textContent = result ? deviationScaleTop(result.panelDeviation) : '–';
 }

@@ -2,6 +2,7 @@
 // min_corner_angle_deg), marked where it is (min_corner_angle_point) with a legend line, so a
 // designer can find a needle a fabricator would refuse, and paint density or edit there.
 import type { QualityReport, SolveResult } from './protocol.ts';
+import { showLegendLine } from './dom.ts';
 import { reportPoint } from './reportPoint.ts';
 
 export function sharpestCornerPoint(report: QualityReport): [number, number, number] | null {
@@ -17,10 +18,5 @@ export function sharpestCornerNote(report: QualityReport): string | null {
 
 // #sharpest-legend for the result on show (hidden without one).
 export function renderSharpestCorner(result: SolveResult | null): void {
-  const legend = document.getElementById('sharpest-legend');
-  const text = document.getElementById('sharpest-legend-text');
-  if (!legend || !text) return;
-  const note = result ? sharpestCornerNote(result.report) : null;
-  legend.hidden = note === null;
-  text.textContent = note ?? '';
+  showLegendLine('sharpest', result ? sharpestCornerNote(result.report) : null);
 }
