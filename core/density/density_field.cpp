@@ -5,6 +5,7 @@
 #include <optional>
 #include <sstream>
 
+#include "core/density/border_distance.h"
 #include "core/util/error.h"
 
 namespace ff {
@@ -31,6 +32,8 @@ std::vector<double> expression_density(const TriMesh& mesh, const MeshTopology& 
   const Vec3 extent = box.hi - box.lo;
   const double diagonal = bbox_diagonal(mesh);
   const std::vector<Vec3> normals = curvature ? curvature->normal : vertex_normals(mesh, topology);
+  std::vector<double> border;
+  if (expression.uses(ExprVar::Border)) border = border_distance(mesh, topology);
   std::vector<double> out(n, 1.0);
   double lo = 0.0, hi = 0.0;
   for (size_t v = 0; v < n; ++v) {
@@ -55,6 +58,11 @@ std::vector<double> expression_density(const TriMesh& mesh, const MeshTopology& 
       set(ExprVar::H, 0.5 * (k1 + k2));
       set(ExprVar::K, k1 * k2);
       set(ExprVar::Curv, 0.5 * (std::abs(k1) + std::abs(k2)) * diagonal);
+    }
+    if (!border.empty()) {
+      // Scale-free like u v w and curv; no border to reach is as far as the model is big.
+      const double d = border[v] / diagonal;
+      set(ExprVar::Border, std::isfinite(d) ? std::min(d, 1.0e6) : 1.0);
     }
     const double value = expression.evaluate(in);
     if (!std::isfinite(value) || !(value > 0.0)) {

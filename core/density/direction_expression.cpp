@@ -82,6 +82,9 @@ DirectionExpression parse_direction_expression(std::string_view text) {
       if (what.compare(0, prefix.size(), prefix) == 0) what.erase(0, prefix.size());
       fail_component(c, what);
     }
+    // Directions are evaluated per face without the border distances (a density input).
+    if (out.components[static_cast<size_t>(c)].uses(ExprVar::Border))
+      fail_component(c, "uses border, which only density expressions have");
     terms += out.components[static_cast<size_t>(c)].num_terms();
   }
   if (terms > Expression::kMaxTerms) {

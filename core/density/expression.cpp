@@ -35,7 +35,7 @@ constexpr NameInfo kFunctions[] = {
 };
 
 constexpr const char* kVarNames[kNumExprVars] = {"x",  "y",  "z",  "u",  "v", "w", "nx",
-                                                 "ny", "nz", "k1", "k2", "H", "K", "curv"};
+                                                 "ny", "nz", "k1", "k2", "H", "K", "curv", "border"};
 
 bool is_ident_start(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; }
 bool is_digit(char c) { return c >= '0' && c <= '9'; }

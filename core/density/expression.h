@@ -22,6 +22,9 @@
 //                H K     mean (k1+k2)/2 and Gaussian k1*k2 curvature (world units)
 //                curv    (|k1|+|k2|)/2 times the bounding box diagonal: 0 where flat, ~3.5 on
 //                        a sphere, larger at tight bends; scale-free
+//                border  distance along the surface to its border (border_distance.h) over
+//                        the bounding box diagonal: 0 on the border; 1 where there is no
+//                        border to reach (a closed surface). Density expressions only
 // Limits: at most 4096 characters, 64 levels of nesting, 2000 terms. Every violation is an
 // InputError naming the problem and its column (1-based).
 #include <array>
@@ -32,7 +35,7 @@
 
 namespace ff {
 
-enum class ExprVar : std::uint8_t { X, Y, Z, U, V, W, NX, NY, NZ, K1, K2, H, K, Curv, Count };
+enum class ExprVar : std::uint8_t { X, Y, Z, U, V, W, NX, NY, NZ, K1, K2, H, K, Curv, Border, Count };
 constexpr int kNumExprVars = static_cast<int>(ExprVar::Count);
 using ExprInputs = std::array<double, kNumExprVars>;
 
@@ -82,13 +85,15 @@ struct DensityPreset {
   const char* expression;
 };
 // In display order. Two element sizes (a smooth 4:1 step across x), a gradient along x,
-// radial (dense at the centre of the plan), by curvature (dense where the surface bends).
-inline constexpr std::array<DensityPreset, 5> kDensityPresets{{
+// radial (dense at the centre of the plan), by curvature (dense where the surface bends),
+// finer at the border (4:1 at the border, half of that a twentieth of the diagonal in).
+inline constexpr std::array<DensityPreset, 6> kDensityPresets{{
     {"uniform", "Uniform", "1"},
     {"twoSizes", "Two element sizes", "1 + 3 * smoothstep(0.45, 0.55, u)"},
     {"gradient", "Gradient", "1 + 3 * u"},
     {"radial", "Radial", "1 + 3 * exp(-8 * ((u - 0.5)^2 + (v - 0.5)^2))"},
     {"curvature", "By curvature", "1 + 2 * min(curv, 4)"},
+    {"border", "Finer at the border", "1 + 3 * exp(-border / 0.05)"},
 }};
 
 }  // namespace ff

@@ -158,3 +158,31 @@ test('density presets fill the expression, undo takes it back without a solve, a
     await screenshot(page, 'density-expression');
   });
 });
+
+// Mean area of the panels on the border (a polygon edge no other panel shares) and of the rest.
+function borderAndInnerAreas(text) {
+  const { faces } = parseObj(text);
+  const uses = new Map();
+  const key = (a, b) => (a < b ? `${a},${b}` : `${b},${a}`);
+  for (const face of faces) face.forEach((v, i) => uses.set(key(v, face[(i + 1) % face.length]), (uses.get(key(v, face[(i + 1) % face.length])) ?? 0) + 1));
+  const areas = panelsOf(text).map((p) => p.area);
+  const border = [], inner = [];
+  faces.forEach((face, f) => (face.some((v, i) => uses.get(key(v, face[(i + 1) % face.length])) === 1) ? border : inner).push(areas[f]));
+  const mean = (list) => list.reduce((s, a) => s + a, 0) / list.length;
+  return { border: mean(border), inner: mean(inner), counts: [border.length, inner.length] };
+}
+
+test('the "Finer at the border" preset makes the panels along the edge smaller', async () => {
+  await suite.withPage(saddleLink(), async (page) => {
+    assert.equal(await waitForDone(page), PANELS);
+    const uniform = borderAndInnerAreas(await objOf(page));
+    await page.getByLabel('Density preset').selectOption({ label: 'Finer at the border' });
+    assert.equal(await page.getByLabel('Density expression').inputValue(), '1 + 3 * exp(-border / 0.05)');
+    assert.equal(await solveAfter(page, () => remesh(page), 60_000), PANELS);
+    const finer = borderAndInnerAreas(await objOf(page));
+    const ratio = finer.border / finer.inner;
+    console.log(`finer at the border: border / inner panel area ${(uniform.border / uniform.inner).toFixed(3)} uniform -> ${ratio.toFixed(3)} (${finer.counts[0]} border, ${finer.counts[1]} inner panels)`);
+    assert.ok(ratio < 0.7 * (uniform.border / uniform.inner), `border / inner panel area ${ratio.toFixed(2)} against ${(uniform.border / uniform.inner).toFixed(2)} uniform (${finer.counts})`);
+    await screenshot(page, 'saddle-60-finer-at-the-border');
+  });
+});

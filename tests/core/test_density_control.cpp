@@ -95,6 +95,34 @@ TEST(DensityControl, FourToOneSplitGivesQuarterSizePanels) {
   EXPECT_EQ(t.clustering().labels, r.clustering().labels);
 }
 
+TEST(DensityControl, FinerAtTheBorderPresetGivesSmallerPanelsAlongTheEdge) {
+  // The "Finer at the border" preset on a unit square: panels along the edge (centroid within
+  // 0.1 of it) against those in the middle (over 0.25 from it).
+  const TriMesh mesh = make_plane(120, 120, 1.0, 1.0);
+  RemeshParams p;
+  p.panels = 100;
+  p.density_expression = kDensityPresets.back().expression;
+  ASSERT_STREQ(kDensityPresets.back().name, "border");
+  p.make_panels = false;
+  Remesher r(mesh, p);
+  r.run();
+  double area[2] = {0, 0};
+  int count[2] = {0, 0};
+  for (const ClusterShape& s : cluster_shapes(mesh, r.clustering().labels, r.clustering().num_clusters())) {
+    const Vec3& c = s.centroid;
+    const double border = std::min({c.x(), 1.0 - c.x(), c.y(), 1.0 - c.y()});
+    if (border > 0.1 && border < 0.25) continue;
+    area[border <= 0.1 ? 0 : 1] += s.area;
+    ++count[border <= 0.1 ? 0 : 1];
+  }
+  ASSERT_GT(count[0], 0);
+  ASSERT_GT(count[1], 0);
+  const double ratio = (area[0] / count[0]) / (area[1] / count[1]);
+  std::printf("[ density ] finer at the border: mean panel area edge / middle = %.3f (%d, %d panels)\n", ratio,
+              count[0], count[1]);
+  EXPECT_LE(ratio, 0.6);
+}
+
 TEST(DensityControl, StretchAlongXElongatesPanelsAlongX) {
   const TriMesh mesh = make_plane(150, 150, 1.0, 1.0);
   RemeshParams p;

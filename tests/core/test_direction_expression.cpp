@@ -166,6 +166,7 @@ TEST(DirectionExpression, HostileOrBrokenExpressionsAreRefused) {
   has("x, y\x01, z", "component 2 (y) has a control character at column 5");
   has("x, \xc3\xa9, z", "component 2 (y) has a non-ASCII character at column 4");
   has("x, y, z = 1", "component 3 (z) has '=' at column 9");
+  has("x, border, 0", "component 2 (y) uses border, which only density expressions have");
   has(std::string(Expression::kMaxLength + 1, ' '), "too long (4097 characters; at most 4096)");
   std::string deep = "x, y, ";
   for (int i = 0; i < Expression::kMaxDepth + 5; ++i) deep += "(";

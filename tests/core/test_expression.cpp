@@ -89,6 +89,7 @@ TEST(Expression, PresetsParseAndArePositive) {
     for (double t : {0.0, 0.3, 0.5, 1.0}) {
       in[static_cast<size_t>(ExprVar::U)] = in[static_cast<size_t>(ExprVar::V)] = t;
       in[static_cast<size_t>(ExprVar::Curv)] = 10 * t;
+      in[static_cast<size_t>(ExprVar::Border)] = t;
       EXPECT_GE(e.evaluate(in), 1.0) << p.name;
     }
   }

@@ -92,18 +92,20 @@ export const LIMITS = {
 // The names an expression may use (core/density/expression.h); anything else is refused on
 // the page already, so a link cannot smuggle in text the core would only reject later.
 const EXPRESSION_NAMES = new Set([
-  'x', 'y', 'z', 'u', 'v', 'w', 'nx', 'ny', 'nz', 'k1', 'k2', 'H', 'K', 'curv', 'pi', 'e',
+  'x', 'y', 'z', 'u', 'v', 'w', 'nx', 'ny', 'nz', 'k1', 'k2', 'H', 'K', 'curv', 'border', 'pi', 'e',
   'sin', 'cos', 'tan', 'asin', 'acos', 'atan', 'atan2', 'sqrt', 'exp', 'log', 'log10', 'abs', 'sign', 'floor', 'ceil',
   'round', 'pow', 'min', 'max', 'clamp', 'smoothstep', 'step', 'mix', 'mod', 'if',
 ]);
 
 // Starting points for the expression (the core's kDensityPresets): scale-free, written with
-// u v w (0..1 across the bounding box) and curv (curvature times the bounding box diagonal).
+// u v w (0..1 across the bounding box), curv (curvature times the bounding box diagonal) and
+// border (distance to the surface's border over the diagonal).
 export const DENSITY_PRESETS: readonly { id: string; label: string; expression: string }[] = [
   { id: 'twoSizes', label: 'Two element sizes', expression: '1 + 3 * smoothstep(0.45, 0.55, u)' },
   { id: 'gradient', label: 'Gradient', expression: '1 + 3 * u' },
   { id: 'radial', label: 'Radial', expression: '1 + 3 * exp(-8 * ((u - 0.5)^2 + (v - 0.5)^2))' },
   { id: 'curvature', label: 'By curvature', expression: '1 + 2 * min(curv, 4)' },
+  { id: 'border', label: 'Finer at the border', expression: '1 + 3 * exp(-border / 0.05)' },
 ];
 
 // Starting points for the direction expression, scale-free like the density presets: around
