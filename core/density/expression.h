@@ -22,9 +22,10 @@
 //                H K     mean (k1+k2)/2 and Gaussian k1*k2 curvature (world units)
 //                curv    (|k1|+|k2|)/2 times the bounding box diagonal: 0 where flat, ~3.5 on
 //                        a sphere, larger at tight bends; scale-free
-//                border  distance along the surface to its border (border_distance.h) over
-//                        the bounding box diagonal: 0 on the border; 1 where there is no
-//                        border to reach (a closed surface). Density expressions only
+//                border  straight distance to the nearest boundary edge, found over the
+//                        surface (border_distance.h), over the bounding box diagonal: 0 on
+//                        the border; 1 where there is no border to reach (a closed surface).
+//                        Density expressions only
 // Limits: at most 4096 characters, 64 levels of nesting, 2000 terms. Every violation is an
 // InputError naming the problem and its column (1-based).
 #include <array>
@@ -86,7 +87,7 @@ struct DensityPreset {
 };
 // In display order. Two element sizes (a smooth 4:1 step across x), a gradient along x,
 // radial (dense at the centre of the plan), by curvature (dense where the surface bends),
-// finer at the border (4:1 at the border, half of that a twentieth of the diagonal in).
+// finer at the border (4 on the border, about 2 a twentieth of the diagonal in, 1 inside).
 inline constexpr std::array<DensityPreset, 6> kDensityPresets{{
     {"uniform", "Uniform", "1"},
     {"twoSizes", "Two element sizes", "1 + 3 * smoothstep(0.45, 0.55, u)"},
