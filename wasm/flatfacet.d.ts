@@ -55,7 +55,7 @@ export interface RemeshParams {
   singlePointNodes?: boolean; // default false
   optimizePlanes?: boolean; // default true
   // Procedural density (core/density/expression.h): variables x y z, u v w, nx ny nz, k1 k2 H K
-  // curv; higher = smaller panels. Multiplies a painted field (setDensity).
+  // curv, border; higher = smaller panels. Multiplies a painted field (setDensity).
   densityExpression?: string;
   // Panels stretched along a direction (stretch 1..10). 'expression': a procedural direction
   // per face, `expression` = three expressions of the density language "ex, ey, ez"

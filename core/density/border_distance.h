@@ -8,8 +8,10 @@
 // vertex's distance is to a segment of the border, not a sum of edge lengths (those
 // overestimate by up to 41% across a grid's diagonals), and a surface that folds back on
 // itself is not short-cut: a vertex only gets a border the front reached along the surface.
-// On the shapes tested it is the straight distance to the nearest boundary edge to rounding.
-// O(V log V) plus the walks along the border (a few edges each).
+// Never below the straight distance to the nearest boundary edge (it is a distance to one),
+// and on the shapes tested equal to it to rounding; above it only where the vertices nearest
+// to one edge form a strip narrower than the mesh's edges. About O(V log V): a vertex may be
+// lowered a few times, and each visit walks a few border edges.
 #include <vector>
 
 #include "core/mesh/topology.h"

@@ -60,9 +60,11 @@ std::vector<double> expression_density(const TriMesh& mesh, const MeshTopology& 
       set(ExprVar::Curv, 0.5 * (std::abs(k1) + std::abs(k2)) * diagonal);
     }
     if (!border.empty()) {
-      // Scale-free like u v w and curv; no border to reach is as far as the model is big.
+      // Scale-free like u v w and curv, and at most 1 (a straight distance inside the box);
+      // no border to reach is as far as the model is big (also a zero diagonal, which the
+      // solve refuses as a surface of zero area).
       const double d = border[v] / diagonal;
-      set(ExprVar::Border, std::isfinite(d) ? std::min(d, 1.0e6) : 1.0);
+      set(ExprVar::Border, std::isfinite(d) ? d : 1.0);
     }
     const double value = expression.evaluate(in);
     if (!std::isfinite(value) || !(value > 0.0)) {

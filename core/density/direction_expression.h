@@ -2,7 +2,8 @@
 // A procedural anisotropy direction (paper fig. 12, issue 6): three expressions of the density
 // language (expression.h), "ex, ey, ez", giving a world vector per face, e.g. "-y, x, 0" (a
 // vortex around the z axis), "nz, 0, -nx" or "if(z > 1, 1, 0), 0, 1". The components are the
-// expression language's own, so the same safety limits hold: the whole text at most
+// expression language's own (all its variables but border, which needs the border distances
+// only the density field computes), so the same safety limits hold: the whole text at most
 // Expression::kMaxLength characters, each component at most Expression::kMaxDepth levels
 // deep, the three together at most Expression::kMaxTerms terms.
 #include <array>

@@ -38,6 +38,21 @@ TEST(BorderDistance, ClosedSurfacesHaveNoBorderToReach) {
   for (double x : density) EXPECT_EQ(x, 2.0);
 }
 
+TEST(BorderDistance, AClosedPartStaysUnreachedBesideAnOpenOne) {
+  TriMesh mesh = make_plane(10, 10, 1.0, 1.0);
+  const int offset = static_cast<int>(mesh.positions.size());
+  const TriMesh torus = make_torus(600);
+  for (const Vec3& p : torus.positions) mesh.positions.push_back(p + Vec3(30.0, 0.0, 0.0));
+  for (const Triangle& t : torus.triangles) mesh.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  const std::vector<double> d = border_distance(mesh, build_topology(mesh));
+  for (size_t v = 0; v < d.size(); ++v) {
+    if (static_cast<int>(v) < offset)
+      EXPECT_TRUE(std::isfinite(d[v]) && d[v] <= 0.5) << v;
+    else
+      EXPECT_EQ(d[v], std::numeric_limits<double>::infinity()) << v;
+  }
+}
+
 TEST(BorderDistance, AnOpeningIsBorderTooAndDistancesAreConsistent) {
   const TriMesh roof = make_roof_with_hole(4000);
   const MeshTopology topology = build_topology(roof);

@@ -151,11 +151,11 @@ test('dabs along a path: evenly spaced, the remainder carried to the next segmen
 
 test('density expressions: presets and formulas pass, anything else is refused with a reason', () => {
   for (const preset of DENSITY_PRESETS) assert.ok(checkExpression(preset.expression).ok, preset.expression);
-  for (const good of ['', '1', '1 + 3*u', '2.5e-3 * x + .5', 'if(u < 0.5, 1, 4)', 'max(1, min(curv, 4)) ^ 2', 'clamp(abs(nz), 0.1, 1) * pi / e', 'u >= 0.5 && v != 1 ? 2 : 1']) {
+  for (const good of ['', '1', '1 + 3*u', '1 + 3 * exp(-border / 0.05)', '2.5e-3 * x + .5', 'if(u < 0.5, 1, 4)', 'max(1, min(curv, 4)) ^ 2', 'clamp(abs(nz), 0.1, 1) * pi / e', 'u >= 0.5 && v != 1 ? 2 : 1']) {
     assert.ok(checkExpression(good).ok, good);
   }
   const bad = [
-    ['alert(1)', /unknown name "alert"/],
+    ['alert(1)', /unknown name "alert" \(use x y z, u v w, nx ny nz, k1 k2 H K curv, border, pi e/],
     ['u + window', /unknown name "window"/],
     ['2alert', /unknown name "alert"/],
     ['u; 1', /character .*";" at column 2/],

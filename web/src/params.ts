@@ -91,11 +91,16 @@ export const LIMITS = {
 
 // The names an expression may use (core/density/expression.h); anything else is refused on
 // the page already, so a link cannot smuggle in text the core would only reject later.
-const EXPRESSION_NAMES = new Set([
-  'x', 'y', 'z', 'u', 'v', 'w', 'nx', 'ny', 'nz', 'k1', 'k2', 'H', 'K', 'curv', 'border', 'pi', 'e',
+// `border` is a density input only (the core refuses it in a direction expression).
+const CONSTANTS_AND_FUNCTIONS = [
+  'pi', 'e',
   'sin', 'cos', 'tan', 'asin', 'acos', 'atan', 'atan2', 'sqrt', 'exp', 'log', 'log10', 'abs', 'sign', 'floor', 'ceil',
   'round', 'pow', 'min', 'max', 'clamp', 'smoothstep', 'step', 'mix', 'mod', 'if',
-]);
+];
+const DIRECTION_VARIABLES = ['x', 'y', 'z', 'u', 'v', 'w', 'nx', 'ny', 'nz', 'k1', 'k2', 'H', 'K', 'curv'];
+const DENSITY_VARIABLES = [...DIRECTION_VARIABLES, 'border'];
+const DENSITY_NAMES = new Set([...DENSITY_VARIABLES, ...CONSTANTS_AND_FUNCTIONS]);
+const DIRECTION_NAMES = new Set([...DIRECTION_VARIABLES, ...CONSTANTS_AND_FUNCTIONS]);
 
 // Starting points for the expression (the core's kDensityPresets): scale-free, written with
 // u v w (0..1 across the bounding box), curv (curvature times the bounding box diagonal) and
@@ -122,7 +127,7 @@ const PAINT_KEY = /^[0-9a-f]{16}$/;
 // A density expression from the form or a link: plain ASCII of numbers, operators and the
 // known names only. The grammar itself is the core's to check (its message names the column).
 // `what` names the input in messages (the direction expression shares the checks).
-export function checkExpression(value: unknown, what = 'Density expression'): Checked<string> {
+export function checkExpression(value: unknown, what = 'Density expression', names: ReadonlySet<string> = DENSITY_NAMES): Checked<string> {
   if (typeof value !== 'string') return failure(`${what} must be text`);
   const text = value.trim();
   if (text.length > LIMITS.expressionLength.max) return failure(`${what} is longer than ${LIMITS.expressionLength.max} characters`);
@@ -139,16 +144,19 @@ export function checkExpression(value: unknown, what = 'Density expression'): Ch
       return failure(`${what} has a character it cannot use (${shown} at column ${column})`);
     }
     const name = match[2];
-    if (name !== undefined && !EXPRESSION_NAMES.has(name)) return failure(`${what} uses an unknown name "${name.slice(0, 20)}" (use x y z, u v w, nx ny nz, k1 k2 H K curv, pi e and the listed functions)`);
+    if (name !== undefined && !names.has(name)) {
+      if (DENSITY_NAMES.has(name)) return failure(`${what} uses ${name}, which only the density expression has`);
+      return failure(`${what} uses an unknown name "${name.slice(0, 20)}" (use x y z, u v w, nx ny nz, k1 k2 H K curv${names.has('border') ? ', border' : ''}, pi e and the listed functions)`);
+    }
     at = token.lastIndex;
   }
   return { ok: true, value: text };
 }
 
-// "ex, ey, ez": the density expression's token checks, then exactly three components split at
+// "ex, ey, ez": the density expression's token checks (without border), then exactly three components split at
 // the commas outside brackets (those inside separate a function's arguments), none empty.
 export function checkDirectionExpression(value: unknown): Checked<string> {
-  const checked = checkExpression(value, 'Direction expression');
+  const checked = checkExpression(value, 'Direction expression', DIRECTION_NAMES);
   if (!checked.ok) return checked;
   const text = checked.value;
   if (text === '') return failure('Direction expression is empty: write three components, e.g. -y, x, 0');
