@@ -126,6 +126,13 @@ test('expressionDensity: the expression per vertex, as the solver multiplies it 
     assert.ok(Math.abs(values[v] - (1 + 3 * u)) < 1e-5, `vertex ${v}: ${values[v]} vs ${1 + 3 * u}`);
   }
   assert.ok(s.expressionDensity('1 + 2 * min(curv, 4)').every((x) => x >= 1 && x <= 9), 'curvature expressions evaluate too');
+  // border: 0 on the saddle's edge (the largest value of the preset, 4), 1 nowhere on an open
+  // surface, so the preset stays within (1, 4].
+  const border = s.expressionDensity('1 + 3 * exp(-border / 0.05)');
+  assert.equal(border.length, info.vertices);
+  assert.ok(border.every((x) => x > 1 && x <= 4), 'the border preset within (1, 4]');
+  assert.equal(Math.max(...border), 4, 'vertices on the edge');
+  assert.ok(border.filter((x) => x === 4).length < info.vertices / 4, 'most vertices are inside');
   assert.equal(s.expressionDensity('').length, 0);
   assert.equal(s.expressionDensity('1 +').length, 0, 'a refused expression: none (the solve says why)');
   assert.equal(s.expressionDensity('u - 1').length, 0, 'values that are not > 0: none');
