@@ -94,7 +94,7 @@ inline constexpr std::array<DensityPreset, 6> kDensityPresets{{
     {"gradient", "Gradient", "1 + 3 * u"},
     {"radial", "Radial", "1 + 3 * exp(-8 * ((u - 0.5)^2 + (v - 0.5)^2))"},
     {"curvature", "By curvature", "1 + 2 * min(curv, 4)"},
-    {"border", "Finer at the border", "1 + 3 * exp(-border / 0.05)"},
+    {"border", "Finer at borders", "1 + 3 * exp(-border / 0.05)"},
 }};
 
 }  // namespace ff

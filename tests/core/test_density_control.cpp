@@ -96,7 +96,7 @@ TEST(DensityControl, FourToOneSplitGivesQuarterSizePanels) {
 }
 
 TEST(DensityControl, FinerAtTheBorderPresetGivesSmallerPanelsAlongTheEdge) {
-  // The "Finer at the border" preset on a unit square: panels along the edge (centroid within
+  // The "Finer at borders" preset on a unit square: panels along the edge (centroid within
   // 0.1 of it) against those in the middle (over 0.25 from it).
   const TriMesh mesh = make_plane(120, 120, 1.0, 1.0);
   RemeshParams p;

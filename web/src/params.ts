@@ -110,7 +110,7 @@ export const DENSITY_PRESETS: readonly { id: string; label: string; expression: 
   { id: 'gradient', label: 'Gradient', expression: '1 + 3 * u' },
   { id: 'radial', label: 'Radial', expression: '1 + 3 * exp(-8 * ((u - 0.5)^2 + (v - 0.5)^2))' },
   { id: 'curvature', label: 'By curvature', expression: '1 + 2 * min(curv, 4)' },
-  { id: 'border', label: 'Finer at the border', expression: '1 + 3 * exp(-border / 0.05)' },
+  { id: 'border', label: 'Finer at borders', expression: '1 + 3 * exp(-border / 0.05)' },
 ];
 
 // Starting points for the direction expression, scale-free like the density presets: around
