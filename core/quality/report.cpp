@@ -336,6 +336,9 @@ QualityReport measure_quality(const TriMesh& input, const MeshTopology& input_to
         r.min_panel_coverage = coverage, r.min_panel_coverage_panel = first_piece[q];
     }
     for (size_t p = 0; p < np; ++p) r.collapsed_panels += collapsed[source_of(p)];  // each glass piece
+    const size_t named = static_cast<size_t>(r.min_panel_coverage_panel);
+    if (r.min_panel_coverage_panel >= 0 && named < panels.panel_cluster.size())
+      r.min_panel_coverage_cluster = panels.panel_cluster[named];
   }
   r.min_corner_angle_deg = min_angle;
   r.min_corner_angle_target_deg = options.min_corner_angle_deg;

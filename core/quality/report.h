@@ -88,9 +88,12 @@ struct QualityReport {
   // their planes meet nearly in a line or point and their faces lie under the neighbours'
   // panels. The paper's checks let such a panel through; it is reported, not counted invalid.
   // Judged on valid panels only (an invalid one's area says nothing), as the panel phase
-  // judges it; every glass piece of a collapsed panel counts.
+  // judges it; every glass piece of a collapsed panel counts. In glass mode the panel named is
+  // its first piece, which may own none of the faces (each goes to the piece over it), so the
+  // cluster is named too: the page selects the panel by any face of it.
   double min_panel_coverage = 1.0;
   int min_panel_coverage_panel = -1;
+  int min_panel_coverage_cluster = -1;  // panels.panel_cluster of that panel, -1 when not known
   int collapsed_panels = 0;
 };
 

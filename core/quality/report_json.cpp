@@ -59,6 +59,7 @@ void write_quality_fields(JsonWriter& j, const QualityReport& q) {
   j.value("concave_panels", q.concave_panels);
   j.value("min_panel_coverage", q.min_panel_coverage);
   j.value("min_panel_coverage_panel", q.min_panel_coverage_panel);
+  j.value("min_panel_coverage_cluster", q.min_panel_coverage_cluster);
   j.value("collapsed_panels", q.collapsed_panels);
 }
 

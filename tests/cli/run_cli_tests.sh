@@ -620,6 +620,7 @@ r = json.load(open(sys.argv[1]))
 assert r["collapsed_panels"] == 0 and r["min_panel_coverage"] >= 0.1 and r["min_corner_angle_deg"] > 30, r
 r = json.load(open(sys.argv[2]))
 assert r["collapsed_panels"] == 1 and r["min_panel_coverage_panel"] == 31, r
+assert isinstance(r["min_panel_coverage_cluster"], int) and r["min_panel_coverage_cluster"] >= 0, r
 assert 0 < r["min_panel_coverage"] < 0.1 and r["invalid_panels"] == 0, r
 PY
 python3 -c "

@@ -347,6 +347,7 @@ TEST(Quality, CoverageFindsCollapsedPanels) {
   const QualityReport r = measure(input, pm);
   EXPECT_NEAR(r.min_panel_coverage, 0.05, 1e-12);
   EXPECT_EQ(r.min_panel_coverage_panel, 1);
+  EXPECT_EQ(r.min_panel_coverage_cluster, 1);  // make_panels: panel i is cluster i
   EXPECT_EQ(r.collapsed_panels, 1);
   EXPECT_EQ(r.invalid_panels, 0);
 
@@ -379,6 +380,16 @@ TEST(Quality, CoverageFindsCollapsedPanels) {
   EXPECT_EQ(c.min_panel_coverage_panel, 1);
   EXPECT_EQ(c.collapsed_panels, 2);
 
+  // The same, with every face of the collapsed panel under its second piece: the first piece,
+  // the one named, owns no face, so the report names its cluster too (the page selects the
+  // panel by a face of that cluster).
+  cut.panel_cluster = {4, 9, 9};
+  cut.face_panel = {0, 0, 2, 2};
+  const QualityReport named = measure(input, cut);
+  EXPECT_EQ(named.min_panel_coverage_panel, 1);
+  EXPECT_EQ(named.min_panel_coverage_cluster, 9);
+  EXPECT_EQ(named.collapsed_panels, 2);
+
   // An invalid panel is not judged: the sliver turned clockwise (misoriented, flipped).
   PanelMesh flipped = pm;
   flipped.panels[1] = {1, 6, 2};
@@ -393,6 +404,7 @@ TEST(Quality, CoverageFindsCollapsedPanels) {
   no_faces.face_panel.clear();
   const QualityReport n = measure(input, no_faces);
   EXPECT_EQ(n.min_panel_coverage_panel, -1);
+  EXPECT_EQ(n.min_panel_coverage_cluster, -1);
   EXPECT_EQ(n.collapsed_panels, 0);
 }
 

@@ -3,7 +3,7 @@
 // belongs to which request) live in designMachine.ts; opening a design and preparing its mesh
 // again in designOpener.ts; downloads, links and the session note in outputs.ts; this file
 // wires them to the worker, the view and the status line.
-import { collapsedPanel, faceOfPanel } from './collapsedPanel.ts';
+import { faceOfCollapsed } from './collapsedPanel.ts';
 import { countOutcome, element } from './dom.ts';
 import { DesignEditor } from './designEditor.ts';
 import { DesignMachine, type ChainLoss } from './designMachine.ts';
@@ -361,8 +361,7 @@ export class App {
   // "Merge with neighbour" (which brings the Panel edits section into view).
   private selectCollapsedPanel(): void {
     const result = this.machine.solving ? null : (this.machine.solved?.result ?? null);
-    const panel = result ? collapsedPanel(result.report) : null;
-    const face = result && panel !== null ? faceOfPanel(result.facePanels, panel) : null;
+    const face = result ? faceOfCollapsed(result) : null;
     if (face !== null && this.editor.selectPanelFace(face)) element('merge-panel', HTMLButtonElement).focus();
   }
 

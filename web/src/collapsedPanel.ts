@@ -37,13 +37,20 @@ export function panelCentre(result: Pick<SolveResult, 'panelPositions' | 'panelO
   return centre.every(Number.isFinite) ? centre : null;
 }
 
-// A triangle of the loaded mesh inside the panel (how the page selects a panel:
-// panelSelection.ts), or null when none is: in glass mode the report names a panel's first
-// piece, and a triangle goes to the piece over its centroid, so that piece may have none
-// (the legend line then names the panel without a Select button).
-export function faceOfPanel(facePanels: Int32Array, panel: number): number | null {
-  const face = facePanels.indexOf(panel);
-  return face >= 0 ? face : null;
+// A triangle of the loaded mesh inside the collapsed panel (how the page selects a panel:
+// panelSelection.ts), or null without one. In glass mode the report names the panel's first
+// piece, and a triangle goes to the piece over its centroid, so that piece may own none: then
+// any triangle of its cluster (min_panel_coverage_cluster) selects the panel the edits know.
+export function faceOfCollapsed(result: Pick<SolveResult, 'report' | 'clusterIds' | 'facePanels'>): number | null {
+  const panel = collapsedPanel(result.report);
+  if (panel === null) return null;
+  const face = result.facePanels.indexOf(panel);
+  if (face >= 0) return face;
+  const cluster = result.report.min_panel_coverage_cluster;
+  if (typeof cluster !== 'number' || !Number.isInteger(cluster) || cluster < 0) return null;
+  const n = Math.min(result.clusterIds.length, result.facePanels.length);
+  for (let f = 0; f < n; f++) if (result.clusterIds[f] === cluster && result.facePanels[f]! >= 0) return f;
+  return null;
 }
 
 // #collapsed-legend and its button for the result on show (hidden without a collapsed panel).
@@ -52,5 +59,5 @@ export function renderCollapsedPanel(result: SolveResult | null): void {
   if (!showLegendLine('collapsed', result ? collapsedNote(result.report) : null) || !button) return;
   const panel = result ? collapsedPanel(result.report) : null;
   button.textContent = panel === null ? 'Select' : `Select P${panel + 1}`;
-  button.hidden = panel === null || faceOfPanel(result!.facePanels, panel) === null;
+  button.hidden = panel === null || faceOfCollapsed(result!) === null;
 }
