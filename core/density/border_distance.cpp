@@ -1,19 +1,35 @@
 #include "core/density/border_distance.h"
 
-#include <algorithm>
 #include <limits>
 
 #include "core/cluster/quad_heap.h"
+#include "core/mesh/segment.h"
 
 namespace ff {
 
 namespace {
 
-double distance_to_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
-  const Vec3 ab = b - a;
-  const double length2 = ab.squaredNorm();
-  const double t = length2 > 0.0 ? std::clamp((p - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
-  return (p - (a + t * ab)).norm();
+// Each vertex's edges, or only its boundary edges (two per vertex on a manifold border), in
+// edge order (CSR: vertex v's are edges[first[v]..first[v+1]]); the topology lists edges,
+// not vertex rings.
+struct EdgesByVertex {
+  std::vector<int> first, edges;
+};
+
+EdgesByVertex edges_by_vertex(const MeshTopology& topology, size_t num_vertices, bool boundary_only) {
+  EdgesByVertex out;
+  out.first.assign(num_vertices + 1, 0);
+  const auto kept = [&](int e) { return !boundary_only || topology.is_boundary_edge(e); };
+  for (int e = 0; e < topology.num_edges(); ++e)
+    if (kept(e))
+      for (int v : topology.edge_vertices[static_cast<size_t>(e)]) ++out.first[static_cast<size_t>(v) + 1];
+  for (size_t v = 0; v < num_vertices; ++v) out.first[v + 1] += out.first[v];
+  out.edges.resize(static_cast<size_t>(out.first[num_vertices]));
+  std::vector<int> at(out.first.begin(), out.first.end() - 1);
+  for (int e = 0; e < topology.num_edges(); ++e)
+    if (kept(e))
+      for (int v : topology.edge_vertices[static_cast<size_t>(e)]) out.edges[static_cast<size_t>(at[static_cast<size_t>(v)]++)] = e;
+  return out;
 }
 
 }  // namespace
@@ -22,36 +38,8 @@ std::vector<double> border_distance(const TriMesh& mesh, const MeshTopology& top
   const size_t n = mesh.positions.size();
   std::vector<double> dist(n, std::numeric_limits<double>::infinity());
   std::vector<int> source(n, -1);  // the boundary edge each vertex is measured to
-  // Each vertex's edges (CSR): the topology lists edges, not vertex rings.
-  std::vector<int> first(n + 1, 0), other(2 * static_cast<size_t>(topology.num_edges()));
-  for (const std::array<int, 2>& e : topology.edge_vertices) {
-    ++first[static_cast<size_t>(e[0]) + 1];
-    ++first[static_cast<size_t>(e[1]) + 1];
-  }
-  for (size_t v = 0; v < n; ++v) first[v + 1] += first[v];
-  {
-    std::vector<int> at(first.begin(), first.end() - 1);
-    for (const std::array<int, 2>& e : topology.edge_vertices) {
-      other[static_cast<size_t>(at[static_cast<size_t>(e[0])]++)] = e[1];
-      other[static_cast<size_t>(at[static_cast<size_t>(e[1])]++)] = e[0];
-    }
-  }
-  // Per vertex, its boundary edges (two on a manifold border): the border as a graph.
-  std::vector<int> first_border(n + 1, 0), border_edges;
-  for (int e = 0; e < topology.num_edges(); ++e) {
-    if (!topology.is_boundary_edge(e)) continue;
-    for (int v : topology.edge_vertices[static_cast<size_t>(e)]) ++first_border[static_cast<size_t>(v) + 1];
-  }
-  for (size_t v = 0; v < n; ++v) first_border[v + 1] += first_border[v];
-  border_edges.resize(static_cast<size_t>(first_border[n]));
-  {
-    std::vector<int> at(first_border.begin(), first_border.end() - 1);
-    for (int e = 0; e < topology.num_edges(); ++e) {
-      if (!topology.is_boundary_edge(e)) continue;
-      for (int v : topology.edge_vertices[static_cast<size_t>(e)])
-        border_edges[static_cast<size_t>(at[static_cast<size_t>(v)]++)] = e;
-    }
-  }
+  const EdgesByVertex ring = edges_by_vertex(topology, n, false);
+  const EdgesByVertex border = edges_by_vertex(topology, n, true);  // the border as a graph
   const auto segment_distance = [&](const Vec3& p, int e) {
     const std::array<int, 2>& ends = topology.edge_vertices[static_cast<size_t>(e)];
     return distance_to_segment(p, mesh.positions[static_cast<size_t>(ends[0])],
@@ -65,8 +53,8 @@ std::vector<double> border_distance(const TriMesh& mesh, const MeshTopology& top
     for (bool nearer = true; nearer;) {
       nearer = false;
       for (int end : topology.edge_vertices[static_cast<size_t>(e)]) {
-        for (int k = first_border[static_cast<size_t>(end)]; k < first_border[static_cast<size_t>(end) + 1]; ++k) {
-          const int f = border_edges[static_cast<size_t>(k)];
+        for (int k = border.first[static_cast<size_t>(end)]; k < border.first[static_cast<size_t>(end) + 1]; ++k) {
+          const int f = border.edges[static_cast<size_t>(k)];
           const double df = segment_distance(p, f);
           if (df < d) d = df, e = f, nearer = true;
         }
@@ -89,8 +77,9 @@ std::vector<double> border_distance(const TriMesh& mesh, const MeshTopology& top
     const KeyedItem item = queue.pop();
     const size_t v = static_cast<size_t>(item.id);
     if (key_value(item.key) > dist[v]) continue;  // superseded
-    for (int k = first[v]; k < first[v + 1]; ++k) {
-      const size_t w = static_cast<size_t>(other[static_cast<size_t>(k)]);
+    for (int k = ring.first[v]; k < ring.first[v + 1]; ++k) {
+      const std::array<int, 2>& ends = topology.edge_vertices[static_cast<size_t>(ring.edges[static_cast<size_t>(k)])];
+      const size_t w = static_cast<size_t>(ends[0] == item.id ? ends[1] : ends[0]);
       // Strictly nearer only: every update lowers a distance, so the front ends.
       double d;
       const int e = nearest_from(mesh.positions[w], source[v], d);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/mesh/segment.h"
 #include "core/panels/panel_check.h"
 #include "core/util/angles.h"
 
@@ -12,13 +13,6 @@ namespace {
 
 // cos(kNeedleCornerDeg), computed once rather than per border run.
 const double kNeedleCos = std::cos(kNeedleCornerDeg * kPi / 180.0);
-
-double distance_to_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
-  const Vec3 ab = b - a;
-  const double len2 = ab.squaredNorm();
-  const double t = len2 > 0.0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
-  return (a + t * ab - p).norm();
-}
 
 // Douglas-Peucker on chain[first..last] (both kept), with an explicit stack.
 void simplify(const std::vector<Vec3>& chain, size_t first, size_t last, double tolerance, std::vector<char>& keep) {

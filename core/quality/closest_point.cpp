@@ -7,6 +7,7 @@
 #include <limits>
 #include <string>
 
+#include "core/mesh/segment.h"
 #include "core/util/error.h"
 
 namespace ff {
@@ -16,13 +17,6 @@ namespace {
 constexpr int kLeafSize = 4;
 constexpr int kSelectDirectly = 64;  // smaller ranges select the exact median
 constexpr int kMaxBins = 256;
-
-Vec3 closest_on_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
-  const Vec3 d = b - a;
-  const double len2 = d.squaredNorm();
-  const double t = len2 > 0.0 ? std::clamp((p - a).dot(d) / len2, 0.0, 1.0) : 0.0;
-  return a + t * d;
-}
 
 double box_distance2(const Vec3& q, const Vec3& lo, const Vec3& hi) {
   const Vec3 d = (lo - q).cwiseMax(q - hi).cwiseMax(0.0);
@@ -37,7 +31,7 @@ bool is_sliver(const Vec3& a, const Vec3& b, const Vec3& c) {
 }
 
 Vec3 closest_on_sliver(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
-  const Vec3 candidates[3] = {closest_on_segment(p, a, b), closest_on_segment(p, b, c), closest_on_segment(p, c, a)};
+  const Vec3 candidates[3] = {closest_point_on_segment(p, a, b), closest_point_on_segment(p, b, c), closest_point_on_segment(p, c, a)};
   const Vec3* best = &candidates[0];
   for (const Vec3& x : candidates) {
     if ((x - p).squaredNorm() < (*best - p).squaredNorm()) best = &x;
@@ -66,7 +60,7 @@ Vec3 closest_on_proper_triangle(const Vec3& p, const Vec3& a, const Vec3& b, con
     return b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b);
   }
   const double denom = va + vb + vc;
-  if (!(denom > 0.0)) return closest_on_segment(p, a, b);  // unreachable unless rounding
+  if (!(denom > 0.0)) return closest_point_on_segment(p, a, b);  // unreachable unless rounding
   return a + (vb / denom) * ab + (vc / denom) * ac;        // inside the face
 }
 
