@@ -30,37 +30,10 @@ std::vector<Plane> surface_fit_planes(const FaceData& faces, const std::vector<i
   }
   RelaxOptions fit;
   fit.node_weight = 0.2;
-  // The relaxation in chunks of kFitChunk iterations, each going on from W where the last
-  // stopped (the same W, multiplied up the same way, so the chunks together are the whole
-  // relaxation to the bit): it stops early once no plane moved more than kFitSettled (normal,
-  // and offset in units of the clusters' diameter) in a chunk: what is left is far below what
-  // the Hausdorff distance or the panels' checks can see (bunny 200, fandisk 300, inspired
-  // 100, face 500: Hausdorff the same to 8 digits, panels as valid; the fit 27% cheaper on
-  // the bunny). The rounds' relaxations do not stop early: there the bits steer what follows.
-  constexpr int kFitChunk = 8;
-  constexpr double kFitSettled = 1e-5;
-  double total_area = 0.0;
-  for (const ClusterMoments& m : moments) total_area += m.area;
-  const double unit = std::sqrt(total_area / static_cast<double>(std::max<size_t>(moments.size(), 1)));
-  std::vector<Plane> planes = masters.planes;
-  const int iterations = fit.iterations;
-  double w = fit.start_weight;
-  for (int done = 0; done < iterations;) {
-    RelaxOptions chunk = fit;
-    chunk.iterations = std::min(kFitChunk, iterations - done);
-    chunk.start_weight = w;
-    std::vector<Plane> next = relax_planes(nodes, moments, planes, chunk);
-    for (int i = 0; i < chunk.iterations; ++i) w *= fit.growth;
-    done += chunk.iterations;
-    double moved = 0.0;
-    for (size_t m = 0; m < next.size(); ++m) {
-      moved = std::max(moved, (next[m].normal - planes[m].normal).lpNorm<Eigen::Infinity>());
-      moved = std::max(moved, std::abs(next[m].offset - planes[m].offset) / unit);
-    }
-    planes = std::move(next);
-    if (!(moved > kFitSettled)) break;  // NaN: stop too
-  }
-  return planes;
+  // The relaxation stops once the planes have settled (RelaxOptions::settled_step), with the
+  // rest of their geometric tail added: what is left is far below what the Hausdorff distance
+  // or the panels' checks can see.
+  return relax_planes(nodes, moments, masters.planes, fit);
 }
 
 std::vector<ClusterMoments> border_moments(const MeshTopology& topology,

@@ -2,6 +2,7 @@
 
 #include <Eigen/Dense>
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <utility>
@@ -83,6 +84,29 @@ struct PlaneTerms {
 
 bool hinged(const std::vector<PlaneHinge>& hinges, size_t i) { return i < hinges.size() && hinges[i].on; }
 
+// True when no plane of `moving` moved by more than options.settled_step from `before` to
+// `planes`, in its normal or its offset (the planes live in FaceData's local frame, where the
+// mesh is about 1 across); `planes` then get the rest of the geometric series added
+// (RelaxOptions). A plane is extrapolated as the 4-vector (normal, offset) and scaled back to
+// a unit normal, so a hinged plane stays through its hinge point.
+bool settled(const std::vector<Plane>& before, std::vector<Plane>& planes, const std::vector<size_t>& moving,
+             const RelaxOptions& options) {
+  double moved = 0.0;
+  for (size_t i : moving) {
+    moved = std::max(moved, (planes[i].normal - before[i].normal).lpNorm<Eigen::Infinity>());
+    moved = std::max(moved, std::abs(planes[i].offset - before[i].offset));
+  }
+  if (!(moved <= options.settled_step)) return false;  // NaN: go on
+  const double tail = 1.0 / (options.growth - 1.0);
+  for (size_t i : moving) {
+    const Vec3 normal = planes[i].normal + tail * (planes[i].normal - before[i].normal);
+    const double offset = planes[i].offset + tail * (planes[i].offset - before[i].offset);
+    const double length = normal.norm();
+    if (length > 0.5 && std::isfinite(offset)) planes[i] = Plane{normal / length, offset / length};
+  }
+  return true;
+}
+
 }  // namespace
 
 Plane hinged_fit(const PlaneHinge& hinge, const Eigen::Matrix3d& scatter, const Plane& side) {
@@ -155,7 +179,14 @@ std::vector<Plane> relax_planes(const std::vector<NodeConstraint>& nodes, const 
   std::vector<Eigen::Matrix3d> scatter(m);
   std::vector<PlaneTerms> terms(m);
   double w = options.start_weight;
+  // W past which the nodes count as pinned to their planes (the settled stop's premise).
+  double pinned_weight = 0.0;
+  for (size_t k : active) pinned_weight = std::max(pinned_weight, 1e3 * nodes[k].weight);
+  const bool may_settle = options.settled_step > 0.0 && options.growth > 1.0;
+  std::vector<Plane> before;  // the planes at the start of the iteration, once W is past pinned_weight
   for (int it = 0; it < options.iterations; ++it, w *= options.growth) {
+    const bool settling = may_settle && w >= pinned_weight;
+    if (settling) before = planes;
     // Nodes: minimise c_k |x - p|^2 + W sum_i (n_i.x - d_i)^2, c_k the node's own weight.
     // Each plane's W n n^T (lower triangle) and W d n once per iteration rather than once per
     // node: the same products, so the same bits as forming them per node.
@@ -254,6 +285,7 @@ std::vector<Plane> relax_planes(const std::vector<NodeConstraint>& nodes, const 
       waiting = kNone;
     }
     if (waiting != kNone) set_normal(waiting, smallest_eigenvector_newton(waiting_scatter, &planes[waiting].normal));
+    if (settling && settled(before, planes, fitted, options)) break;
   }
   return planes;
 }

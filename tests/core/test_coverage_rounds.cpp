@@ -21,11 +21,12 @@ int flagged_collapsed(const PanelMesh& pm) {
   return count;
 }
 
-// epcot.off at 34 panels, seed 2: the rounds' first valid attempt had a sliver triangle (a
-// 0.06-degree corner covering 0.3% of its faces); a coverage round moves its cluster elsewhere.
+// epcot.off at 26 panels, seed 1: the rounds' first valid attempt has a sliver panel covering
+// 0.03% of its faces; a coverage round moves its cluster elsewhere. (This was seed 2 at 34
+// panels until the relaxation stopped once settled, plane_relax.h: the draws are chaotic.)
 TEST(CoverageRounds, ASliverPanelsClusterMovesElsewhere) {
-  const auto r = test::remeshed("epcot.off", 34, 2);
-  EXPECT_TRUE(test::valid_panels(*r, 34, 0.08));
+  const auto r = test::remeshed("epcot.off", 26, 1);
+  EXPECT_TRUE(test::valid_panels(*r, 26, 0.08));
   const QualityReport q = quality_of(*r);
   EXPECT_EQ(q.collapsed_panels, 0);
   EXPECT_GE(q.min_panel_coverage, kMinCoveredShare);
@@ -41,11 +42,11 @@ TEST(CoverageRounds, TheFinalFitMakesNoSliver) {
 }
 
 // What the coverage rounds do not reach stays valid and is reported: cow.off at 61 panels,
-// seed 1 keeps one (3.5% covered), left by the mends of its long run (71 rounds). The panel
+// seed 11 keeps one (1.2% covered), left by the mends of its long run (80 rounds). The panel
 // phase's flags and the report agree, and a collapsed panel passes the paper's checks (it is
 // not invalid). The bound is the cow's at 61 panels (test_panel_rounds.cpp).
 TEST(CoverageRounds, WhatRemainsIsValidAndReported) {
-  const auto r = test::remeshed("cow.off", 61, 1);
+  const auto r = test::remeshed("cow.off", 61, 11);
   EXPECT_TRUE(test::valid_panels(*r, 61, 0.15));
   const QualityReport q = quality_of(*r);
   EXPECT_EQ(q.collapsed_panels, 1);
@@ -55,18 +56,18 @@ TEST(CoverageRounds, WhatRemainsIsValidAndReported) {
   EXPECT_TRUE(r->panels().issues[static_cast<size_t>(q.min_panel_coverage_panel)].collapsed);
 }
 
-// The coverage rounds keep to k2: epcot.off at 34 panels, seed 2 ends its coverage rounds at
-// the fifth round without a collapsed panel; given 4 rounds, the fourth (a coverage round
-// that found nothing better) is the budget's last and the run ends with the valid fallback,
-// its collapsed panel reported.
+// The coverage rounds keep to k2: epcot.off at 25 panels, seed 3 ends its rounds at the
+// twelfth without a collapsed panel, but its first valid attempt has one; given 4 rounds, the
+// fourth (a coverage round that found nothing better) is the budget's last and the run ends
+// with the valid fallback, its collapsed panel reported.
 TEST(CoverageRounds, KeepToThePanelRoundBudget) {
-  auto r = test::remesher("epcot.off", 34, 2);
+  auto r = test::remesher("epcot.off", 25, 3);
   RemeshParams p = r->params();
   p.panel_rounds = 4;
   p.retries = 0;
   Remesher limited(r->mesh(), p);
   limited.run();
-  EXPECT_TRUE(test::valid_panels(limited, 34, 0.08));
+  EXPECT_TRUE(test::valid_panels(limited, 25, 0.08));
   EXPECT_LE(limited.panel_rounds_done(), 4);
   EXPECT_EQ(quality_of(limited).collapsed_panels, 1);
 }

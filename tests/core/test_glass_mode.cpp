@@ -94,14 +94,15 @@ TEST(GlassMode, MinimumAngleAloneKeepsPanelsWhole) {
 
 // The quality check judges a glass piece's orientation as the panel it was cut from, on all
 // of that panel's faces: the faces under one piece alone can face away from it. cow.off at
-// 122 panels, seed 1, glass without a minimum: a piece on a leg has faces whose normals sum
-// against its own (checked below, so the case still shows it); the report called that piece
-// misoriented although the panel phase had judged the whole panel, an invalid "quality_check"
-// panel (4 of 128 glass runs at seeds 1-2 of bench/sweep_validity.sh's cases, all cow.off).
+// 78 panels, seed 4, glass without a minimum: a piece has faces whose normals sum against its
+// own (checked below, so the case still shows it); the report called such a piece misoriented
+// although the panel phase had judged the whole panel, an invalid "quality_check" panel (4 of
+// 128 glass runs at seeds 1-2 of bench/sweep_validity.sh's cases, all cow.off). (This was
+// 122 panels, seed 1 until the relaxation stopped once settled, plane_relax.h.)
 TEST(GlassMode, PiecesAreJudgedAsThePanelTheyWereCutFrom) {
   RemeshParams p;
-  p.panels = 122;
-  p.seed = 1;
+  p.panels = 78;
+  p.seed = 4;
   p.glass = true;
   Remesher r(test::load_clean("cow.off"), p);
   r.run();

@@ -176,6 +176,56 @@ TEST(PlaneRelax, FreePlanesIgnoreWhatNoFreeNodeTouches) {
   EXPECT_GT(std::abs(shifted[1].offset - alone[1].offset) + std::abs(shifted[2].offset - alone[2].offset), 1e-4);
 }
 
+// The settled stop (RelaxOptions::settled_step) ends the relaxation early with the rest of
+// the planes' geometric tail added: it lands where all iterations go, far closer than
+// stopping at the same point without the tail would.
+TEST(PlaneRelax, SettledStopLandsWhereAllIterationsGo) {
+  const Corner3 s = barrel(Vec3(0.01, -0.01, 0.005));
+  RelaxOptions all;
+  all.settled_step = 0.0;
+  const std::vector<Plane> full = relax_planes(s.nodes, s.moments, s.planes, all);
+  const std::vector<Plane> settled = relax_planes(s.nodes, s.moments, s.planes);
+  for (size_t i = 0; i < 3; ++i) {
+    EXPECT_NEAR(settled[i].normal.norm(), 1.0, 1e-12) << i;
+    EXPECT_LT((settled[i].normal - full[i].normal).lpNorm<Eigen::Infinity>(), 1e-8) << i;
+    EXPECT_LT(std::abs(settled[i].offset - full[i].offset), 1e-8) << i;
+  }
+  // The iteration it stopped at: the fewest iterations that give the same planes to the bit.
+  int stop = all.iterations;
+  for (int k = 1; k < all.iterations; ++k) {
+    RelaxOptions upto;
+    upto.iterations = k;
+    const std::vector<Plane> r = relax_planes(s.nodes, s.moments, s.planes, upto);
+    if (r[0].normal == settled[0].normal && r[1].normal == settled[1].normal && r[2].normal == settled[2].normal) {
+      stop = k;
+      break;
+    }
+  }
+  EXPECT_LT(stop, 60);
+  // Stopping there without the tail would land ten times farther off, or more.
+  RelaxOptions fewer = all;
+  fewer.iterations = stop;
+  const std::vector<Plane> truncated = relax_planes(s.nodes, s.moments, s.planes, fewer);
+  double off_truncated = 0.0, off_settled = 0.0;
+  for (size_t i = 0; i < 3; ++i) {
+    off_truncated = std::max(off_truncated, (truncated[i].normal - full[i].normal).lpNorm<Eigen::Infinity>());
+    off_settled = std::max(off_settled, (settled[i].normal - full[i].normal).lpNorm<Eigen::Infinity>());
+  }
+  RecordProperty("stop", stop);
+  EXPECT_GT(off_truncated, 10.0 * off_settled) << "stopped at " << stop;
+}
+
+// Nothing pins a plane without nodes, so its fit is done in one step: the stop must judge the
+// offset too (the normal of this fit does not move at all, its offset does), else it would
+// extrapolate the one step's offset change as a tail.
+TEST(PlaneRelax, SettledStopJudgesTheOffsetToo) {
+  const Plane surface = Plane::through(Vec3(0.0, 0.0, 0.3), Vec3::UnitZ());
+  const std::vector<ClusterMoments> moments = {faces_on(surface, Vec3::Zero())};
+  const std::vector<Plane> relaxed = relax_planes({}, moments, {Plane::through(Vec3::Zero(), Vec3::UnitZ())});
+  EXPECT_LT((relaxed[0].normal - Vec3::UnitZ()).norm(), 1e-12);
+  EXPECT_NEAR(relaxed[0].offset, 0.3, 1e-12);
+}
+
 // A hinged plane (the neighbour of a locked panel) fits its faces only among the planes
 // through its hinge's line: it keeps containing the line exactly, however far its faces lie
 // from any such plane, and is the best fit of that pencil; a plane without a hinge fits its

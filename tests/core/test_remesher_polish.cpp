@@ -27,12 +27,13 @@ int step_into_polish(Remesher& r, int attempts) {
   return polish;
 }
 
-// cow.off at 56 panels, seed 1: its rounds end invalid (4 panels, two of them clusters that
-// are not disks), so the polish runs: 10 steps, then valid, with no retry.
-RemeshParams cow56_seed1() {
+// cow.off at 56 panels, seed 3: its rounds end invalid, so the polish runs: 9 steps, then
+// valid, with no retry. (Seed 1 was this example, with two clusters that were not disks,
+// until the relaxation stopped once settled, plane_relax.h: its rounds now end valid.)
+RemeshParams cow56() {
   RemeshParams p;
   p.panels = 56;
-  p.seed = 1;
+  p.seed = 3;
   return p;
 }
 
@@ -106,12 +107,12 @@ TEST(PolishSplitAt, HalvesGrowFromTheGivenFaces) {
   return ::testing::AssertionSuccess();
 }
 
-// cow.off at 100 panels, seed 7: the rounds end invalid and mend() leaves it so; the second
-// pass's first attempt (a split near the problem) ends valid with the 100 panels asked for,
-// with no retry. (Seed 2 was this example until the panel checks took the quality report's
-// tolerance: its rounds now go another way.)
-TEST(PolishBest, CowAt100PanelsSeed7EndsValid) {
-  const auto r = test::remesher("cow.off", 100, 7);
+// cow.off at 100 panels, seed 9: the rounds end invalid and mend() leaves it so; the polish's
+// first attempt ends valid with the 100 panels asked for, with no retry. (Seed 2, then seed 7
+// were this example until the panel checks took the quality report's tolerance and the
+// relaxation stopped once settled: their rounds now go other ways.)
+TEST(PolishBest, CowAt100PanelsSeed9EndsValid) {
+  const auto r = test::remesher("cow.off", 100, 9);
   ASSERT_TRUE(polish_ran(*r));
   EXPECT_EQ(r->retries_done(), 0);
   EXPECT_TRUE(test::valid_panels(*r, 100, 0.12));
@@ -130,12 +131,11 @@ TEST(PolishBest, CowAt78PanelsSeed6EndsValidInTheThirdPass) {
   EXPECT_TRUE(test::valid_panels(*r, 78, 0.15));
 }
 
-// cow.off at 56 panels, seed 1: the best round has two clusters that are not disks (no panel)
-// among its 4 invalid ones, and the mend cannot split them. The polish cuts them: every
-// cluster is a disk and gets its panel, at most one is invalid. (This was cow.off at 61
-// panels, seed 2 until the core stopped using Eigen's SSE2 sums, core/CMakeLists.txt.)
-TEST(PolishBest, CowAt56PanelsSeed1EveryClusterGetsItsPanel) {
-  RemeshParams p = cow56_seed1();
+// cow.off at 56 panels, seed 3: after the polish every cluster is a disk and gets its panel,
+// at most one is invalid. (The draws before it, cow.off at 61 panels, seed 2 and at 56 panels,
+// seed 1, had clusters that were not disks in their best round, which the polish cut.)
+TEST(PolishBest, CowAt56PanelsEveryClusterGetsItsPanel) {
+  RemeshParams p = cow56();
   p.retries = 0;
   Remesher r(test::load_clean("cow.off"), p);
   ASSERT_TRUE(polish_ran(r));
@@ -146,13 +146,13 @@ TEST(PolishBest, CowAt56PanelsSeed1EveryClusterGetsItsPanel) {
 }
 
 // The polish is resumable: each step() mends one attempt, so the worker answers a cancel
-// within one panel round's time. On cow.off at 56 panels, seed 1, it runs 10 steps (the
+// within one panel round's time. On cow.off at 56 panels, seed 3, it runs 9 steps (the
 // bounds below leave room: the draws are chaotic);
 // through them the progress stays the panel stage's (its round count, at most `of`) and its
 // invalid count (the best's) never goes up; the result is the one
-// CowAt56PanelsSeed1EveryClusterGetsItsPanel checks.
+// CowAt56PanelsEveryClusterGetsItsPanel checks.
 TEST(PolishBest, OneAttemptPerStep) {
-  Remesher r(test::load_clean("cow.off"), cow56_seed1());
+  Remesher r(test::load_clean("cow.off"), cow56());
   int polish = 0, rounds = -1, last_invalid = -1;
   while (!r.done()) {
     const bool panels = r.progress().stage == Stage::Panels;
@@ -183,21 +183,21 @@ TEST(PolishBest, OneAttemptPerStep) {
 // moment (n clusters between steps) and the run finishes, valid or with its invalid panels
 // reported; the count is the new one.
 TEST(PolishBest, NewPanelCountMidPolishFinishes) {
-  RemeshParams p = cow56_seed1();
+  RemeshParams p = cow56();
   Remesher r(test::load_clean("cow.off"), p);
   ASSERT_TRUE(two_steps_into_polish(r));
   p.panels = 70;
   r.set_params(p);
   EXPECT_EQ(r.progress().stage, Stage::Lloyd);
   r.run();
-  expect_valid_or_reported(r, 70, 0.13);  // the cow's legs at 70 panels (0.122 here)
+  expect_valid_or_reported(r, 70, 0.15);  // the cow's bound at 61 panels: its legs' tips (0.149 here)
 }
 
 // A new seed in the middle of the polish starts over: nothing of the polish is left, the
 // result is exactly that of a fresh solve with the new seed.
 TEST(PolishBest, NewSeedMidPolishEqualsAFreshSolve) {
   const TriMesh mesh = test::load_clean("cow.off");
-  RemeshParams p = cow56_seed1();
+  RemeshParams p = cow56();
   Remesher r(mesh, p);
   ASSERT_TRUE(two_steps_into_polish(r));
   p.seed = 2;
@@ -216,7 +216,7 @@ TEST(PolishBest, NewSeedMidPolishEqualsAFreshSolve) {
 // with one panel more. The bound is the cow's below 61 panels (the sweep's cow at 46 panels:
 // 0.14-0.17): its legs' tips far from the panels (0.158 here).
 TEST(PolishBest, EditMidPolishFinishesTheSolveFirst) {
-  RemeshParams p = cow56_seed1();
+  RemeshParams p = cow56();
   Remesher r(test::load_clean("cow.off"), p);
   ASSERT_TRUE(two_steps_into_polish(r));
   r.set_edits({PanelEdit{PanelEdit::Op::Split, 0, -1}});
