@@ -16,7 +16,7 @@ namespace {
 // Eigen's LDLT<Matrix3d>(A).solve(b) step for step: the same pivots and the same operations
 // in the same order (so the same bits, which the chaotic panel phase needs to stay as it
 // was), without the generic machinery around them: the node solve runs once per node and
-// iteration, 80 times per relaxation. Eigen 3.4, LDLT.h: ldlt_inplace<Lower>::unblocked
+// iteration, up to 80 times per relaxation. Eigen 3.4, LDLT.h: ldlt_inplace<Lower>::unblocked
 // and _solve_impl_transposed (unrolled triangular solves). The six entries of A's lower
 // triangle are plain variables and the pivoting swaps them by name, so they stay in
 // registers (an array indexed by the pivot lived on the stack, and its mixed-width loads and
@@ -84,25 +84,26 @@ struct PlaneTerms {
 
 bool hinged(const std::vector<PlaneHinge>& hinges, size_t i) { return i < hinges.size() && hinges[i].on; }
 
-// True when no plane of `moving` moved by more than options.settled_step from `before` to
-// `planes`, in its normal or its offset (the planes live in FaceData's local frame, where the
-// mesh is about 1 across); `planes` then get the rest of the geometric series added
-// (RelaxOptions). A plane is extrapolated as the 4-vector (normal, offset) and scaled back to
-// a unit normal, so a hinged plane stays through its hinge point.
+// True when no plane of `moving` moved by more than options.settled_step from `before` (the
+// same planes in the same order) to `planes`, in its normal or its offset (the planes live
+// in FaceData's local frame, where the mesh is about 1 across); `planes` then get the rest of
+// the geometric series added (RelaxOptions). A NaN step is not settled. A plane is
+// extrapolated as the 4-vector (normal, offset) and scaled back to a unit normal, so a hinged
+// plane stays through its hinge point.
 bool settled(const std::vector<Plane>& before, std::vector<Plane>& planes, const std::vector<size_t>& moving,
              const RelaxOptions& options) {
-  double moved = 0.0;
-  for (size_t i : moving) {
-    moved = std::max(moved, (planes[i].normal - before[i].normal).lpNorm<Eigen::Infinity>());
-    moved = std::max(moved, std::abs(planes[i].offset - before[i].offset));
+  for (size_t j = 0; j < moving.size(); ++j) {
+    const Plane& now = planes[moving[j]];
+    if (!((now.normal - before[j].normal).lpNorm<Eigen::Infinity>() <= options.settled_step)) return false;
+    if (!(std::abs(now.offset - before[j].offset) <= options.settled_step)) return false;
   }
-  if (!(moved <= options.settled_step)) return false;  // NaN: go on
   const double tail = 1.0 / (options.growth - 1.0);
-  for (size_t i : moving) {
-    const Vec3 normal = planes[i].normal + tail * (planes[i].normal - before[i].normal);
-    const double offset = planes[i].offset + tail * (planes[i].offset - before[i].offset);
+  for (size_t j = 0; j < moving.size(); ++j) {
+    Plane& plane = planes[moving[j]];
+    const Vec3 normal = plane.normal + tail * (plane.normal - before[j].normal);
+    const double offset = plane.offset + tail * (plane.offset - before[j].offset);
     const double length = normal.norm();
-    if (length > 0.5 && std::isfinite(offset)) planes[i] = Plane{normal / length, offset / length};
+    if (length > 0.5 && std::isfinite(offset)) plane = Plane{normal / length, offset / length};
   }
   return true;
 }
@@ -182,11 +183,14 @@ std::vector<Plane> relax_planes(const std::vector<NodeConstraint>& nodes, const 
   // W past which the nodes count as pinned to their planes (the settled stop's premise).
   double pinned_weight = 0.0;
   for (size_t k : active) pinned_weight = std::max(pinned_weight, 1e3 * nodes[k].weight);
-  const bool may_settle = options.settled_step > 0.0 && options.growth > 1.0;
-  std::vector<Plane> before;  // the planes at the start of the iteration, once W is past pinned_weight
+  // The tail's sum is only worth adding where W grows fast enough for the series to end soon.
+  const bool may_settle = options.settled_step > 0.0 && options.growth >= 1.1;
+  std::vector<Plane> before(fitted.size());  // the fitted planes at the start of a settling iteration
   for (int it = 0; it < options.iterations; ++it, w *= options.growth) {
     const bool settling = may_settle && w >= pinned_weight;
-    if (settling) before = planes;
+    if (settling) {
+      for (size_t j = 0; j < fitted.size(); ++j) before[j] = planes[fitted[j]];
+    }
     // Nodes: minimise c_k |x - p|^2 + W sum_i (n_i.x - d_i)^2, c_k the node's own weight.
     // Each plane's W n n^T (lower triangle) and W d n once per iteration rather than once per
     // node: the same products, so the same bits as forming them per node.

@@ -196,7 +196,9 @@ TEST(PlaneRelax, SettledStopLandsWhereAllIterationsGo) {
     RelaxOptions upto;
     upto.iterations = k;
     const std::vector<Plane> r = relax_planes(s.nodes, s.moments, s.planes, upto);
-    if (r[0].normal == settled[0].normal && r[1].normal == settled[1].normal && r[2].normal == settled[2].normal) {
+    bool same = true;
+    for (size_t i = 0; i < 3; ++i) same = same && r[i].normal == settled[i].normal && r[i].offset == settled[i].offset;
+    if (same) {
       stop = k;
       break;
     }
@@ -253,6 +255,35 @@ TEST(PlaneRelax, HingedPlaneTurnsOnlyAboutItsLine) {
     const Vec3 n = Eigen::AngleAxisd(turn, Vec3::UnitX()) * hinged[1].normal;
     EXPECT_GE(rms_distance(Plane::through(Vec3::Zero(), n), moments[1]), best) << turn;
   }
+}
+
+// The settled stop's tail keeps a hinged plane on its hinge: the extrapolation combines two
+// planes through the hinge's line, so the result contains it too. A node pulls the hinged
+// plane (so it moves until the stop, and the tail is not zero).
+TEST(PlaneRelax, SettledStopKeepsAHingedPlaneOnItsLine) {
+  const Plane locked = Plane::through(Vec3::Zero(), Vec3::UnitZ());
+  const Plane start = Plane::through(Vec3::Zero(), Vec3(0.0, -0.3, 1.0).normalized());
+  const std::vector<ClusterMoments> moments = {faces_on(locked, Vec3(0.0, -1.0, 0.0)),
+                                               faces_on(start, Vec3(0.0, 1.0, 0.3))};
+  PlaneHinge hinge;
+  hinge.on = true;
+  hinge.point = Vec3(0.5, 0.0, 0.0);
+  hinge.direction = Vec3::UnitX();
+  NodeConstraint node;
+  node.corner = Vec3(0.5, 1.0, 0.6);  // above the start plane: the node pulls it up
+  node.planes = {{0, 1, -1}};
+  node.count = 2;
+  const std::vector<char> fixed{1, 0};
+  RelaxOptions all;
+  all.settled_step = 0.0;
+  const std::vector<Plane> full = relax_planes({node}, moments, {locked, start}, all, fixed, {PlaneHinge{}, hinge});
+  const std::vector<Plane> settled = relax_planes({node}, moments, {locked, start}, {}, fixed, {PlaneHinge{}, hinge});
+  EXPECT_GT(full[1].normal.dot(start.normal), 0.0);
+  // It turned, and the stop came before the last iteration.
+  EXPECT_GT((full[1].normal - start.normal).norm(), 1e-3);
+  EXPECT_FALSE(settled[1].normal == full[1].normal && settled[1].offset == full[1].offset);
+  EXPECT_LT((settled[1].normal - full[1].normal).norm(), 1e-8);
+  for (double x : {-50.0, 0.0, 3.0, 50.0}) EXPECT_LT(std::abs(settled[1].distance(Vec3(x, 0.0, 0.0))), 1e-12) << x;
 }
 
 }  // namespace
