@@ -228,6 +228,16 @@ TEST(PlaneRelax, SettledStopJudgesTheOffsetToo) {
   EXPECT_NEAR(relaxed[0].offset, 0.3, 1e-12);
 }
 
+// The hinge of the tests below: the x axis (the line the locked plane z = 0 and the start
+// plane share).
+PlaneHinge x_axis_hinge() {
+  PlaneHinge hinge;
+  hinge.on = true;
+  hinge.point = Vec3(0.5, 0.0, 0.0);
+  hinge.direction = Vec3::UnitX();
+  return hinge;
+}
+
 // A hinged plane (the neighbour of a locked panel) fits its faces only among the planes
 // through its hinge's line: it keeps containing the line exactly, however far its faces lie
 // from any such plane, and is the best fit of that pencil; a plane without a hinge fits its
@@ -238,10 +248,7 @@ TEST(PlaneRelax, HingedPlaneTurnsOnlyAboutItsLine) {
   const Plane surface = Plane::through(Vec3(0.0, 0.0, 0.3), Vec3(0.0, -0.7, 1.0).normalized());
   const std::vector<ClusterMoments> moments = {faces_on(locked, Vec3(0.0, -1.0, 0.0)),
                                                faces_on(surface, Vec3(0.0, 1.0, 1.0))};
-  PlaneHinge hinge;
-  hinge.on = true;
-  hinge.point = Vec3(0.5, 0.0, 0.0);
-  hinge.direction = Vec3::UnitX();
+  const PlaneHinge hinge = x_axis_hinge();
   const std::vector<char> fixed{1, 0};
   const std::vector<Plane> hinged = relax_planes({}, moments, {locked, start}, {}, fixed, {PlaneHinge{}, hinge});
   const std::vector<Plane> free = relax_planes({}, moments, {locked, start}, {}, fixed);
@@ -265,10 +272,7 @@ TEST(PlaneRelax, SettledStopKeepsAHingedPlaneOnItsLine) {
   const Plane start = Plane::through(Vec3::Zero(), Vec3(0.0, -0.3, 1.0).normalized());
   const std::vector<ClusterMoments> moments = {faces_on(locked, Vec3(0.0, -1.0, 0.0)),
                                                faces_on(start, Vec3(0.0, 1.0, 0.3))};
-  PlaneHinge hinge;
-  hinge.on = true;
-  hinge.point = Vec3(0.5, 0.0, 0.0);
-  hinge.direction = Vec3::UnitX();
+  const PlaneHinge hinge = x_axis_hinge();
   NodeConstraint node;
   node.corner = Vec3(0.5, 1.0, 0.6);  // above the start plane: the node pulls it up
   node.planes = {{0, 1, -1}};
