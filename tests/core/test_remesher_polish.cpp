@@ -214,7 +214,7 @@ TEST(PolishBest, NewSeedMidPolishEqualsAFreshSolve) {
 // An edit asked for in the middle of the polish: set_edits finishes the solve first (its
 // retry from a new seeding too), then splits the panel; the design ends valid or reported
 // with one panel more. The bound is the cow's below 61 panels (the sweep's cow at 46 panels:
-// 0.14-0.17): its legs' tips far from the panels (0.158 here).
+// 0.14-0.17): its legs' tips far from the panels (0.150 here).
 TEST(PolishBest, EditMidPolishFinishesTheSolveFirst) {
   RemeshParams p = cow56();
   Remesher r(test::load_clean("cow.off"), p);
