@@ -45,7 +45,7 @@ const char* kUsage =
     "      A cluster that cannot be one panel is left out and reported as invalid.\n"
     "      --iterations K1,K2: at most K1 Lloyd iterations (default 20) and K2 panel rounds\n"
     "      (default 100, at least 1; they stop at the first valid result, or when 50 rounds in\n"
-    "      a row did not lower the fewest invalid panels). --retries R (0..10, default 4): when\n"
+    "      a row did not lower the fewest invalid panels). --retries R (0..10, default 8): when\n"
     "      panels end invalid, solve again from a new seeding (derived from the seed) up to R\n"
     "      times and keep the result with the fewest invalid panels; 0: never. A run valid at\n"
     "      once never retries. --single-point-nodes: where 4+\n"

@@ -74,9 +74,10 @@ struct RemeshParams {
   // retries, so it is unchanged. Each retry's seed is derived from `seed` (deterministic).
   // Not with locked panels, nor once a parameter change made edits part of the design; a
   // fresh solve that replays edits retries as the first solve did, before the edits.
-  // 4: cow.off at 46 panels, seeds 1-72, ends valid 54 times with 2, 64 with 4, 68 with 6;
-  // each retry costs a whole solve only on a run that would otherwise end invalid.
-  int retries = 4;
+  // 8: cow.off at 46 panels, seeds 1-144, ends valid 129 times with 4, 138 with 6, 142 with 8
+  // and 143 with 10 (bench/README.md, "Retries 4 -> 8"); each retry costs a whole solve only
+  // on a run that would otherwise end invalid, so a run that stays invalid takes 9 solves.
+  int retries = 8;
   // Where four or more planes meet: false (default) splits the node into valence-3 nodes
   // joined by short edges; true makes all of them pass through one point (paper 2.2).
   bool single_point_nodes = false;

@@ -49,7 +49,7 @@ export interface RemeshParams {
   weights?: { euclidean?: number; l2?: number; l21?: number; density?: number; boundary?: number };
   lloydIterations?: number; // k1, default 20
   panelRounds?: number; // k2, default 100 (stops at the first valid round, or after 50 rounds without fewer invalid panels)
-  retries?: number; // 0..10, default 2: solves from a new seeding when panels end invalid (the fewest invalid kept)
+  retries?: number; // 0..10, default 8: solves from a new seeding when panels end invalid (the fewest invalid kept)
   seeding?: 'farthest' | 'random';
   teleport?: boolean; // default true
   singlePointNodes?: boolean; // default false

@@ -404,7 +404,7 @@ test('a collapsed panel is named, marked and selected from its legend, then merg
 });
 
 // A closed sphere (epcot.off) into 4 panels at seed 1: the first solve's panels stay invalid;
-// the retry from a new seeding (RemeshParams.retries, default 4) makes a valid tetrahedron.
+// the retry from a new seeding (RemeshParams.retries, default 8) makes a valid tetrahedron.
 // The progress line says so while it retries, so the progress bar going back to the start
 // does not look like a fault.
 test('a solve whose panels stay invalid retries from a new seeding and says so', async () => {
@@ -424,7 +424,7 @@ test('a solve whose panels stay invalid retries from a new seeding and says so',
     assert.equal(await statusText(page), 'Done: 4 panels', 'valid after the retry');
     const texts = await page.evaluate(() => window.statusTexts);
     assert.ok(
-      texts.some((text) => /^Solving: .* · panels stayed invalid: new seeding, try 2 of 5 · /.test(text)),
+      texts.some((text) => /^Solving: .* · panels stayed invalid: new seeding, try 2 of 9 · /.test(text)),
       `the retry is named in the progress line (${texts.length} texts)`,
     );
     await screenshot(page, 'epcot-4-after-retry');
