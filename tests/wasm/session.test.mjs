@@ -192,6 +192,28 @@ test('a retry from a new seeding is in the progress and the report', () => {
   s.delete();
 });
 
+// The defaults flatfacet.d.ts documents are the ones the core applies (its retries comment
+// said "default 2" through two changes of the default): a solve with only `panels` set
+// reports its limits, and they must match the comments.
+test('the defaults documented in flatfacet.d.ts are the solver\'s', () => {
+  const dts = readFileSync(path.join(root, 'wasm', 'flatfacet.d.ts'), 'utf8');
+  const documented = (field) => {
+    const match = new RegExp(`^\\s*${field}\\?: number; //[^\\n]*default (\\d+)`, 'm').exec(dts);
+    assert.ok(match, `flatfacet.d.ts documents a default for ${field}`);
+    return Number(match[1]);
+  };
+  const s = session();
+  assert.equal(json(s.loadShape('saddle', 2000)).ok, true);
+  assert.equal(json(s.setParams(JSON.stringify({ panels: 12 }))).ok, true);
+  assert.equal(solve(s).stage, 'Done');
+  const { iterations } = json(s.reportJson());
+  assert.deepEqual(
+    [iterations.lloyd_limit, iterations.panel_rounds_limit, iterations.retries_limit],
+    [documented('lloydIterations'), documented('panelRounds'), documented('retries')],
+  );
+  s.delete();
+});
+
 // Native and wasm do the same arithmetic (the core is built without Eigen's SIMD reductions,
 // core/CMakeLists.txt; only the C libraries' atan2, cos and pow may differ in a last bit), so
 // the page's OBJ is the CLI's, byte for byte. epcot.off at 34 panels,
