@@ -243,6 +243,16 @@ int run_remesh(const std::vector<std::string>& argv) {
     std::fputs(remesh_summary_line(run).c_str(), stdout);
   else
     write_files_atomic(outputs);
+  // Exit 3 says only that something is invalid: name what, on stderr, so a run with --out
+  // alone does not end in silence.
+  const std::string invalid = invalid_panels_phrase(remesher.panels(), quality);
+  if (!invalid.empty()) {
+    const int solves = remesher.retries_done() + 1;
+    std::fprintf(stderr,
+                 "flatfacet: %s after %d solve%s; --report lists them; another --seed or more panels may make "
+                 "every panel valid\n",
+                 invalid.c_str(), solves, solves == 1 ? "" : "s");
+  }
   // Written, like invalid panels (exit 3): the designer sees the parts and can choose a
   // thinner material or larger panels.
   if (!folded.empty()) {

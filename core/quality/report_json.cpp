@@ -1,6 +1,8 @@
 #include "core/quality/report_json.h"
 
+#include <algorithm>
 #include <set>
+#include <utility>
 
 namespace ff {
 
@@ -63,36 +65,63 @@ void write_quality_fields(JsonWriter& j, const QualityReport& q) {
   j.value("collapsed_panels", q.collapsed_panels);
 }
 
-void write_invalid_panels(JsonWriter& j, const PanelMesh& pm, const QualityReport& q) {
+std::vector<InvalidPanel> list_invalid_panels(const PanelMesh& pm, const QualityReport& q) {
   std::set<int> ids(q.invalid_panel_ids.begin(), q.invalid_panel_ids.end());
   for (size_t i = 0; i < pm.issues.size(); ++i)
     if (!pm.issues[i].valid()) ids.insert(static_cast<int>(i));
-  j.begin_array("invalid");
+  std::vector<InvalidPanel> out;
   for (const int id : ids) {
     const size_t i = static_cast<size_t>(id);
-    j.begin_object();
-    j.value("panel", id);
-    j.value("cluster", i < pm.panel_cluster.size() ? pm.panel_cluster[i] : -1);
-    std::vector<std::string> problems;
-    if (i < pm.issues.size()) problems = panel_problems(pm.issues[i]);
+    InvalidPanel& p = out.emplace_back();
+    p.panel = id;
+    p.cluster = i < pm.panel_cluster.size() ? pm.panel_cluster[i] : -1;
+    if (i < pm.issues.size()) p.problems = panel_problems(pm.issues[i]);
     // Valid by its own flags but not by the independent checks: a panel phase bug, named so.
-    if (problems.empty()) problems.push_back("quality_check");
-    j.begin_array("problems");
-    for (const std::string& p : problems) j.value(nullptr, p);
-    j.end_array();
-    j.value("vertices", i < pm.panels.size() ? static_cast<int>(pm.panels[i].size()) : 0);
-    if (i < pm.issues.size() && pm.issues[i].spike_vertices > 0) j.value("spike_vertices", pm.issues[i].spike_vertices);
-    j.end_object();
+    if (p.problems.empty()) p.problems.push_back("quality_check");
+    p.vertices = i < pm.panels.size() ? static_cast<int>(pm.panels[i].size()) : 0;
+    p.spike_vertices = i < pm.issues.size() ? pm.issues[i].spike_vertices : 0;
   }
-  // Clusters that could not become a panel (no outline: not a disk, too few corners).
   for (const int c : pm.unbuilt_clusters) {
+    InvalidPanel& p = out.emplace_back();
+    p.cluster = c;
+    p.problems.push_back("unbuilt");
+  }
+  return out;
+}
+
+void write_invalid_panels(JsonWriter& j, const PanelMesh& pm, const QualityReport& q) {
+  j.begin_array("invalid");
+  for (const InvalidPanel& p : list_invalid_panels(pm, q)) {
     j.begin_object();
-    j.value("panel", -1).value("cluster", c);
-    j.begin_array("problems").value(nullptr, "unbuilt").end_array();
-    j.value("vertices", 0);
+    j.value("panel", p.panel);
+    j.value("cluster", p.cluster);
+    j.begin_array("problems");
+    for (const std::string& name : p.problems) j.value(nullptr, name);
+    j.end_array();
+    j.value("vertices", p.vertices);
+    if (p.spike_vertices > 0) j.value("spike_vertices", p.spike_vertices);
     j.end_object();
   }
   j.end_array();
+}
+
+std::string invalid_panels_phrase(const PanelMesh& pm, const QualityReport& q) {
+  const std::vector<InvalidPanel> invalid = list_invalid_panels(pm, q);
+  if (invalid.empty()) return "";
+  // Each name once, in panel_problems' order, then the two names list_invalid_panels adds.
+  static const char* const kOrder[] = {"not_simple", "flipped",      "not_star",      "spike",  "too_few_vertices",
+                                       "not_disk",   "acute_corner", "quality_check", "unbuilt"};
+  std::vector<std::pair<std::string, int>> counts;
+  for (const char* name : kOrder) counts.emplace_back(name, 0);
+  for (const InvalidPanel& p : invalid)
+    for (const std::string& name : p.problems)
+      for (auto& [known, count] : counts) count += known == name ? 1 : 0;
+  counts.erase(std::remove_if(counts.begin(), counts.end(), [](const auto& c) { return c.second == 0; }),
+               counts.end());
+  std::string out = std::to_string(invalid.size()) + (invalid.size() == 1 ? " panel" : " panels") + " invalid (";
+  for (size_t k = 0; k < counts.size(); ++k)
+    out += (k > 0 ? ", " : "") + counts[k].first + " " + std::to_string(counts[k].second);
+  return out + ")";
 }
 
 }  // namespace ff

@@ -25,9 +25,29 @@ std::vector<std::string> panel_problems(const PanelIssues& issues);
 // min_corner_angle_deg.
 void write_quality_fields(JsonWriter& j, const QualityReport& quality);
 
-// Writes "invalid": per invalid panel its id, cluster, problems and vertex count, so nothing
-// is hidden (DESIGN.md 3): the panels the quality measurement found invalid plus any the
-// panel phase flagged itself, in increasing order.
+// One invalid panel as the report lists it. panel -1: a cluster left unbuilt (no outline: not
+// a disk, too few corners), whose one problem is "unbuilt".
+struct InvalidPanel {
+  int panel = -1;
+  int cluster = -1;
+  std::vector<std::string> problems;  // panel_problems' names; "quality_check" when only the
+                                      // independent measurement found it invalid
+  int vertices = 0;
+  int spike_vertices = 0;
+};
+
+// Every invalid panel, so nothing is hidden (DESIGN.md 3): the panels the quality measurement
+// found invalid plus any the panel phase flagged itself, in increasing order, then the
+// unbuilt clusters.
+std::vector<InvalidPanel> list_invalid_panels(const PanelMesh& panels, const QualityReport& quality);
+
+// Writes "invalid": list_invalid_panels as objects (panel, cluster, problems, vertices, and
+// spike_vertices where there are any).
 void write_invalid_panels(JsonWriter& j, const PanelMesh& panels, const QualityReport& quality);
+
+// The invalid panels in a few words for a person, "3 panels invalid (not_star 2, unbuilt 1)":
+// each problem with the number of panels that have it, in panel_problems' order, then
+// "quality_check" and "unbuilt"; "" when none is invalid.
+std::string invalid_panels_phrase(const PanelMesh& panels, const QualityReport& quality);
 
 }  // namespace ff

@@ -190,11 +190,21 @@ assert a == b" "$tmp/r1.json" "$tmp/r2.json" && ok || bad "remesh: same seed gav
 
 # Retries: cow.off at 78 panels, seed 16 ends with invalid panels (exit 3) without them, and
 # valid after one retry from a new seeding with the default --retries 8 (a chaotic draw, as
-# tests/core/test_retries.cpp says).
-"$bin" remesh "$meshes/cow.off" --panels 78 --seed 16 --retries 0 --out "$tmp/cow0.obj" --report "$tmp/cow0.json" 2>"$tmp/err.txt"
+# tests/core/test_retries.cpp says). Exit 3 names the invalid panels on stderr, as many as
+# the report lists; a valid run says nothing there.
+"$bin" remesh "$meshes/cow.off" --panels 78 --seed 16 --retries 0 --out "$tmp/cow0.obj" --report "$tmp/cow0.json" 2>"$tmp/err0.txt"
 code0=$?
-"$bin" remesh "$meshes/cow.off" --panels 78 --seed 16 --out "$tmp/cow2.obj" --report "$tmp/cow2.json" 2>"$tmp/err.txt"
+"$bin" remesh "$meshes/cow.off" --panels 78 --seed 16 --out "$tmp/cow2.obj" --report "$tmp/cow2.json" 2>"$tmp/err2.txt"
 code2=$?
+python3 -c "
+import json, re, sys
+r = json.load(open(sys.argv[1]))
+line = open(sys.argv[2]).read()
+m = re.fullmatch(r'flatfacet: (\d+) panels? invalid \((.+)\) after 1 solve; --report lists them; another --seed or more panels may make every panel valid\n', line)
+assert m and int(m.group(1)) == len(r['invalid']) > 0, (line, r['invalid'])
+names = {p for entry in r['invalid'] for p in entry['problems']}
+assert {part.rsplit(' ', 1)[0] for part in m.group(2).split(', ')} == names, (line, names)" "$tmp/cow0.json" "$tmp/err0.txt" &&
+  [ ! -s "$tmp/err2.txt" ] && ok || bad "remesh exit 3: stderr names the invalid panels ($(cat "$tmp/err0.txt")); valid: silent ($(cat "$tmp/err2.txt"))"
 if [ "$code0" = 3 ] && [ "$code2" = 0 ] &&
   check_remesh 3 "$tmp/cow0.obj" "$tmp/cow0.json" 78 && check_remesh 0 "$tmp/cow2.obj" "$tmp/cow2.json" 78 &&
   python3 -c "

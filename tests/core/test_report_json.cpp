@@ -1,0 +1,71 @@
+// The report's list of invalid panels (core/quality/report_json.h) and the phrase the CLI
+// prints on stderr when it exits 3: every panel phase flag, the quality check's own finds and
+// the unbuilt clusters are named, each counted once per panel.
+#include <gtest/gtest.h>
+
+#include "core/quality/report_json.h"
+
+namespace ff {
+namespace {
+
+// Four triangles, each its own panel, issues set per test.
+PanelMesh four_panels() {
+  PanelMesh pm;
+  pm.vertices = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(1, 1, 0)};
+  pm.panels = {{0, 1, 2}, {1, 3, 2}, {0, 1, 3}, {0, 3, 2}};
+  pm.panel_cluster = {10, 11, 12, 13};
+  pm.issues.resize(4);
+  return pm;
+}
+
+TEST(ReportJson, NothingInvalidGivesNoPhrase) {
+  const PanelMesh pm = four_panels();
+  const QualityReport q;
+  EXPECT_TRUE(list_invalid_panels(pm, q).empty());
+  EXPECT_EQ(invalid_panels_phrase(pm, q), "");
+}
+
+TEST(ReportJson, CountsEachProblemOverPanelsInAFixedOrder) {
+  PanelMesh pm = four_panels();
+  pm.issues[0].spike_vertices = 2;
+  pm.issues[0].not_star = true;
+  pm.issues[2].not_star = true;
+  pm.unbuilt_clusters = {7};
+  QualityReport q;
+  q.invalid_panel_ids = {3};  // the independent check only: a panel phase bug, named so
+  const std::vector<InvalidPanel> list = list_invalid_panels(pm, q);
+  ASSERT_EQ(list.size(), 4u);
+  EXPECT_EQ(list[0].panel, 0);
+  EXPECT_EQ(list[0].cluster, 10);
+  EXPECT_EQ(list[0].problems, (std::vector<std::string>{"not_star", "spike"}));
+  EXPECT_EQ(list[0].spike_vertices, 2);
+  EXPECT_EQ(list[0].vertices, 3);
+  EXPECT_EQ(list[1].panel, 2);
+  EXPECT_EQ(list[2].panel, 3);
+  EXPECT_EQ(list[2].problems, (std::vector<std::string>{"quality_check"}));
+  EXPECT_EQ(list[3].panel, -1);
+  EXPECT_EQ(list[3].cluster, 7);
+  EXPECT_EQ(list[3].problems, (std::vector<std::string>{"unbuilt"}));
+  EXPECT_EQ(invalid_panels_phrase(pm, q), "4 panels invalid (not_star 2, spike 1, quality_check 1, unbuilt 1)");
+
+  PanelMesh one = four_panels();
+  one.issues[1].flipped = true;
+  EXPECT_EQ(invalid_panels_phrase(one, QualityReport{}), "1 panel invalid (flipped 1)");
+}
+
+// Every name panel_problems can give reaches the phrase (none is dropped for want of a place
+// in its order).
+TEST(ReportJson, EveryProblemNameIsInThePhrase) {
+  PanelMesh pm = four_panels();
+  PanelIssues& all = pm.issues[1];
+  all.not_simple = all.flipped = all.not_star = all.too_few_vertices = all.not_disk = all.acute_corner = true;
+  all.spike_vertices = 1;
+  const std::string phrase = invalid_panels_phrase(pm, QualityReport{});
+  const std::vector<std::string> names = panel_problems(all);
+  EXPECT_EQ(names.size(), 7u);
+  for (const std::string& name : names) EXPECT_NE(phrase.find(name + " 1"), std::string::npos) << name;
+  EXPECT_EQ(phrase.rfind("1 panel invalid (", 0), 0u) << phrase;
+}
+
+}  // namespace
+}  // namespace ff
