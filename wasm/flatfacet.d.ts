@@ -163,7 +163,7 @@ export interface Problems extends Status {
   spikes: number[]; // xyz triples: panel vertices farther than the spike distance from their corner
   flippedEdges: number[]; // pairs of xyz triples (6 numbers per edge): edges against their panel's orientation
   acuteCorners: number[]; // xyz triples: panel corners below the minimum corner angle (minCornerAngleDeg)
-  invalidPanels: number[]; // panel ids
+  invalidPanels: number[]; // panel ids of the report's "invalid" list (the quality check's and the panel phase's own)
   unbuiltClusters: number[]; // cluster ids that could not become a panel (their faces stay uncovered)
 }
 

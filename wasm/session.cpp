@@ -237,9 +237,12 @@ std::string Session::problems() {
     if (q)
       for (const int v : q->acute_corner_vertex_ids)
         for (int k = 0; k < 3; ++k) j.value(nullptr, pm->vertices[static_cast<size_t>(v)][k]);
+    // The report's invalid panels (the quality check's and the panel phase's own), so the
+    // panels shown red are the ones the report and the status line count.
     j.end_array().begin_array("invalidPanels");
     if (q)
-      for (const int p : q->invalid_panel_ids) j.value(nullptr, p);
+      for (const InvalidPanel& p : list_invalid_panels(*pm, *q))
+        if (p.panel >= 0) j.value(nullptr, p.panel);
     j.end_array().begin_array("unbuiltClusters");
     if (pm)
       for (const int c : pm->unbuilt_clusters) j.value(nullptr, c);

@@ -430,3 +430,25 @@ test('a solve whose panels stay invalid retries from a new seeding and says so',
     await screenshot(page, 'epcot-4-after-retry');
   });
 });
+
+// The Yas Island grid shell into 4 panels stays invalid through every retry (seed 1): the
+// status line says what is wrong with the panels shown red, that a cluster found no panel, and
+// what to try; the Invalid row counts the same, with the problems in its hint.
+test('panels that stay invalid are named with their problems and what to try', async () => {
+  const params = { panels: 4, seed: 1, weights: { euclidean: 1, l2: 1, l21: 1, boundary: 1 }, lloydIterations: 20, panelRounds: 100, seeding: 'farthest', teleport: true, singlePointNodes: false, optimizePlanes: true };
+  await suite.withPage(exampleLink(suite.url, 'YasIsland', params), async (page) => {
+    await waitForDone(page);
+    const text = await statusText(page);
+    assert.match(
+      text,
+      /^(\d+) invalid panels? \(shown red: [a-z -]+ \d+(, [a-z -]+ \d+)*\); 1 cluster could not become a panel; another seed or more panels may make every panel valid\. Done: \d+ panels$/,
+      text,
+    );
+    const red = Number(/^(\d+)/.exec(text)[1]);
+    const row = page.locator('#stats dt:text-is("Invalid") + dd');
+    assert.equal(await row.getAttribute('class'), 'warn', 'the Invalid row warns');
+    assert.equal((await row.textContent()).trim(), String(red + 1), 'the Invalid row counts the red panels and the cluster');
+    assert.match(await row.getAttribute('title'), /: (flipped|not star-shaped|self-intersecting) \d+/);
+    await screenshot(page, 'yas-4-invalid-named');
+  });
+});

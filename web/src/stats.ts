@@ -1,6 +1,7 @@
 // The quality panel: the report's numbers in words a designer reads (DESIGN.md 5 targets).
 import type { QualityReport, SolveResult } from './protocol.ts';
 import { coverageRow } from './coverage.ts';
+import { summarizeInvalid } from './invalidPanels.ts';
 import { statsList, type StatRow } from './statsList.ts';
 
 function numberAt(report: QualityReport, key: string): number | null {
@@ -60,7 +61,10 @@ export function statsRows(result: SolveResult): Row[] {
   const timings = typeof report.timings_s === 'object' && report.timings_s !== null ? (report.timings_s as Record<string, unknown>) : {};
   const total = typeof timings.total === 'number' ? timings.total : null;
   const share = valence3Share(report);
-  const invalid = countAt(report, 'invalid_panels');
+  // The report's "invalid" list (the status line's count too), else its count.
+  const summary = summarizeInvalid(report);
+  const invalid = summary ? summary.panels + summary.unbuilt : countAt(report, 'invalid_panels');
+  const invalidWhy = summary && summary.problems.length > 0 ? `: ${summary.problems.map(([words, count]) => `${words} ${count}`).join(', ')}` : '';
   const topology = report.topology_preserved;
   const minAngle = numberAt(report, 'min_corner_angle_deg');
   const hausdorff = numberAt(report, 'hausdorff');
@@ -83,7 +87,7 @@ export function statsRows(result: SolveResult): Row[] {
     ...(undirected !== null
       ? [{ label: 'No direction', value: String(undirected), hint: 'triangles where the direction expression is zero or along the surface normal: no stretch there' }]
       : []),
-    { label: 'Invalid', value: invalid === null ? '–' : String(invalid), hint: 'panels that are not simple, star-shaped and spike-free (shown red)', warn: (invalid ?? 0) > 0 },
+    { label: 'Invalid', value: invalid === null ? '–' : String(invalid), hint: `panels that are not simple, star-shaped and spike-free (shown red), and clusters that could not become panels${invalidWhy}`, warn: (invalid ?? 0) > 0 },
     { label: 'Topology', value: topology === true ? 'preserved' : topology === false ? 'changed' : '–', hint: 'same Euler characteristic and boundary loops as the input', warn: topology === false },
     { label: 'Solve time', value: `${result.solveSeconds.toFixed(2)} s`, hint: total === null ? 'in the worker' : `in the worker; the core reports ${total.toFixed(2)} s` },
   ];

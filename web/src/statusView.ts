@@ -3,19 +3,20 @@
 // when something failed.
 import type { Progress } from '@flatfacet/wasm';
 import { countOutcome, element } from './dom.ts';
+import { invalidPhrase, summarizeInvalid } from './invalidPanels.ts';
 import type { SolveResult } from './protocol.ts';
 
-// "Done: N panels" after a solve, with what went wrong in front of it.
+// "Done: N panels" after a solve, with what went wrong in front of it (invalidPanels.ts).
 export function solvedSummary(result: SolveResult): { text: string; warning: boolean } {
   const panels = typeof result.report.panels === 'number' ? result.report.panels : result.panelOffsets.length - 1;
-  const invalid = result.problems.invalidPanels.length;
-  const unbuilt = result.problems.unbuiltClusters.length;
-  const warnings = [
-    invalid > 0 ? `${invalid} invalid panel${invalid === 1 ? '' : 's'} (shown red)` : '',
-    unbuilt > 0 ? `${unbuilt} cluster${unbuilt === 1 ? '' : 's'} could not become panels` : '',
-  ].filter((text) => text !== '');
-  const warning = warnings.length > 0 ? `${warnings.join('; ')}. ` : '';
-  return { text: `${warning}Done: ${panels} panels`, warning: warning !== '' };
+  // Without panels the report has no "invalid" list: the problem list still has the clusters.
+  const summary = summarizeInvalid(result.report) ?? {
+    panels: result.problems.invalidPanels.length,
+    unbuilt: result.problems.unbuiltClusters.length,
+    problems: [],
+  };
+  const warning = invalidPhrase(summary);
+  return { text: warning ? `${warning}. Done: ${panels} panels` : `Done: ${panels} panels`, warning: warning !== '' };
 }
 
 // A retry starts the stages over (RemeshParams.retries): say so, or the bar going back looks
