@@ -64,12 +64,17 @@ export function summarizeInvalid(report: QualityReport): InvalidSummary | null {
   return { panels, unbuilt, problems };
 }
 
+// "not star-shaped 2, spike 1": what is wrong with the panels, '' when nothing is named.
+export function problemsPhrase(summary: InvalidSummary): string {
+  return summary.problems.map(([words, count]) => `${words} ${count}`).join(', ');
+}
+
 // "2 invalid panels (shown red: not star-shaped 1, spike 1); 1 cluster could not become a
 // panel; another seed or more panels may make every panel valid", or '' when all are valid.
 export function invalidPhrase(summary: InvalidSummary): string {
   const parts: string[] = [];
   if (summary.panels > 0) {
-    const what = summary.problems.map(([words, count]) => `${words} ${count}`).join(', ');
+    const what = problemsPhrase(summary);
     parts.push(`${summary.panels} invalid panel${summary.panels === 1 ? '' : 's'} (shown red${what ? `: ${what}` : ''})`);
   }
   if (summary.unbuilt > 0) {

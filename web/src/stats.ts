@@ -1,7 +1,7 @@
 // The quality panel: the report's numbers in words a designer reads (DESIGN.md 5 targets).
 import type { QualityReport, SolveResult } from './protocol.ts';
 import { coverageRow } from './coverage.ts';
-import { summarizeInvalid } from './invalidPanels.ts';
+import { problemsPhrase, summarizeInvalid } from './invalidPanels.ts';
 import { statsList, type StatRow } from './statsList.ts';
 
 function numberAt(report: QualityReport, key: string): number | null {
@@ -64,7 +64,7 @@ export function statsRows(result: SolveResult): Row[] {
   // The report's "invalid" list (the status line's count too), else its count.
   const summary = summarizeInvalid(report);
   const invalid = summary ? summary.panels + summary.unbuilt : countAt(report, 'invalid_panels');
-  const invalidWhy = summary && summary.problems.length > 0 ? `: ${summary.problems.map(([words, count]) => `${words} ${count}`).join(', ')}` : '';
+  const invalidWhy = summary && summary.problems.length > 0 ? `: ${problemsPhrase(summary)}` : '';
   const topology = report.topology_preserved;
   const minAngle = numberAt(report, 'min_corner_angle_deg');
   const hausdorff = numberAt(report, 'hausdorff');
