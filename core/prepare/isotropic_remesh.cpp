@@ -178,6 +178,7 @@ void validate(const TriMesh& mesh, const IsotropicRemeshOptions& o) {
     throw InputError("remeshing: the target edge length must be a positive number");
   if (o.iterations < 0 || o.iterations > 1000 || o.smoothing_steps < 0 || o.smoothing_steps > 100)
     throw InputError("remeshing: iterations must be between 0 and 1000, smoothing steps between 0 and 100");
+  if (o.max_triangles < 1) throw InputError("remeshing: the triangle limit must be at least 1");
   if (!o.vertex_density.empty()) {
     if (o.vertex_density.size() != mesh.positions.size())
       throw InputError("remeshing: the density has " + std::to_string(o.vertex_density.size()) +
@@ -208,7 +209,8 @@ IsotropicRemeshResult isotropic_remesh(const TriMesh& mesh, const IsotropicRemes
   }
   mean_density = area_sum > 0.0 ? mean_density / area_sum : 1.0;
   // A density redistributes about the same count (its mean is the mean), so this holds too.
-  if (estimate > kMaxEstimatedTriangles)
+  const double limit = std::min(kMaxEstimatedTriangles, static_cast<double>(options.max_triangles));
+  if (estimate > limit)
     throw InputError("remeshing: a target edge length of " + std::to_string(L) + " would need about " +
                      std::to_string(static_cast<long long>(estimate)) + " triangles, more than fit in memory");
 
@@ -227,9 +229,21 @@ IsotropicRemeshResult isotropic_remesh(const TriMesh& mesh, const IsotropicRemes
     for (const int v : segments[at(i)]) s.vertex_hint[at(v)] = i;
   result.feature_edges = static_cast<int>(segments.size());
   if (!density.empty()) s.vertex_density = density;
+  // The area says nothing of slivers: a triangle to a vertex far from the rest has little
+  // area for its length, yet each of its long edges is split into at least 3/4 of its
+  // length / target pieces, each adding a triangle on either side.
+  double split_estimate = mesh.num_faces();
+  for (int e = 0; e < s.mesh.num_edges(); ++e)
+    split_estimate += 2.0 * std::max(0.0, 0.75 * s.mesh.edge_length(e) / s.target(e) - 1.0);
+  if (split_estimate > limit)
+    throw InputError("remeshing: a target edge length of " + std::to_string(L) + " would split the long edges into about " +
+                     std::to_string(static_cast<long long>(split_estimate)) + " triangles, more than the " +
+                     std::to_string(static_cast<long long>(limit)) + " allowed; " +
+                     prepare_detail::longest_edge_phrase(s) + " (a vertex far from the rest of the mesh?)");
 
+  const long long max_faces = static_cast<long long>(limit);
   for (int it = 0; it < options.iterations; ++it) {
-    prepare_detail::split_long_edges(s);
+    prepare_detail::split_long_edges(s, max_faces);
     prepare_detail::collapse_short_edges(s);
     prepare_detail::flip_edges(s);
     for (int k = 0; k < options.smoothing_steps; ++k) smooth_and_project(s, projector, density, L, mean_density);

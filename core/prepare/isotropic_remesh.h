@@ -26,6 +26,10 @@ struct IsotropicRemeshOptions {
   int smoothing_steps = 2;          // smoothing + projection steps per round
   double feature_angle_deg = 44.0;  // dihedral angle above which an edge is a crease; >= 180: none
   std::vector<double> vertex_density;  // empty (uniform) or one value > 0 per input vertex
+  // The most triangles the remeshing may make at any time (memory): a target that needs more,
+  // by area or by the splits of the longest edges, is refused up front, and the splitting
+  // stops with an InputError if it gets past this anyway.
+  long long max_triangles = 4'000'000;
 };
 
 struct IsotropicRemeshResult {
@@ -36,8 +40,9 @@ struct IsotropicRemeshResult {
 };
 
 // mesh: clean (clean_mesh: manifold, consistently oriented). Throws InputError for a bad
-// target length, a density of the wrong size or with values <= 0, or a mesh that is not
-// a clean manifold.
+// target length, a density of the wrong size or with values <= 0, a mesh that is not a
+// clean manifold, or more than max_triangles (naming the longest edge for the target: a
+// vertex far from the rest makes huge slivers that no target suits).
 IsotropicRemeshResult isotropic_remesh(const TriMesh& mesh, const IsotropicRemeshOptions& options);
 
 // A per-input-vertex field carried to arbitrary points by interpolation at their closest

@@ -158,7 +158,15 @@ PreparedSurface prepare_surface(const TriMesh& mesh, int panels, const std::vect
   remesh.target_edge_length = target;
   remesh.feature_angle_deg = options.feature_angle_deg;
   remesh.vertex_density = sizing;
-  IsotropicRemeshResult result = isotropic_remesh(mesh, remesh);
+  // The preparation's own limit with room for the splitting's overshoot (the area estimate
+  // above keeps a sound mesh well inside it).
+  remesh.max_triangles = 2LL * kPrepareMaxTriangles;
+  IsotropicRemeshResult result;
+  try {
+    result = isotropic_remesh(mesh, remesh);
+  } catch (const InputError& e) {
+    throw InputError("preparing the mesh for " + panels_text + ": " + e.what());
+  }
   out.mesh = std::move(result.mesh);
   if (!density.empty())
     out.density = per_vertex ? std::move(result.vertex_density) : transfer_face_field(mesh, density, out.mesh);

@@ -3,9 +3,12 @@
 #include <Eigen/Geometry>
 #include <cmath>
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <utility>
 #include <vector>
+
+#include "core/util/error.h"
 
 namespace ff::prepare_detail {
 
@@ -63,7 +66,28 @@ void RemeshState::grow() {
   if (!vertex_density.empty()) vertex_density.resize(nv, 0.0);
 }
 
-void split_long_edges(RemeshState& s) {
+std::string longest_edge_phrase(const RemeshState& s) {
+  const EditMesh& m = s.mesh;
+  int worst = -1;
+  double worst_ratio = 0.0;
+  for (int e = 0; e < m.num_edges(); ++e) {
+    if (m.edge_removed(e)) continue;
+    const double ratio = m.edge_length(e) / s.target(e);
+    if (worst < 0 || ratio > worst_ratio) worst = e, worst_ratio = ratio;
+  }
+  if (worst < 0) return "";
+  const auto point = [](const Vec3& p) {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "(%.4g, %.4g, %.4g)", p.x(), p.y(), p.z());
+    return std::string(buf);
+  };
+  char ratio[32];
+  std::snprintf(ratio, sizeof ratio, "%.3g", worst_ratio);
+  return "the edge from " + point(m.position(m.to(2 * worst + 1))) + " to " + point(m.position(m.to(2 * worst))) +
+         " is " + ratio + " times its target";
+}
+
+void split_long_edges(RemeshState& s, long long max_faces) {
   EditMesh& m = s.mesh;
   // Passes of longest-first splits (Rivara's longest-edge bisection terminates and keeps
   // the shapes; splitting in index order can chase the same long edge forever). Each pass
@@ -80,6 +104,10 @@ void split_long_edges(RemeshState& s) {
     for (const auto& item : queue) {
       const int e = item.second;
       if (m.edge_length(e) <= 4.0 / 3.0 * s.target(e)) continue;
+      // Slivers many targets long (a stray vertex) would split without end: stop in time.
+      if (max_faces > 0 && m.num_faces() > max_faces)
+        throw InputError("remeshing: splitting the long edges went past " + std::to_string(max_faces) +
+                         " triangles; " + longest_edge_phrase(s) + " (a vertex far from the rest of the mesh?)");
       const int a = m.to(2 * e + 1), b = m.to(2 * e);
       const int first_new_edge = m.num_edges();
       const int v = m.split(e, 0.5 * (m.position(a) + m.position(b)));

@@ -1,6 +1,7 @@
 #pragma once
 // Internal to core/prepare: the state isotropic_remesh() carries through its rounds, and the
 // split / collapse / flip passes with their feature rules (isotropic_remesh.h says which).
+#include <string>
 #include <vector>
 
 #include "core/prepare/edit_mesh.h"
@@ -25,8 +26,13 @@ struct RemeshState {
 };
 
 // Splits every edge longer than 4/3 of its target at its midpoint, the new halves too, so no
-// edge stays too long. The new vertex inherits the edge's feature flag.
-void split_long_edges(RemeshState& s);
+// edge stays too long. The new vertex inherits the edge's feature flag. Throws InputError
+// when the mesh gets past max_faces triangles (> 0; 0: no limit).
+void split_long_edges(RemeshState& s, long long max_faces = 0);
+
+// "the edge from (x, y, z) to (x, y, z) is R times its target": the edge of the largest
+// length / target, for messages; "" without edges.
+std::string longest_edge_phrase(const RemeshState& s);
 // Collapses edges shorter than 4/5 of their target into the end that keeps the rules.
 void collapse_short_edges(RemeshState& s);
 // Flips non-feature edges where the valence deviation goes down and no triangle folds.

@@ -14,6 +14,7 @@
 #include "core/util/angles.h"
 #include "core/util/error.h"
 #include "remesh_checks.h"
+#include "synthetic_meshes.h"
 #include "test_meshes.h"
 
 namespace ff {
@@ -151,6 +152,48 @@ TEST(IsotropicRemesh, ARoofKeepsItsCornersAndBoundary) {
     if (std::abs(std::abs(p.x()) - 15.0) < 1e-9 && std::abs(std::abs(p.y()) - 15.0) < 1e-9) ++corners;
   EXPECT_EQ(corners, 4);
   EXPECT_GE(test::edge_stats(r.mesh, options.target_edge_length).share(), 0.99);
+}
+
+// A vertex moved far from the rest (a typo in a coordinate: 1e9 on a grid 10 across) makes
+// slivers whose area is modest for their length: a target from the area (as the preparation
+// chooses it) passes the area estimate, yet splitting their edges would make hundreds of
+// millions of triangles. Refused before any splitting, naming the edge.
+TEST(IsotropicRemesh, AStrayVertexIsRefusedUpFrontAndNamed) {
+  TriMesh stray = test::grid(10, 10);
+  stray.positions[60].z() = 1e9;  // (5, 5): six slivers 1e9 long
+  IsotropicRemeshOptions options;
+  options.target_edge_length = test::edge_length_for(stray, 2000);
+  try {
+    isotropic_remesh(stray, options);
+    FAIL() << "a stray vertex was remeshed";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("would split the long edges into about"), std::string::npos) << message;
+    EXPECT_NE(message.find("(5, 5, 1e+09)"), std::string::npos) << message;
+    EXPECT_NE(message.find("a vertex far from the rest of the mesh?"), std::string::npos) << message;
+  }
+}
+
+// The splitting itself stops at the limit, whatever the estimates said: a sliver 100 long and
+// 1 wide, to a target of 1, estimates 116 triangles by area and 297 by its edges, yet its
+// splits (cross edges to the far corner are long too) pass 300 before the collapses.
+TEST(IsotropicRemesh, SplittingStopsAtTheTriangleLimit) {
+  TriMesh sliver;
+  sliver.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0.5, 100, 0)};
+  sliver.triangles = {{0, 1, 2}};
+  IsotropicRemeshOptions options;
+  options.target_edge_length = 1.0;
+  options.iterations = 1;
+  EXPECT_GT(isotropic_remesh(sliver, options).mesh.num_faces(), 100);  // no limit in the way
+  options.max_triangles = 300;
+  try {
+    isotropic_remesh(sliver, options);
+    FAIL() << "the splitting went past the limit";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("splitting the long edges went past 300 triangles"), std::string::npos) << e.what();
+  }
+  options.max_triangles = 0;
+  EXPECT_THROW(isotropic_remesh(sliver, options), InputError);
 }
 
 TEST(IsotropicRemesh, BadOptionsThrow) {

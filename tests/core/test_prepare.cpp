@@ -11,6 +11,7 @@
 #include "core/util/error.h"
 #include "panel_checks.h"
 #include "remesh_checks.h"
+#include "synthetic_meshes.h"
 #include "test_meshes.h"
 
 namespace ff {
@@ -133,6 +134,22 @@ TEST(Prepare, ImpossibleRequestsAreClearErrors) {
     prepare_surface(epcot, 1000000, {});
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("ask for at most 100,000 panels"), std::string::npos) << e.what();
+  }
+}
+
+// A vertex far from the rest (one coordinate typed as 1e9 on a grid 10 across): refining for
+// the panels would split its slivers into hundreds of millions of triangles. A clear error
+// at once, naming the preparation and the edge, instead of running out of memory.
+TEST(Prepare, AStrayVertexIsAClearErrorNotAnOutOfMemory) {
+  TriMesh stray = test::grid(10, 10);
+  stray.positions[60].z() = 1e9;
+  try {
+    prepare_surface(stray, 200, {});
+    FAIL() << "a stray vertex was prepared";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_EQ(message.rfind("preparing the mesh for 200 panels: remeshing: ", 0), 0u) << message;
+    EXPECT_NE(message.find("(5, 5, 1e+09)"), std::string::npos) << message;
   }
 }
 
