@@ -86,6 +86,22 @@ test('bad requests are refused by name and the loaded mesh stays', () => {
   s.delete();
 });
 
+// One coordinate of the grid shell typed as 4294967296: refining it for 200 panels would split
+// its slivers into millions of triangles, past the 4 GB a wasm module can have (the worker
+// died). The core refuses at once, naming the edge, and the mesh as loaded stays.
+test('a vertex far from the rest is refused by name, not by running out of memory', () => {
+  const lines = yas.toString('utf8').split('\n');
+  const fields = lines[892].split(' ');
+  fields[1] = '4294967296';
+  lines[892] = fields.join(' ');
+  const { s, info } = loaded('stray.off', Buffer.from(lines.join('\n')));
+  const status = json(s.prepare(200, 0, 0));
+  assert.equal(status.ok, false);
+  assert.match(status.message, /^preparing the mesh for 200 panels: .*4\.295e\+09.*a vertex far from the rest of the mesh\?\)$/);
+  assert.equal(s.inputIndices().length, info.triangles * 3, 'still the loaded mesh');
+  s.delete();
+});
+
 function meshOf(s) {
   return { positions: s.inputPositions(), indices: s.inputIndices() };
 }
