@@ -20,7 +20,6 @@ namespace {
 size_t at(int i) { return static_cast<size_t>(i); }
 
 constexpr double kMaxLengthRatio = 8.0;           // density moves the local target by at most this factor
-constexpr double kMaxEstimatedTriangles = 2.0e7;  // refuse targets that would need more (memory)
 constexpr double kMinCreaseLength = 3.0;          // crease networks shorter than this many L are noise
 
 // Local targets from the density: L * sqrt(mean / d), clamped.
@@ -209,7 +208,7 @@ IsotropicRemeshResult isotropic_remesh(const TriMesh& mesh, const IsotropicRemes
   }
   mean_density = area_sum > 0.0 ? mean_density / area_sum : 1.0;
   // A density redistributes about the same count (its mean is the mean), so this holds too.
-  const double limit = std::min(kMaxEstimatedTriangles, static_cast<double>(options.max_triangles));
+  const double limit = static_cast<double>(options.max_triangles);
   if (estimate > limit)
     throw InputError("remeshing: a target edge length of " + std::to_string(L) + " would need about " +
                      std::to_string(static_cast<long long>(estimate)) + " triangles, more than fit in memory");
@@ -238,12 +237,11 @@ IsotropicRemeshResult isotropic_remesh(const TriMesh& mesh, const IsotropicRemes
   if (split_estimate > limit)
     throw InputError("remeshing: a target edge length of " + std::to_string(L) + " would split the long edges into about " +
                      std::to_string(static_cast<long long>(split_estimate)) + " triangles, more than the " +
-                     std::to_string(static_cast<long long>(limit)) + " allowed; " +
+                     std::to_string(options.max_triangles) + " allowed; " +
                      prepare_detail::longest_edge_phrase(s) + " (a vertex far from the rest of the mesh?)");
 
-  const long long max_faces = static_cast<long long>(limit);
   for (int it = 0; it < options.iterations; ++it) {
-    prepare_detail::split_long_edges(s, max_faces);
+    prepare_detail::split_long_edges(s, options.max_triangles);
     prepare_detail::collapse_short_edges(s);
     prepare_detail::flip_edges(s);
     for (int k = 0; k < options.smoothing_steps; ++k) smooth_and_project(s, projector, density, L, mean_density);

@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/mesh/half_edges.h"
 #include "core/util/error.h"
 
 namespace ff::prepare_detail {
@@ -76,15 +77,10 @@ std::string longest_edge_phrase(const RemeshState& s) {
     if (worst < 0 || ratio > worst_ratio) worst = e, worst_ratio = ratio;
   }
   if (worst < 0) return "";
-  const auto point = [](const Vec3& p) {
-    char buf[96];
-    std::snprintf(buf, sizeof buf, "(%.4g, %.4g, %.4g)", p.x(), p.y(), p.z());
-    return std::string(buf);
-  };
   char ratio[32];
   std::snprintf(ratio, sizeof ratio, "%.3g", worst_ratio);
-  return "the edge from " + point(m.position(m.to(2 * worst + 1))) + " to " + point(m.position(m.to(2 * worst))) +
-         " is " + ratio + " times its target";
+  return "the edge from " + detail::format_point(m.position(m.to(2 * worst + 1))) + " to " +
+         detail::format_point(m.position(m.to(2 * worst))) + " is " + ratio + " times its target";
 }
 
 void split_long_edges(RemeshState& s, long long max_faces) {
