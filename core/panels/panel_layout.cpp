@@ -90,6 +90,20 @@ PanelLayout::PanelLayout(const TriMesh& mesh, const MeshTopology& topology, cons
     }
     place_group_nodes(static_cast<int>(g));
   }
+  on_short_loop_.assign(positions_.size(), 0);
+  std::vector<int> loop_groups;
+  for (const std::vector<int>& loop : topology_.boundary_loops) {
+    loop_groups.clear();
+    for (const int v : loop) {
+      const int corner = graph_.corner_of_vertex[static_cast<size_t>(v)];
+      if (corner < 0) continue;
+      const int g = groups_.group_of_corner[static_cast<size_t>(corner)];
+      if (std::find(loop_groups.begin(), loop_groups.end(), g) == loop_groups.end()) loop_groups.push_back(g);
+      if (loop_groups.size() >= 3) break;
+    }
+    if (loop_groups.size() >= 3) continue;
+    for (const int v : loop) on_short_loop_[static_cast<size_t>(v)] = 1;
+  }
   faces_normal_.assign(clusters, Vec3::Zero());
   for (size_t f = 0; f < mesh_.triangles.size() && f < labels_.size(); ++f) {
     const Triangle& t = mesh_.triangles[f];
@@ -332,7 +346,10 @@ void PanelLayout::build_panel(int c) {
     const std::vector<int> keep =
         fixed == 0 ? thin_closed_border(projected, tolerance)
                    : thin_border(poly.points[(at + fixed - 1) % fixed], projected, poly.points[at % fixed], tolerance,
-                                 fixed + runs.size() < 3 ? 1 : 0);
+                                 fixed + runs.size() < 3 || on_short_loop_[static_cast<size_t>(
+                                                                border[static_cast<size_t>(it->begin)])]
+                                     ? 1
+                                     : 0);
     std::vector<Vec3> points, references;
     std::vector<int> corners;
     for (int j : keep) {

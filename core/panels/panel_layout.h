@@ -252,6 +252,10 @@ class PanelLayout {
   std::vector<char> single_;
   std::vector<Vec3> single_point_;
   std::vector<std::vector<int>> groups_of_cluster_;
+  // Per mesh vertex: on a boundary loop that meets fewer than three node groups (a small hole
+  // between two panels). Each panel thins its own border runs, so both could drop every border
+  // vertex of such a loop and close the hole; their runs along it keep at least one.
+  std::vector<char> on_short_loop_;
   std::vector<PanelPolygon> polygons_;
   std::vector<PanelIssues> issues_;
   // Per cluster: the sum of its faces' area normals. A panel facing away from it is
