@@ -1,6 +1,6 @@
 // flatfacet: the command-line front of the core. Exit codes (DESIGN.md 4): 0 done,
-// 3 written but some panels invalid, 2 usage or input error (one line on stderr, nothing
-// written), 1 internal error.
+// 3 written but some panels invalid or the topology changed, 2 usage or input error (one
+// line on stderr, nothing written), 1 internal error.
 #include <cstdio>
 #include <exception>
 #include <new>
@@ -71,8 +71,8 @@ const char* kUsage =
     "      triangles to about 100 per panel; other meshes are used as they are. The report's\n"
     "      \"prepare\" says what was done. --prepare off: always as they are. --edge-length L:\n"
     "      remesh to that target edge length (in mesh units) whatever the panel count.\n"
-    "      Exit 0: every panel valid; 3: written, some panels invalid (counted by problem on\n"
-    "      stderr, listed in the report).\n"
+    "      Exit 0: every panel valid and the topology kept; 3: written, some panels invalid\n"
+    "      (counted by problem on stderr, listed in the report) or the topology changed.\n"
     "      The input is repaired first (the report's \"cleanup\" and \"repair\" say how): coincident\n"
     "      vertices welded, degenerate, duplicate and sliver faces removed, orientation made\n"
     "      consistent. --fill-holes N (0..500, default 0 = off): fill every hole (boundary loop)\n"

@@ -253,13 +253,23 @@ int run_remesh(const std::vector<std::string>& argv) {
                  "every panel valid\n",
                  invalid.c_str(), solves, solves == 1 ? "" : "s");
   }
+  // Valid panels that still close a hole or join two sheets (topology_preserved false): the
+  // same exit 3, named.
+  const std::string topology = topology_phrase(quality);
+  if (!topology.empty() && invalid.empty())
+    std::fprintf(stderr, "flatfacet: %s; --report has both; another --seed or more panels may keep it\n",
+                 topology.c_str());
+  // Flat to 1e-9 by construction; not where the coordinates cannot hold that (far from the
+  // origin): the file is still written (fabrication tolerances are ~1e-4), the designer told.
+  const std::string planarity = planarity_phrase(quality);
+  if (!planarity.empty()) std::fprintf(stderr, "flatfacet: warning: %s\n", planarity.c_str());
   // Written, like invalid panels (exit 3): the designer sees the parts and can choose a
   // thinner material or larger panels.
   if (!folded.empty()) {
     const FabricationOptions& fab = o.fabrication.options;
     std::fputs(folded_parts_line(folded, fab.thickness, unit_name(fab.units)).c_str(), stderr);
   }
-  return all_panels_valid(remesher.panels(), quality) && folded.empty() ? 0 : 3;
+  return result_valid(remesher.panels(), quality) && folded.empty() ? 0 : 3;
 }
 
 }  // namespace ff::cli

@@ -2,6 +2,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 
 namespace ff {
@@ -22,6 +23,17 @@ double polygon_planarity(const std::vector<Vec3>& points) {
       diameter2 = std::max(diameter2, (points[i] - points[j]).squaredNorm());
   }
   return diameter2 > 0.0 ? deviation / std::sqrt(diameter2) : 0.0;
+}
+
+double planarity_rounding_floor(const std::vector<Vec3>& points) {
+  if (points.size() < 4) return 0.0;
+  double largest = 0.0, diameter2 = 0.0;
+  for (size_t i = 0; i < points.size(); ++i) {
+    largest = std::max(largest, points[i].cwiseAbs().maxCoeff());
+    for (size_t j = i + 1; j < points.size(); ++j)
+      diameter2 = std::max(diameter2, (points[i] - points[j]).squaredNorm());
+  }
+  return diameter2 > 0.0 ? DBL_EPSILON * largest / std::sqrt(diameter2) : 0.0;
 }
 
 std::vector<double> corner_polygon_planarity(const TriMesh& mesh, const PanelMesh& pm) {

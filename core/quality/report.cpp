@@ -272,7 +272,12 @@ QualityReport measure_quality(const TriMesh& input, const MeshTopology& input_to
     const std::vector<Vec2> poly2d = panel_polygon_2d(panels, p, frame);
     std::vector<Vec3> points;
     for (int v : poly) points.push_back(panels.vertices[static_cast<size_t>(v)]);
-    r.max_planarity = std::max(r.max_planarity, polygon_planarity(points));
+    const double planarity = polygon_planarity(points);
+    if (r.max_planarity_panel < 0 || planarity > r.max_planarity) {
+      r.max_planarity = planarity;
+      r.max_planarity_panel = p;
+    }
+    r.planarity_floor = std::max(r.planarity_floor, planarity_rounding_floor(points));
 
     const bool simple = is_simple(poly2d, tol);
     const std::vector<Vec2> kernel = polygon_kernel(poly2d, tol);

@@ -32,6 +32,10 @@ struct QualityReport {
   // Max over panels of (max distance of its vertices to their least-squares plane) / (its
   // diameter, the largest vertex-vertex distance).
   double max_planarity = 0.0;
+  // Max over panels of planarity_rounding_floor: what the written coordinates allow at best
+  // (about 1e-16 near the origin; above 1e-9 far from it, where max_planarity follows it).
+  double planarity_floor = 0.0;
+  int max_planarity_panel = -1;  // the least flat panel; -1 without panels
   // Two-sided sampled Hausdorff distance / input bbox diagonal, and its two halves;
   // infinity when no panel has 3 vertices.
   double hausdorff = 0.0;

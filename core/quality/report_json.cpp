@@ -1,6 +1,7 @@
 #include "core/quality/report_json.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <set>
 #include <utility>
 
@@ -10,9 +11,22 @@ bool all_panels_valid(const PanelMesh& panels, const QualityReport& quality) {
   return panels.num_panels() > 0 && panels.num_invalid() == 0 && quality.invalid_panels == 0;
 }
 
+bool result_valid(const PanelMesh& panels, const QualityReport& quality) {
+  return all_panels_valid(panels, quality) && quality.topology_preserved;
+}
+
 const char* panels_status(const PanelMesh& panels, const QualityReport& quality) {
   if (panels.num_panels() == 0) return "no panels";
-  return all_panels_valid(panels, quality) ? "valid" : "some panels invalid";
+  if (!all_panels_valid(panels, quality)) return "some panels invalid";
+  return quality.topology_preserved ? "valid" : "topology changed";
+}
+
+std::string topology_phrase(const QualityReport& q) {
+  if (q.topology_preserved) return "";
+  std::string out = "the panels do not keep the surface's topology (";
+  if (!q.oriented_manifold) return out + "they are not an oriented 2-manifold)";
+  return out + "Euler characteristic " + std::to_string(q.euler_in) + " -> " + std::to_string(q.euler_out) +
+         ", boundary loops " + std::to_string(q.boundary_loops_in) + " -> " + std::to_string(q.boundary_loops_out) + ")";
 }
 
 std::vector<std::string> panel_problems(const PanelIssues& issues) {
@@ -29,6 +43,8 @@ std::vector<std::string> panel_problems(const PanelIssues& issues) {
 
 void write_quality_fields(JsonWriter& j, const QualityReport& q) {
   j.value("max_planarity", q.max_planarity);
+  j.value("max_planarity_panel", q.max_planarity_panel);
+  j.value("planarity_floor", q.planarity_floor);
   // DESIGN.md 4: `hausdorff` is the two-sided distance (/ bbox diagonal); both halves follow.
   j.value("hausdorff", q.hausdorff);
   j.value("hausdorff_input_to_panels", q.hausdorff_input_to_panels);
@@ -122,6 +138,26 @@ std::string invalid_panels_phrase(const PanelMesh& pm, const QualityReport& q) {
   for (size_t k = 0; k < counts.size(); ++k)
     out += (k > 0 ? ", " : "") + counts[k].first + " " + std::to_string(counts[k].second);
   return out + ")";
+}
+
+std::string planarity_phrase(const QualityReport& q) {
+  if (!(q.max_planarity > kPlanarityTarget)) return "";
+  const auto number = [](double x) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", x);
+    return std::string(text);
+  };
+  std::string out = "the panels as written are flat to " + number(q.max_planarity) + " of their size, not " +
+                    number(kPlanarityTarget);
+  // Within a hundred times of what the doubles allow: the coordinates, not the solve.
+  if (q.planarity_floor * 100.0 >= q.max_planarity)
+    return out + ": the coordinates are so far from the origin that their last digit is already " +
+           number(q.planarity_floor) + " of a panel's size; moved near the origin, the model gives flat panels";
+  // Else a vertex whose planes have no common point (closest_point_on_planes' inexact case),
+  // which the panel phase counts as a spike: the panel is invalid and listed.
+  const bool invalid = std::binary_search(q.invalid_panel_ids.begin(), q.invalid_panel_ids.end(), q.max_planarity_panel);
+  return out + "; the least flat is panel " + std::to_string(q.max_planarity_panel) +
+         (invalid ? ", an invalid one (a vertex where its planes do not meet)" : "");
 }
 
 }  // namespace ff

@@ -14,8 +14,16 @@ namespace ff {
 // nor the independent quality measurement finds an invalid panel.
 bool all_panels_valid(const PanelMesh& panels, const QualityReport& quality);
 
-// "valid", "some panels invalid" or "no panels".
+// Exit 0 material as a whole: every panel valid and the input's topology kept (DESIGN.md 5).
+bool result_valid(const PanelMesh& panels, const QualityReport& quality);
+
+// "valid", "some panels invalid", "topology changed" (every panel valid, but not the input's
+// Euler characteristic and boundary loops) or "no panels".
 const char* panels_status(const PanelMesh& panels, const QualityReport& quality);
+
+// "" when the topology is kept; else what changed, for a person: "the panels do not keep the
+// surface's topology (Euler characteristic 1 -> 2, boundary loops 1 -> 0)".
+std::string topology_phrase(const QualityReport& quality);
 
 // The names of a panel's problems as they appear in the report ("spike", "flipped", ...).
 std::vector<std::string> panel_problems(const PanelIssues& issues);
@@ -49,5 +57,13 @@ void write_invalid_panels(JsonWriter& j, const PanelMesh& panels, const QualityR
 // each problem with the number of panels that have it, in panel_problems' order, then
 // "quality_check" and "unbuilt"; "" when none is invalid.
 std::string invalid_panels_phrase(const PanelMesh& panels, const QualityReport& quality);
+
+// DESIGN.md 5: the panels are flat to this, relative to their size (exact by construction).
+constexpr double kPlanarityTarget = 1e-9;
+
+// "" when the panels are flat to kPlanarityTarget; else a sentence for a person saying how
+// flat they are and, when the coordinates' own rounding explains it (planarity_floor), that
+// moving the model near the origin would make them flat.
+std::string planarity_phrase(const QualityReport& quality);
 
 }  // namespace ff

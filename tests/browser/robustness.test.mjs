@@ -3,6 +3,8 @@
 // files that point elsewhere, links too large to travel, stale link messages and hashes, the
 // stored session, and a site built without the shared example meshes.
 import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
+import { join } from 'node:path';
 import { test } from 'node:test';
 import {
   browserSuite,
@@ -14,6 +16,7 @@ import {
   remesh,
   screenshot,
   selectExample,
+  sharedMeshes,
   setPanels,
   solveAfter,
   statusText,
@@ -22,6 +25,7 @@ import {
   waitForSaved,
   waitForStatus,
 } from './harness.mjs';
+import { movedOff } from '../fixtures/meshes.mjs';
 
 const suite = browserSuite();
 const { withPage } = suite;
@@ -332,4 +336,20 @@ test('a closed surface asked for three panels says why not and keeps the design'
     await screenshot(page, 'epcot-3-refused');
     await setPanels(page, 4);
     assert.equal(await solveAfter(page, () => remesh(page)), 4, 'four panels (a tetrahedron) solve');
+  }));
+
+// A model far from the origin (epcot moved 1e9 along x): its panels are valid, but the doubles
+// cannot hold them flat to 1e-9; the Planarity row is marked and its hint says why.
+test('a model far from the origin: the status line and the Planarity row say why its panels are not flat to 1e-9', () =>
+  withPage(exampleLink(suite.url, 'epcot', { panels: 30, seed: 1, weights: { euclidean: 1, l2: 1, l21: 1, boundary: 1 }, lloydIterations: 20, panelRounds: 100, seeding: 'farthest', teleport: true, singlePointNodes: false, optimizePlanes: true }), async (page) => {
+    assert.equal(await waitForDone(page), 30);
+    const row = page.locator('#stats dd').nth(1);
+    assert.equal(await row.evaluate((dd) => dd.classList.contains('warn')), false, 'near the origin: flat');
+    const bytes = movedOff(readFileSync(join(sharedMeshes, 'epcot.off'), 'utf8'), 1e9);
+    assert.equal(await solveAfter(page, () => page.getByLabel('Open mesh').setInputFiles({ name: 'epcot-far.off', mimeType: 'text/plain', buffer: Buffer.from(bytes) })), 30);
+    assert.match(await statusText(page), /^panels flat to .* of their size, not 10⁻⁹: the model is far from the origin \(move it nearer\)\. Done: 30 panels$/);
+    assert.equal(await page.locator('#stats dt').nth(1).textContent(), 'Planarity');
+    assert.equal(await row.evaluate((dd) => dd.classList.contains('warn')), true);
+    assert.match(await row.getAttribute('title'), /far from the origin .* moved near the origin, the model gives flat panels/);
+    await screenshot(page, 'planarity-far-from-origin');
   }));

@@ -644,6 +644,55 @@ r = json.load(open(sys.argv[1]))
 assert r['collapsed_panels'] == 0 and 0.1 <= r['min_panel_coverage'] <= 1.5, r
 " "$tmp/glass.json" && ok || bad "glass report coverage"
 
+# A model far from the origin (epcot moved 1e9 along x): the doubles cannot hold its panels flat
+# to 1e-9, so the run says so on stderr and in the report (planarity_floor), and still exits 0.
+python3 - "$e" "$tmp/far.off" <<'PY'
+import sys
+t = open(sys.argv[1]).read().split()
+nv = int(t[1])
+for i in range(nv):
+    t[4 + 3 * i] = repr(float(t[4 + 3 * i]) + 1e9)
+nf, faces, p = int(t[2]), [], 4 + 3 * nv
+for _ in range(nf):
+    k = int(t[p]); faces.append(" ".join(t[p:p + 1 + k])); p += 1 + k
+rows = [" ".join(t[4 + 3 * i:7 + 3 * i]) for i in range(nv)]
+open(sys.argv[2], "w").write(f"OFF\n{nv} {nf} 0\n" + "\n".join(rows + faces) + "\n")
+PY
+"$bin" remesh "$tmp/far.off" --panels 30 --out "$tmp/far.obj" --report "$tmp/far.json" 2>"$tmp/err.txt"
+rc=$?
+[ "$rc" = 0 ] && ok || bad "far from the origin: exit $rc $(cat "$tmp/err.txt")"
+grep -q "^flatfacet: warning: the panels as written are flat to .* moved near the origin" "$tmp/err.txt" && ok ||
+  bad "far from the origin: no planarity warning ($(cat "$tmp/err.txt"))"
+python3 -c "
+import json, sys
+r = json.load(open(sys.argv[1]))
+assert r['max_planarity'] > 1e-9 and r['planarity_floor'] * 100 >= r['max_planarity'], r
+assert r['max_planarity_panel'] >= 0 and r['status'] == 'valid', r
+" "$tmp/far.json" && ok || bad "far from the origin: report planarity"
+"$bin" remesh "$e" --panels 30 --report "$tmp/near.json" 2>"$tmp/err.txt" && [ ! -s "$tmp/err.txt" ] && ok ||
+  bad "near the origin: stderr '$(cat "$tmp/err.txt")'"
+
+# A missing triangle between two panels stays a hole (fuzz_cli.py found it closed, exit 0).
+python3 - "$e" "$tmp/holed1.off" <<'PY'
+import sys
+t = open(sys.argv[1]).read().split()
+nv, nf = int(t[1]), int(t[2])
+faces, p = [], 4 + 3 * nv
+for _ in range(nf):
+    k = int(t[p]); faces.append(t[p:p + 1 + k]); p += 1 + k
+del faces[5]
+open(sys.argv[2], "w").write(f"OFF\n{nv} {nf - 1} 0\n" + "\n".join(" ".join(t[4 + 3 * i:7 + 3 * i]) for i in range(nv)) + "\n" +
+                             "\n".join(" ".join(f) for f in faces) + "\n")
+PY
+"$bin" remesh "$tmp/holed1.off" --panels 13 --report "$tmp/holed1.json" 2>"$tmp/err.txt"
+rc=$?
+[ "$rc" = 0 ] && ok || bad "one missing face: exit $rc $(cat "$tmp/err.txt")"
+python3 -c "
+import json, sys
+r = json.load(open(sys.argv[1]))
+assert r['boundary_loops_in'] == 1 and r['boundary_loops_out'] == 1 and r['topology_preserved'], r
+" "$tmp/holed1.json" && ok || bad "one missing face: the hole closed"
+
 # The usage text names the command.
 grep -q "remesh INPUT --panels N" "$tmp/help.txt" && ok || bad "--help lacks remesh"
 

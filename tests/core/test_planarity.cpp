@@ -2,6 +2,7 @@
 // page shows as "before the planes are intersected").
 #include <gtest/gtest.h>
 
+#include <cfloat>
 #include <cmath>
 
 #include "core/quality/planarity.h"
@@ -49,6 +50,19 @@ TEST(Planarity, CornerPolygonsOfASaddleBend) {
   EXPECT_LT(polygon_planarity(after), 1e-15);
   pm.vertex_corner.clear();
   EXPECT_TRUE(corner_polygon_planarity(saddle, pm).empty());
+}
+
+// What the doubles allow: the spacing at the largest coordinate over the diameter. A unit
+// square at the origin can be flat to 1e-16; moved 1e9 away, to no better than about 1.6e-7.
+TEST(Planarity, RoundingFloorGrowsWithTheDistanceFromTheOrigin) {
+  const std::vector<Vec3> square = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)};
+  EXPECT_NEAR(planarity_rounding_floor(square), DBL_EPSILON / std::sqrt(2.0), 1e-20);
+  std::vector<Vec3> far = square;
+  for (Vec3& p : far) p.x() += 1e9;
+  EXPECT_NEAR(planarity_rounding_floor(far), DBL_EPSILON * (1e9 + 1) / std::sqrt(2.0), 1e-12);
+  EXPECT_GT(planarity_rounding_floor(far), 1e-9);
+  EXPECT_EQ(planarity_rounding_floor({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)}), 0.0);
+  EXPECT_EQ(planarity_rounding_floor({Vec3(2, 2, 2), Vec3(2, 2, 2), Vec3(2, 2, 2), Vec3(2, 2, 2)}), 0.0);
 }
 
 }  // namespace

@@ -67,5 +67,52 @@ TEST(ReportJson, EveryProblemNameIsInThePhrase) {
   EXPECT_EQ(phrase.rfind("1 panel invalid (", 0), 0u) << phrase;
 }
 
+// Planarity above 1e-9 is explained where the coordinates' rounding allows no better
+// (planarity_floor), or named at its panel; under it there is nothing to say.
+TEST(ReportJson, PlanarityPhrase) {
+  QualityReport q;
+  q.max_planarity = 4e-16;
+  q.planarity_floor = 2e-16;
+  EXPECT_EQ(planarity_phrase(q), "");
+  q.max_planarity = 1.52e-6;  // a model 1e9 from the origin
+  q.planarity_floor = 9.07e-6;
+  EXPECT_EQ(planarity_phrase(q),
+            "the panels as written are flat to 1.52e-06 of their size, not 1e-09: the coordinates are so far from "
+            "the origin that their last digit is already 9.07e-06 of a panel's size; moved near the origin, the "
+            "model gives flat panels");
+  q.max_planarity = 9.27e-8;  // a spike vertex whose planes do not meet
+  q.planarity_floor = 8e-16;
+  q.max_planarity_panel = 7;
+  q.invalid_panel_ids = {2, 7};
+  EXPECT_EQ(planarity_phrase(q),
+            "the panels as written are flat to 9.27e-08 of their size, not 1e-09; the least flat is panel 7, an "
+            "invalid one (a vertex where its planes do not meet)");
+  q.invalid_panel_ids = {2};
+  EXPECT_EQ(planarity_phrase(q), "the panels as written are flat to 9.27e-08 of their size, not 1e-09; the least "
+                                 "flat is panel 7");
+}
+
+TEST(ReportJson, TopologyChangedIsItsOwnStatusAndNotExitZero) {
+  const PanelMesh pm = four_panels();
+  QualityReport q;
+  q.topology_preserved = true;
+  EXPECT_TRUE(result_valid(pm, q));
+  EXPECT_STREQ(panels_status(pm, q), "valid");
+  EXPECT_EQ(topology_phrase(q), "");
+  q.topology_preserved = false;
+  q.oriented_manifold = true;
+  q.euler_in = 1, q.euler_out = 2, q.boundary_loops_in = 1, q.boundary_loops_out = 0;
+  EXPECT_TRUE(all_panels_valid(pm, q));
+  EXPECT_FALSE(result_valid(pm, q));
+  EXPECT_STREQ(panels_status(pm, q), "topology changed");
+  EXPECT_EQ(topology_phrase(q),
+            "the panels do not keep the surface's topology (Euler characteristic 1 -> 2, boundary loops 1 -> 0)");
+  q.oriented_manifold = false;
+  EXPECT_EQ(topology_phrase(q), "the panels do not keep the surface's topology (they are not an oriented 2-manifold)");
+  q.invalid_panel_ids = {1};
+  q.invalid_panels = 1;
+  EXPECT_STREQ(panels_status(pm, q), "some panels invalid");  // invalid panels come first
+}
+
 }  // namespace
 }  // namespace ff

@@ -1,6 +1,8 @@
 // The quality panel: the report's numbers in words a designer reads (DESIGN.md 5 targets).
 import type { QualityReport, SolveResult } from './protocol.ts';
 import { coverageRow } from './coverage.ts';
+import { planarityRow } from './planarity.ts';
+import { scientific } from './scientific.ts';
 import { problemsPhrase, summarizeInvalid } from './invalidPanels.ts';
 import { statsList, type StatRow } from './statsList.ts';
 
@@ -43,17 +45,6 @@ export function valence3Share(report: QualityReport): number | null {
   return total > 0 ? three / total : null;
 }
 
-function scientific(value: number | null): string {
-  if (value === null) return '–';
-  if (value === 0) return '0';
-  return value.toExponential(1).replace('e', '×10^').replace(/\^\+?(-?\d+)$/, (_, e: string) => superscript(e));
-}
-
-function superscript(exponent: string): string {
-  const map: Record<string, string> = { '-': '⁻', '0': '⁰', '1': '¹', '2': '²', '3': '³', '4': '⁴', '5': '⁵', '6': '⁶', '7': '⁷', '8': '⁸', '9': '⁹' };
-  return [...exponent].map((c) => map[c] ?? c).join('');
-}
-
 type Row = StatRow;
 
 export function statsRows(result: SolveResult): Row[] {
@@ -75,7 +66,7 @@ export function statsRows(result: SolveResult): Row[] {
   const before = result.cornerPlanarity.length > 0 ? result.cornerPlanarity.reduce((worst, value) => Math.max(worst, value), 0) : null;
   return [
     { label: 'Panels', value: String(numberAt(report, 'panels') ?? '–'), hint: 'planar panels in the result' },
-    { label: 'Planarity', value: scientific(numberAt(report, 'max_planarity')), hint: 'largest distance of a panel vertex to its plane, relative to the panel size (target ≤ 10⁻⁹)' },
+    planarityRow(report),
     { label: 'Before the fix', value: scientific(before), hint: 'planarity of the same polygons through their mesh corners, before the planes were intersected' },
     { label: 'Hausdorff', value: hausdorff === null ? '–' : `${(hausdorff * 100).toFixed(2)} %`, hint: 'two-sided distance to the input surface, relative to the bounding-box diagonal; where it is largest is marked cyan in the view' },
     { label: 'Valence 3', value: share === null ? '–' : `${(share * 100).toFixed(1)} %`, hint: 'interior nodes where exactly three panels meet' },

@@ -4,9 +4,11 @@
 import type { Progress } from '@flatfacet/wasm';
 import { countOutcome, element } from './dom.ts';
 import { invalidPhrase, summarizeInvalid } from './invalidPanels.ts';
+import { planarityWarning } from './planarity.ts';
 import type { SolveResult } from './protocol.ts';
 
-// "Done: N panels" after a solve, with what went wrong in front of it (invalidPanels.ts).
+// "Done: N panels" after a solve, with what went wrong in front of it (invalidPanels.ts), or
+// that the model is too far from the origin for flat panels (planarity.ts).
 export function solvedSummary(result: SolveResult): { text: string; warning: boolean } {
   const panels = typeof result.report.panels === 'number' ? result.report.panels : result.panelOffsets.length - 1;
   // Without panels the report has no "invalid" list: the problem list still has the clusters.
@@ -15,7 +17,7 @@ export function solvedSummary(result: SolveResult): { text: string; warning: boo
     unbuilt: result.problems.unbuiltClusters.length,
     problems: [],
   };
-  const warning = invalidPhrase(summary);
+  const warning = invalidPhrase(summary) || planarityWarning(result.report);
   return { text: warning ? `${warning}. Done: ${panels} panels` : `Done: ${panels} panels`, warning: warning !== '' };
 }
 

@@ -1,0 +1,50 @@
+// Planarity in words: flat to 10⁻⁹ by construction (DESIGN.md 5), except where the coordinates
+// cannot hold it (far from the origin a double's last digit is already more than that of a
+// panel: the report's planarity_floor) or at an invalid panel whose planes do not meet. The
+// CLI's warning says the same (core/quality/report_json.h, planarity_phrase).
+import type { QualityReport } from './protocol.ts';
+import { scientific } from './scientific.ts';
+import type { StatRow } from './statsList.ts';
+
+export const PLANARITY_TARGET = 1e-9;
+
+function numberAt(report: QualityReport, key: string): number | null {
+  const value = report[key];
+  return typeof value === 'number' && Number.isFinite(value) ? value : null;
+}
+
+// Why the panels are above the target ('' when they are not): the coordinates, an invalid
+// panel, or nothing known.
+function reason(report: QualityReport): { above: boolean; why: string; farFromOrigin: boolean } {
+  const planarity = numberAt(report, 'max_planarity');
+  if (planarity === null || !(planarity > PLANARITY_TARGET)) return { above: false, why: '', farFromOrigin: false };
+  const floor = numberAt(report, 'planarity_floor') ?? 0;
+  if (floor * 100 >= planarity)
+    return {
+      above: true,
+      why: `the coordinates are so far from the origin that their last digit is already ${scientific(floor)} of a panel: moved near the origin, the model gives flat panels`,
+      farFromOrigin: true,
+    };
+  const panel = numberAt(report, 'max_planarity_panel');
+  const invalid = Array.isArray(report.invalid) && report.invalid.some((p) => typeof p === 'object' && p !== null && (p as { panel?: unknown }).panel === panel);
+  if (invalid) return { above: true, why: `the least flat is panel ${panel}, an invalid one (a vertex where its planes do not meet)`, farFromOrigin: false };
+  return { above: true, why: panel === null ? '' : `the least flat is panel ${panel}`, farFromOrigin: false };
+}
+
+export function planarityRow(report: QualityReport): StatRow {
+  const { above, why } = reason(report);
+  return {
+    label: 'Planarity',
+    value: scientific(numberAt(report, 'max_planarity')),
+    hint: `largest distance of a panel vertex to its plane, relative to the panel size (target ≤ 10⁻⁹)${above ? `; above the target${why ? `: ${why}` : ''}` : ''}`,
+    warn: above,
+  };
+}
+
+// For the status line, only where the designer can act on it (valid panels on a model far from
+// the origin; invalid panels are named there already): '' otherwise.
+export function planarityWarning(report: QualityReport): string {
+  const { farFromOrigin } = reason(report);
+  if (!farFromOrigin) return '';
+  return `panels flat to ${scientific(numberAt(report, 'max_planarity'))} of their size, not 10⁻⁹: the model is far from the origin (move it nearer)`;
+}
