@@ -12,6 +12,7 @@
 #include "core/mesh/half_edges.h"
 #include "core/mesh/manifold_part.h"
 #include "core/mesh/orient.h"
+#include "core/mesh/part_spread.h"
 #include "core/mesh/weld.h"
 #include "core/util/error.h"
 
@@ -385,6 +386,7 @@ CleanMesh clean_mesh(const TriMesh& input, const CleanOptions& options) {
   out.vertex_source = std::move(vertex_name);
   detail::repair_locally(out, options);
   report.zero_area_faces = count_zero_area(out.mesh.triangles, out.mesh.positions);
+  require_compact_parts(out.mesh);  // a far-off stray part: refused by name (part_spread.h)
   return out;
 }
 

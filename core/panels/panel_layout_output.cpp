@@ -30,6 +30,7 @@ std::vector<char> PanelLayout::spike_nodes() const {
 PanelMesh PanelLayout::to_panel_mesh(const FaceData& frame) const {
   PanelMesh out;
   out.spike_distance = frame.scale * options_.spike_distance;
+  out.solve_origin = frame.origin;
   std::vector<int> node_vertex(node_point_.size(), -1);
   const size_t n = polygons_.size();
   std::vector<int> panel_of_cluster(n, -1);

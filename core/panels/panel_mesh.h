@@ -49,6 +49,10 @@ struct PanelMesh {
   // the two corners of its node group); a vertex farther than spike_distance from it is a spike.
   std::vector<Vec3> vertex_reference;
   double spike_distance = 0.0;
+  // The world point the panels were solved about (FaceData::origin, the middle of the whole
+  // mesh): their vertices carry the rounding of coordinates that far from it as well, which
+  // matters when a far-off part puts it far from a panel (quality/planarity.h).
+  Vec3 solve_origin = Vec3::Zero();
   // Per vertex, when not empty: its own spike distance (the vertices of a locked panel keep
   // the one they were locked with, LayoutOptions::locked_spike_distance).
   std::vector<double> vertex_spike_distance;

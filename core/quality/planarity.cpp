@@ -25,11 +25,11 @@ double polygon_planarity(const std::vector<Vec3>& points) {
   return diameter2 > 0.0 ? deviation / std::sqrt(diameter2) : 0.0;
 }
 
-double planarity_rounding_floor(const std::vector<Vec3>& points) {
+double planarity_rounding_floor(const std::vector<Vec3>& points, const Vec3& origin) {
   if (points.size() < 4) return 0.0;
   double largest = 0.0, diameter2 = 0.0;
   for (size_t i = 0; i < points.size(); ++i) {
-    largest = std::max(largest, points[i].cwiseAbs().maxCoeff());
+    largest = std::max(largest, (points[i] - origin).cwiseAbs().maxCoeff());
     for (size_t j = i + 1; j < points.size(); ++j)
       diameter2 = std::max(diameter2, (points[i] - points[j]).squaredNorm());
   }

@@ -15,10 +15,11 @@ namespace ff {
 double polygon_planarity(const std::vector<Vec3>& points);
 
 // The planarity the points' own rounding allows: the spacing of doubles at their largest
-// coordinate (DBL_EPSILON * max |x|) / their diameter; 0 for fewer than four points. Far from
-// the origin (georeferenced models, a stray offset) it exceeds 1e-9 and no solver can write
-// exactly flat panels there: polygon_planarity measures about this much.
-double planarity_rounding_floor(const std::vector<Vec3>& points);
+// coordinate (DBL_EPSILON * max |x - origin|) / their diameter; 0 for fewer than four points.
+// Far from the origin (georeferenced models, a stray offset; or, with the point the panels
+// were solved about as `origin`, a far-off part of the mesh) it exceeds 1e-9 and no solver can
+// write exactly flat panels there: polygon_planarity measures about this much.
+double planarity_rounding_floor(const std::vector<Vec3>& points, const Vec3& origin = Vec3::Zero());
 
 // Per panel: polygon_planarity of its vertices moved back to their mesh corners
 // (PanelMesh::vertex_corner; a vertex without a corner keeps its position). Empty when the

@@ -278,6 +278,8 @@ QualityReport measure_quality(const TriMesh& input, const MeshTopology& input_to
       r.max_planarity_panel = p;
     }
     r.planarity_floor = std::max(r.planarity_floor, planarity_rounding_floor(points));
+    r.planarity_floor_solve =
+        std::max(r.planarity_floor_solve, planarity_rounding_floor(points, panels.solve_origin));
 
     const bool simple = is_simple(poly2d, tol);
     const std::vector<Vec2> kernel = polygon_kernel(poly2d, tol);

@@ -35,6 +35,9 @@ struct QualityReport {
   // Max over panels of planarity_rounding_floor: what the written coordinates allow at best
   // (about 1e-16 near the origin; above 1e-9 far from it, where max_planarity follows it).
   double planarity_floor = 0.0;
+  // The same about the point the panels were solved about (PanelMesh::solve_origin): above
+  // planarity_floor when a far-off part of the mesh put that point far from the panels.
+  double planarity_floor_solve = 0.0;
   int max_planarity_panel = -1;  // the least flat panel; -1 without panels
   // Two-sided sampled Hausdorff distance / input bbox diagonal, and its two halves;
   // infinity when no panel has 3 vertices.

@@ -45,6 +45,7 @@ void write_quality_fields(JsonWriter& j, const QualityReport& q) {
   j.value("max_planarity", q.max_planarity);
   j.value("max_planarity_panel", q.max_planarity_panel);
   j.value("planarity_floor", q.planarity_floor);
+  j.value("planarity_floor_solve", q.planarity_floor_solve);
   // DESIGN.md 4: `hausdorff` is the two-sided distance (/ bbox diagonal); both halves follow.
   j.value("hausdorff", q.hausdorff);
   j.value("hausdorff_input_to_panels", q.hausdorff_input_to_panels);
@@ -153,6 +154,11 @@ std::string planarity_phrase(const QualityReport& q) {
   if (q.planarity_floor * 100.0 >= q.max_planarity)
     return out + ": the coordinates are so far from the origin that their last digit is already " +
            number(q.planarity_floor) + " of a panel's size; moved near the origin, the model gives flat panels";
+  // The coordinates about the middle of the whole mesh: a far-off part moved it away.
+  if (q.planarity_floor_solve * 100.0 >= q.max_planarity)
+    return out + ": a part of the mesh lies so far from the rest that, about the middle of the whole, the "
+                 "coordinates' last digit is already " +
+           number(q.planarity_floor_solve) + " of a panel's size; without the far-off part, the model gives flat panels";
   // Else a vertex whose planes have no common point (closest_point_on_planes' inexact case),
   // which the panel phase counts as a spike: the panel is invalid and listed.
   const bool invalid = std::binary_search(q.invalid_panel_ids.begin(), q.invalid_panel_ids.end(), q.max_planarity_panel);

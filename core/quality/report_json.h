@@ -62,8 +62,9 @@ std::string invalid_panels_phrase(const PanelMesh& panels, const QualityReport& 
 constexpr double kPlanarityTarget = 1e-9;
 
 // "" when the panels are flat to kPlanarityTarget; else a sentence for a person saying how
-// flat they are and, when the coordinates' own rounding explains it (planarity_floor), that
-// moving the model near the origin would make them flat.
+// flat they are and, when the coordinates' own rounding explains it, what would make them flat:
+// moving the model near the origin (planarity_floor), or removing a far-off part that put the
+// middle of the mesh, about which the panels are solved, far from them (planarity_floor_solve).
 std::string planarity_phrase(const QualityReport& quality);
 
 }  // namespace ff

@@ -12,7 +12,8 @@ under a time and memory limit. A run is bad when:
   - exit 0 or 3 without its outputs, or with a report that contradicts the exit code
     (exit 0: every panel valid, topology kept, an oriented 2-manifold);
   - planarity above 1e-9 unless the coordinates' rounding explains it (the report's
-    planarity_floor) or the least flat panel is an invalid one, and a warning says so;
+    planarity_floor, or planarity_floor_solve for a far-off part) or the least flat panel is
+    an invalid one, and a warning says so;
   - exit 3 with nothing on stderr;
   - a sanitizer wrote a report (AddressSanitizer, "runtime error:").
 
@@ -348,7 +349,8 @@ def judge(code, stderr, outputs):
     # whose planes do not meet), and then the designer is told.
     if planarity > 1e-9:
         least_flat = report.get("max_planarity_panel")
-        explained = report.get("planarity_floor", 0) * 100 >= planarity or (
+        floor = max(report.get("planarity_floor", 0), report.get("planarity_floor_solve", 0))
+        explained = floor * 100 >= planarity or (
             code == 3 and any(p.get("panel") == least_flat for p in report.get("invalid", [])))
         if not explained or "flat to" not in stderr:
             return f"max_planarity {planarity} at panel {least_flat} (floor {report.get('planarity_floor')}) unexplained"

@@ -672,6 +672,22 @@ assert r['max_planarity_panel'] >= 0 and r['status'] == 'valid', r
 "$bin" remesh "$e" --panels 30 --report "$tmp/near.json" 2>"$tmp/err.txt" && [ ! -s "$tmp/err.txt" ] && ok ||
   bad "near the origin: stderr '$(cat "$tmp/err.txt")'"
 
+# A part far from the rest (one triangle 1e8 away from epcot): refused by name, nothing written.
+cp "$e" "$tmp/farpart.off"
+python3 - "$tmp/farpart.off" <<'PY'
+import sys
+t = open(sys.argv[1]).read().split()
+nv, nf = int(t[1]), int(t[2])
+rows = [" ".join(t[4 + 3 * i:7 + 3 * i]) for i in range(nv)] + ["1e8 0 0", "100000000.01 0 0", "1e8 0.01 0"]
+faces, p = [], 4 + 3 * nv
+for _ in range(nf):
+    k = int(t[p]); faces.append(" ".join(t[p:p + 1 + k])); p += 1 + k
+faces.append(f"3 {nv} {nv + 1} {nv + 2}")
+open(sys.argv[1], "w").write(f"OFF\n{nv + 3} {nf + 1} 0\n" + "\n".join(rows + faces) + "\n")
+PY
+expect_error 2 "a part of 1 triangle near \(1e\+08, 0.005, 0\) lies .* times the largest part's size .*delete the far-off part" \
+  remesh "$tmp/farpart.off" --panels 30 --out "$tmp/never.obj" --report "$tmp/never.json"
+
 # A missing triangle between two panels stays a hole (fuzz_cli.py found it closed, exit 0).
 python3 - "$e" "$tmp/holed1.off" <<'PY'
 import sys

@@ -61,6 +61,9 @@ TEST(Planarity, RoundingFloorGrowsWithTheDistanceFromTheOrigin) {
   for (Vec3& p : far) p.x() += 1e9;
   EXPECT_NEAR(planarity_rounding_floor(far), DBL_EPSILON * (1e9 + 1) / std::sqrt(2.0), 1e-12);
   EXPECT_GT(planarity_rounding_floor(far), 1e-9);
+  // About another point (the middle of a mesh with a part 1e9 away): the same as far away.
+  EXPECT_NEAR(planarity_rounding_floor(square, Vec3(5e8, 0, 0)), DBL_EPSILON * 5e8 / std::sqrt(2.0), 1e-12);
+  EXPECT_NEAR(planarity_rounding_floor(far, Vec3(1e9, 0, 0)), DBL_EPSILON / std::sqrt(2.0), 1e-20);
   EXPECT_EQ(planarity_rounding_floor({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)}), 0.0);
   EXPECT_EQ(planarity_rounding_floor({Vec3(2, 2, 2), Vec3(2, 2, 2), Vec3(2, 2, 2), Vec3(2, 2, 2)}), 0.0);
 }

@@ -80,6 +80,14 @@ TEST(ReportJson, PlanarityPhrase) {
             "the panels as written are flat to 1.52e-06 of their size, not 1e-09: the coordinates are so far from "
             "the origin that their last digit is already 9.07e-06 of a panel's size; moved near the origin, the "
             "model gives flat panels");
+  q.max_planarity = 1.19e-9;  // a triangle 1e8 away: the panels were solved about the middle
+  q.planarity_floor = 1.8e-16;
+  q.planarity_floor_solve = 2.52e-9;
+  EXPECT_EQ(planarity_phrase(q),
+            "the panels as written are flat to 1.19e-09 of their size, not 1e-09: a part of the mesh lies so far from "
+            "the rest that, about the middle of the whole, the coordinates' last digit is already 2.52e-09 of a "
+            "panel's size; without the far-off part, the model gives flat panels");
+  q.planarity_floor_solve = 0.0;
   q.max_planarity = 9.27e-8;  // a spike vertex whose planes do not meet
   q.planarity_floor = 8e-16;
   q.max_planarity_panel = 7;

@@ -29,6 +29,10 @@ test('above the target: a warning, and the origin named only when the coordinate
   const spike = planarityRow({ max_planarity: 9e-8, planarity_floor: 1e-15, max_planarity_panel: 36, invalid: [{ panel: 36, problems: ['spike'] }] });
   assert.match(spike.hint, /the least flat is panel 36, an invalid one \(a vertex where its planes do not meet\)$/);
   assert.equal(planarityRow({}).value, '–');
+  // A far-off part: the panels were solved about the middle of the whole mesh.
+  const part = { max_planarity: 1.19e-9, planarity_floor: 1.8e-16, planarity_floor_solve: 2.5e-9 };
+  assert.match(planarityRow(part).hint, /a part of the mesh lies so far from the rest .* without the far-off part, the model gives flat panels$/);
+  assert.equal(planarityWarning(part), 'panels flat to 1.2×10⁻⁹ of their size, not 10⁻⁹: a part of the mesh lies far from the rest (remove it)');
   // The status line names only what the designer can act on: the model's place, not a spike.
   assert.match(planarityWarning({ max_planarity: 1.5e-6, planarity_floor: 9e-6 }), /far from the origin/);
   assert.equal(planarityWarning({ max_planarity: 9e-8, planarity_floor: 1e-15, max_planarity_panel: 36, invalid: [{ panel: 36 }] }), '');

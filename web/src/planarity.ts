@@ -25,6 +25,13 @@ function reason(report: QualityReport): { above: boolean; why: string; farFromOr
       why: `the coordinates are so far from the origin that their last digit is already ${scientific(floor)} of a panel: moved near the origin, the model gives flat panels`,
       farFromOrigin: true,
     };
+  const solveFloor = numberAt(report, 'planarity_floor_solve') ?? 0;
+  if (solveFloor * 100 >= planarity)
+    return {
+      above: true,
+      why: `a part of the mesh lies so far from the rest that the coordinates' last digit is already ${scientific(solveFloor)} of a panel: without the far-off part, the model gives flat panels`,
+      farFromOrigin: true,
+    };
   const panel = numberAt(report, 'max_planarity_panel');
   const invalid = Array.isArray(report.invalid) && report.invalid.some((p) => typeof p === 'object' && p !== null && (p as { panel?: unknown }).panel === panel);
   if (invalid) return { above: true, why: `the least flat is panel ${panel}, an invalid one (a vertex where its planes do not meet)`, farFromOrigin: false };
@@ -46,5 +53,8 @@ export function planarityRow(report: QualityReport): StatRow {
 export function planarityWarning(report: QualityReport): string {
   const { farFromOrigin } = reason(report);
   if (!farFromOrigin) return '';
-  return `panels flat to ${scientific(numberAt(report, 'max_planarity'))} of their size, not 10⁻⁹: the model is far from the origin (move it nearer)`;
+  const floor = numberAt(report, 'planarity_floor') ?? 0;
+  const planarity = numberAt(report, 'max_planarity') ?? 0;
+  const where = floor * 100 >= planarity ? 'the model is far from the origin (move it nearer)' : 'a part of the mesh lies far from the rest (remove it)';
+  return `panels flat to ${scientific(planarity)} of their size, not 10⁻⁹: ${where}`;
 }

@@ -1,0 +1,79 @@
+#include "core/mesh/part_spread.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <limits>
+#include <numeric>
+#include <string>
+#include <vector>
+
+#include "core/mesh/half_edges.h"
+#include "core/util/error.h"
+
+namespace ff {
+namespace {
+
+int find_root(std::vector<int>& parent, int v) {
+  while (parent[static_cast<size_t>(v)] != v) {
+    parent[static_cast<size_t>(v)] = parent[static_cast<size_t>(parent[static_cast<size_t>(v)])];
+    v = parent[static_cast<size_t>(v)];
+  }
+  return v;
+}
+
+struct Part {
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity());
+  Vec3 hi = -Vec3::Constant(std::numeric_limits<double>::infinity());
+  int triangles = 0;
+  double diagonal() const { return triangles > 0 ? (hi - lo).norm() : 0.0; }
+  Vec3 middle() const { return 0.5 * (lo + hi); }
+};
+
+std::string number(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", x);
+  return text;
+}
+
+}  // namespace
+
+void require_compact_parts(const TriMesh& mesh) {
+  const double whole = bbox_diagonal(mesh);
+  if (!(whole > 0.0) || mesh.triangles.empty()) return;
+  std::vector<int> parent(mesh.positions.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  for (const Triangle& t : mesh.triangles) {
+    for (size_t i = 1; i < 3; ++i) {
+      const int a = find_root(parent, t[0]), b = find_root(parent, t[i]);
+      if (a != b) parent[static_cast<size_t>(std::max(a, b))] = std::min(a, b);
+    }
+  }
+  std::vector<Part> parts(mesh.positions.size());
+  for (const Triangle& t : mesh.triangles) {
+    Part& part = parts[static_cast<size_t>(find_root(parent, t[0]))];
+    ++part.triangles;
+    for (const int v : t) {
+      part.lo = part.lo.cwiseMin(mesh.positions[static_cast<size_t>(v)]);
+      part.hi = part.hi.cwiseMax(mesh.positions[static_cast<size_t>(v)]);
+    }
+  }
+  size_t largest = 0;
+  for (size_t p = 0; p < parts.size(); ++p)
+    if (parts[p].diagonal() > parts[largest].diagonal()) largest = p;
+  const double size = parts[largest].diagonal();
+  if (!(size > 0.0) || !(whole > kMaxPartSpread * size)) return;
+  size_t farthest = largest;
+  double distance = 0.0;
+  for (size_t p = 0; p < parts.size(); ++p) {
+    if (parts[p].triangles == 0) continue;
+    const double d = (parts[p].middle() - parts[largest].middle()).norm();
+    if (d > distance) distance = d, farthest = p;
+  }
+  const Part& far = parts[farthest];
+  throw InputError("a part of " + std::to_string(far.triangles) + (far.triangles == 1 ? " triangle" : " triangles") +
+                   " near " + detail::format_point(far.middle()) + " lies " + number(distance / size) +
+                   " times the largest part's size (" + number(size) + ") away from it: a stray piece? The mesh " +
+                   "may span at most " + number(kMaxPartSpread) + " times its largest part; delete the far-off part");
+}
+
+}  // namespace ff
