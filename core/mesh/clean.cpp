@@ -15,6 +15,7 @@
 #include "core/mesh/part_spread.h"
 #include "core/mesh/weld.h"
 #include "core/util/error.h"
+#include "core/util/union_find.h"
 
 namespace ff {
 
@@ -137,13 +138,6 @@ std::vector<int> weld(const TriMesh& input, double tolerance) {
   return detail::weld_representatives(input.positions, tolerance, weldable);
 }
 
-int find_root(std::vector<int>& parent, int x) {
-  while (parent[static_cast<size_t>(x)] != x) {
-    parent[static_cast<size_t>(x)] = parent[static_cast<size_t>(parent[static_cast<size_t>(x)])];
-    x = parent[static_cast<size_t>(x)];
-  }
-  return x;
-}
 
 // Gives each fan of faces around a vertex (faces joined through edges at that vertex) its
 // own vertex: the fan with the lowest face keeps the original, the others get new
@@ -157,8 +151,8 @@ int split_nonmanifold_vertices(std::vector<Triangle>& tris, const HalfEdgeGroups
   std::vector<int> parent(corners);
   std::iota(parent.begin(), parent.end(), 0);
   const auto unite = [&](int a, int b) {
-    a = find_root(parent, a);
-    b = find_root(parent, b);
+    a = union_find_root(parent, a);
+    b = union_find_root(parent, b);
     if (a != b) parent[static_cast<size_t>(std::max(a, b))] = std::min(a, b);
   };
   for (int g = 0; g < groups.num_groups(); ++g) {
@@ -180,7 +174,7 @@ int split_nonmanifold_vertices(std::vector<Triangle>& tris, const HalfEdgeGroups
   int split = 0;
   for (size_t c = 0; c < corners; ++c) {
     int& corner = tris[c / 3][c % 3];
-    const size_t root = static_cast<size_t>(find_root(parent, static_cast<int>(c)));
+    const size_t root = static_cast<size_t>(union_find_root(parent, static_cast<int>(c)));
     if (fan_vertex[root] < 0) {
       const auto v = static_cast<size_t>(corner);
       if (!has_fan[v]) {

@@ -4,20 +4,9 @@
 #include <numeric>
 
 #include "core/mesh/half_edges.h"
+#include "core/util/union_find.h"
 
 namespace ff::detail {
-
-namespace {
-
-int root_of(std::vector<int>& parent, int x) {
-  while (parent[static_cast<size_t>(x)] != x) {
-    parent[static_cast<size_t>(x)] = parent[static_cast<size_t>(parent[static_cast<size_t>(x)])];
-    x = parent[static_cast<size_t>(x)];
-  }
-  return x;
-}
-
-}  // namespace
 
 ManifoldPart largest_manifold_part(const std::vector<Triangle>& tris, const std::vector<Vec3>& positions) {
   ManifoldPart result;
@@ -48,7 +37,7 @@ ManifoldPart largest_manifold_part(const std::vector<Triangle>& tris, const std:
       if (groups.group_size(g) != 2) continue;
       const int fa = groups.first(g) / 3, fb = groups.second(g) / 3;
       if (drop[static_cast<size_t>(fa)] || drop[static_cast<size_t>(fb)]) continue;
-      const int a = root_of(parent, fa), b = root_of(parent, fb);
+      const int a = union_find_root(parent, fa), b = union_find_root(parent, fb);
       if (a != b) parent[static_cast<size_t>(std::max(a, b))] = std::min(a, b);
     }
     std::vector<double> area(sub.size(), 0.0);
@@ -56,7 +45,7 @@ ManifoldPart largest_manifold_part(const std::vector<Triangle>& tris, const std:
     int sheets = 0;
     for (size_t f = 0; f < sub.size(); ++f) {
       if (drop[f]) continue;
-      const auto r = static_cast<size_t>(root_of(parent, static_cast<int>(f)));
+      const auto r = static_cast<size_t>(union_find_root(parent, static_cast<int>(f)));
       const Vec3& a = positions[static_cast<size_t>(sub[f][0])];
       area[r] += 0.5 * (positions[static_cast<size_t>(sub[f][1])] - a).cross(positions[static_cast<size_t>(sub[f][2])] - a).norm();
       sheets += count[r]++ == 0 ? 1 : 0;
@@ -71,7 +60,7 @@ ManifoldPart largest_manifold_part(const std::vector<Triangle>& tris, const std:
     }
     std::vector<int> kept;
     for (size_t f = 0; f < sub.size(); ++f) {
-      if (!drop[f] && root_of(parent, static_cast<int>(f)) == best) kept.push_back(faces[f]);
+      if (!drop[f] && union_find_root(parent, static_cast<int>(f)) == best) kept.push_back(faces[f]);
     }
     faces = std::move(kept);
   }

@@ -1,7 +1,6 @@
 #include "core/mesh/part_spread.h"
 
 #include <algorithm>
-#include <cstdio>
 #include <limits>
 #include <numeric>
 #include <string>
@@ -9,17 +8,11 @@
 
 #include "core/mesh/half_edges.h"
 #include "core/util/error.h"
+#include "core/util/short_number.h"
+#include "core/util/union_find.h"
 
 namespace ff {
 namespace {
-
-int find_root(std::vector<int>& parent, int v) {
-  while (parent[static_cast<size_t>(v)] != v) {
-    parent[static_cast<size_t>(v)] = parent[static_cast<size_t>(parent[static_cast<size_t>(v)])];
-    v = parent[static_cast<size_t>(v)];
-  }
-  return v;
-}
 
 struct Part {
   Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity());
@@ -28,12 +21,6 @@ struct Part {
   double diagonal() const { return triangles > 0 ? (hi - lo).norm() : 0.0; }
   Vec3 middle() const { return 0.5 * (lo + hi); }
 };
-
-std::string number(double x) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g", x);
-  return text;
-}
 
 }  // namespace
 
@@ -44,13 +31,13 @@ void require_compact_parts(const TriMesh& mesh) {
   std::iota(parent.begin(), parent.end(), 0);
   for (const Triangle& t : mesh.triangles) {
     for (size_t i = 1; i < 3; ++i) {
-      const int a = find_root(parent, t[0]), b = find_root(parent, t[i]);
+      const int a = union_find_root(parent, t[0]), b = union_find_root(parent, t[i]);
       if (a != b) parent[static_cast<size_t>(std::max(a, b))] = std::min(a, b);
     }
   }
   std::vector<Part> parts(mesh.positions.size());
   for (const Triangle& t : mesh.triangles) {
-    Part& part = parts[static_cast<size_t>(find_root(parent, t[0]))];
+    Part& part = parts[static_cast<size_t>(union_find_root(parent, t[0]))];
     ++part.triangles;
     for (const int v : t) {
       part.lo = part.lo.cwiseMin(mesh.positions[static_cast<size_t>(v)]);
@@ -71,9 +58,9 @@ void require_compact_parts(const TriMesh& mesh) {
   }
   const Part& far = parts[farthest];
   throw InputError("a part of " + std::to_string(far.triangles) + (far.triangles == 1 ? " triangle" : " triangles") +
-                   " near " + detail::format_point(far.middle()) + " lies " + number(distance / size) +
-                   " times the largest part's size (" + number(size) + ") away from it: a stray piece? The mesh " +
-                   "may span at most " + number(kMaxPartSpread) + " times its largest part; delete the far-off part");
+                   " near " + detail::format_point(far.middle()) + " lies " + short_number(distance / size) +
+                   " times the largest part's size (" + short_number(size) + ") away from it: a stray piece? The mesh " +
+                   "may span at most " + short_number(kMaxPartSpread) + " times its largest part; delete the far-off part");
 }
 
 }  // namespace ff

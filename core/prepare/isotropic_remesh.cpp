@@ -9,6 +9,7 @@
 #include "core/prepare/surface_projector.h"
 #include "core/util/angles.h"
 #include "core/util/error.h"
+#include "core/util/union_find.h"
 
 namespace ff {
 
@@ -31,14 +32,6 @@ double length_for(double base, double density, double mean) {
 
 // Marks creases and boundary edges, the vertices on them, and the corners that stay fixed.
 // Returns the feature segments (input vertex pairs) in edge order.
-int find_root(std::vector<int>& parent, int v) {
-  while (parent[at(v)] != v) {
-    parent[at(v)] = parent[at(parent[at(v)])];
-    v = parent[at(v)];
-  }
-  return v;
-}
-
 std::vector<std::array<int, 2>> mark_features(RemeshState& s, double angle_deg, double min_crease_length) {
   const EditMesh& m = s.mesh;
   const double cos_limit = std::cos(std::min(angle_deg, 180.0) * kPi / 180.0);
@@ -51,18 +44,18 @@ std::vector<std::array<int, 2>> mark_features(RemeshState& s, double angle_deg, 
     const Vec3 n0 = m.face_normal(m.face(2 * e)), n1 = m.face_normal(m.face(2 * e + 1));
     if (n0.isZero() || n1.isZero() || n0.dot(n1) >= cos_limit) continue;
     crease[at(e)] = 1;
-    parent[at(find_root(parent, m.to(2 * e)))] = find_root(parent, m.to(2 * e + 1));
+    parent[at(union_find_root(parent, m.to(2 * e)))] = union_find_root(parent, m.to(2 * e + 1));
   }
   // Scanned or coarse surfaces have scattered sharp edges that are noise, not design: crease
   // networks shorter in total than min_crease_length are dropped (boundaries always stay).
   std::vector<double> network_length(at(m.num_vertices()), 0.0);
   for (int e = 0; e < m.num_edges(); ++e)
-    if (crease[at(e)]) network_length[at(find_root(parent, m.to(2 * e)))] += m.edge_length(e);
+    if (crease[at(e)]) network_length[at(union_find_root(parent, m.to(2 * e)))] += m.edge_length(e);
   std::vector<std::array<int, 2>> segments;
   std::vector<int> count(at(m.num_vertices()), 0);
   for (int e = 0; e < m.num_edges(); ++e) {
     const bool feature = m.is_boundary_edge(e) ||
-                         (crease[at(e)] && network_length[at(find_root(parent, m.to(2 * e)))] >= min_crease_length);
+                         (crease[at(e)] && network_length[at(union_find_root(parent, m.to(2 * e)))] >= min_crease_length);
     if (!feature) continue;
     s.edge_feature[at(e)] = 1;
     const int a = m.to(2 * e + 1), b = m.to(2 * e);

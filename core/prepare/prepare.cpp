@@ -2,12 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <utility>
 
 #include "core/prepare/isotropic_remesh.h"
 #include "core/quality/hausdorff.h"
 #include "core/util/error.h"
+#include "core/util/short_number.h"
 #include "core/util/with_commas.h"
 
 namespace ff {
@@ -15,12 +15,6 @@ namespace ff {
 namespace {
 
 size_t at(int i) { return static_cast<size_t>(i); }
-
-std::string number(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3g", x);
-  return buf;
-}
 
 // Area of an equilateral triangle with edge L.
 double equilateral_area(double L) { return std::sqrt(3.0) / 4.0 * L * L; }
@@ -91,7 +85,7 @@ PreparedSurface prepare_surface(const TriMesh& mesh, int panels, const std::vect
   check_density(mesh, density);
   const bool explicit_length = options.edge_length != 0.0;
   if (explicit_length && (!(options.edge_length > 0.0) || !std::isfinite(options.edge_length)))
-    throw InputError("the edge length must be a positive number, got " + number(options.edge_length));
+    throw InputError("the edge length must be a positive number, got " + short_number(options.edge_length));
   if (explicit_length && options.mode == PrepareMode::Off)
     throw InputError("an edge length needs preparation on (it remeshes to that length)");
   if (options.distance_samples < 0) throw InputError("the number of distance samples must not be negative");
@@ -121,16 +115,16 @@ PreparedSurface prepare_surface(const TriMesh& mesh, int panels, const std::vect
   std::string reason;
   if (options.mode == PrepareMode::Off) {
     return keep("preparation off: the " + with_commas(faces) + " triangles are used as they are (" +
-                number(per_panel) + " per panel; 20 to 100 work best)");
+                short_number(per_panel) + " per panel; 20 to 100 work best)");
   }
   if (explicit_length) {
     target = options.edge_length;
     const double estimate = area / equilateral_area(target);
     if (estimate > kPrepareMaxTriangles)
-      throw InputError("an edge length of " + number(target) + " needs about " + with_commas(std::llround(estimate)) +
+      throw InputError("an edge length of " + short_number(target) + " needs about " + with_commas(std::llround(estimate)) +
                        " triangles, more than the " + with_commas(kPrepareMaxTriangles) + " the preparation makes");
     if (estimate < panels)
-      throw InputError("an edge length of " + number(target) + " gives about " + with_commas(std::llround(estimate)) +
+      throw InputError("an edge length of " + short_number(target) + " gives about " + with_commas(std::llround(estimate)) +
                        " triangles, fewer than the " + panels_text + " asked for");
     reason = " triangles each, at the edge length asked for";
   } else if (dense_per_panel < kPrepareMinTrianglesPerPanel) {
@@ -143,7 +137,7 @@ PreparedSurface prepare_surface(const TriMesh& mesh, int panels, const std::vect
     const double wanted = std::min<double>(static_cast<double>(panels) * kPrepareTargetTrianglesPerPanel,
                                            kPrepareMaxTriangles / dense);
     target = edge_for_area(area / wanted);
-    reason = " triangles each (" + number(dense_per_panel) + (dense > 1.0 ? " where the density is highest" : "") +
+    reason = " triangles each (" + short_number(dense_per_panel) + (dense > 1.0 ? " where the density is highest" : "") +
              " before; 20 to 100 work best)";
   } else if (per_panel > kPrepareHugeTrianglesPerPanel && faces > options.huge_triangles) {
     target = edge_for_area(area / (static_cast<double>(panels) * kPrepareCoarsenTrianglesPerPanel));
@@ -151,7 +145,7 @@ PreparedSurface prepare_surface(const TriMesh& mesh, int panels, const std::vect
              ": a mesh this fine costs time and memory the panels cannot show";
   } else {
     return keep("kept the " + with_commas(faces) + " triangles as they are: " + panels_text + " get about " +
-                number(dense_per_panel) + " each" + (dense > 1.0 ? " where the density is highest" : ""));
+                short_number(dense_per_panel) + " each" + (dense > 1.0 ? " where the density is highest" : ""));
   }
 
   IsotropicRemeshOptions remesh;
@@ -175,12 +169,12 @@ PreparedSurface prepare_surface(const TriMesh& mesh, int panels, const std::vect
   r.target_edge = target;
   const std::string verb = explicit_length ? "remeshed" : (r.triangles_out >= r.triangles_in ? "refined" : "coarsened");
   r.messages.push_back(verb + " " + with_commas(faces) + " triangles to " + with_commas(r.triangles_out) +
-                       " (target edge " + number(target) + (density.empty() ? "" : ", shorter where the density is higher") +
-                       ") so " + panels_text + " get about " + number(static_cast<double>(r.triangles_out) / panels) +
+                       " (target edge " + short_number(target) + (density.empty() ? "" : ", shorter where the density is higher") +
+                       ") so " + panels_text + " get about " + short_number(static_cast<double>(r.triangles_out) / panels) +
                        reason);
   if (result.feature_edges > 0)
     r.messages.push_back("kept " + with_commas(result.feature_edges) + " boundary and crease edges (sharper than " +
-                         number(options.feature_angle_deg) + " degrees) as curves, " +
+                         short_number(options.feature_angle_deg) + " degrees) as curves, " +
                          with_commas(result.feature_corners) + (result.feature_corners == 1 ? " corner" : " corners") +
                          " fixed");
   if (out.mesh.num_faces() < panels)
@@ -192,9 +186,9 @@ PreparedSurface prepare_surface(const TriMesh& mesh, int panels, const std::vect
   const double diagonal = bbox_diagonal(mesh);
   r.distance = distance.two_sided;
   r.distance_relative = diagonal > 0.0 ? r.distance / diagonal : 0.0;
-  r.messages.push_back("the prepared surface is within " + number(r.distance) + " of the input (" +
-                       number(100.0 * r.distance_relative) + "% of its bounding-box diagonal, " +
-                       number(r.distance / target) + " of the target edge; sampled both ways)");
+  r.messages.push_back("the prepared surface is within " + short_number(r.distance) + " of the input (" +
+                       short_number(100.0 * r.distance_relative) + "% of its bounding-box diagonal, " +
+                       short_number(r.distance / target) + " of the target edge; sampled both ways)");
   return out;
 }
 

@@ -1,9 +1,10 @@
 #include "core/quality/report_json.h"
 
 #include <algorithm>
-#include <cstdio>
 #include <set>
 #include <utility>
+
+#include "core/util/short_number.h"
 
 namespace ff {
 
@@ -143,22 +144,17 @@ std::string invalid_panels_phrase(const PanelMesh& pm, const QualityReport& q) {
 
 std::string planarity_phrase(const QualityReport& q) {
   if (!(q.max_planarity > kPlanarityTarget)) return "";
-  const auto number = [](double x) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.3g", x);
-    return std::string(text);
-  };
-  std::string out = "the panels as written are flat to " + number(q.max_planarity) + " of their size, not " +
-                    number(kPlanarityTarget);
+  std::string out = "the panels as written are flat to " + short_number(q.max_planarity) + " of their size, not " +
+                    short_number(kPlanarityTarget);
   // Within a hundred times of what the doubles allow: the coordinates, not the solve.
   if (q.planarity_floor * 100.0 >= q.max_planarity)
     return out + ": the coordinates are so far from the origin that their last digit is already " +
-           number(q.planarity_floor) + " of a panel's size; moved near the origin, the model gives flat panels";
+           short_number(q.planarity_floor) + " of a panel's size; moved near the origin, the model gives flat panels";
   // The coordinates about the middle of the whole mesh: a far-off part moved it away.
   if (q.planarity_floor_solve * 100.0 >= q.max_planarity)
     return out + ": a part of the mesh lies so far from the rest that, about the middle of the whole, the "
                  "coordinates' last digit is already " +
-           number(q.planarity_floor_solve) + " of a panel's size; without the far-off part, the model gives flat panels";
+           short_number(q.planarity_floor_solve) + " of a panel's size; without the far-off part, the model gives flat panels";
   // Else a vertex whose planes have no common point (closest_point_on_planes' inexact case),
   // which the panel phase counts as a spike: the panel is invalid and listed.
   const bool invalid = std::binary_search(q.invalid_panel_ids.begin(), q.invalid_panel_ids.end(), q.max_planarity_panel);

@@ -3,43 +3,34 @@
 // panel: the report's planarity_floor) or at an invalid panel whose planes do not meet. The
 // CLI's warning says the same (core/quality/report_json.h, planarity_phrase).
 import type { QualityReport } from './protocol.ts';
+import { numberAt } from './reportNumber.ts';
 import { scientific } from './scientific.ts';
 import type { StatRow } from './statsList.ts';
 
 export const PLANARITY_TARGET = 1e-9;
 
-function numberAt(report: QualityReport, key: string): number | null {
-  const value = report[key];
-  return typeof value === 'number' && Number.isFinite(value) ? value : null;
-}
+// Why the panels are above the target (cause null when they are not): the coordinates far
+// from the origin, a far-off part, an invalid panel, or nothing known.
+type Cause = 'origin' | 'part' | 'invalid' | 'unknown';
 
-// Why the panels are above the target ('' when they are not): the coordinates, an invalid
-// panel, or nothing known.
-function reason(report: QualityReport): { above: boolean; why: string; farFromOrigin: boolean } {
+function reason(report: QualityReport): { cause: Cause | null; why: string } {
   const planarity = numberAt(report, 'max_planarity');
-  if (planarity === null || !(planarity > PLANARITY_TARGET)) return { above: false, why: '', farFromOrigin: false };
+  if (planarity === null || !(planarity > PLANARITY_TARGET)) return { cause: null, why: '' };
   const floor = numberAt(report, 'planarity_floor') ?? 0;
   if (floor * 100 >= planarity)
-    return {
-      above: true,
-      why: `the coordinates are so far from the origin that their last digit is already ${scientific(floor)} of a panel: moved near the origin, the model gives flat panels`,
-      farFromOrigin: true,
-    };
+    return { cause: 'origin', why: `the coordinates are so far from the origin that their last digit is already ${scientific(floor)} of a panel: moved near the origin, the model gives flat panels` };
   const solveFloor = numberAt(report, 'planarity_floor_solve') ?? 0;
   if (solveFloor * 100 >= planarity)
-    return {
-      above: true,
-      why: `a part of the mesh lies so far from the rest that the coordinates' last digit is already ${scientific(solveFloor)} of a panel: without the far-off part, the model gives flat panels`,
-      farFromOrigin: true,
-    };
+    return { cause: 'part', why: `a part of the mesh lies so far from the rest that the coordinates' last digit is already ${scientific(solveFloor)} of a panel: without the far-off part, the model gives flat panels` };
   const panel = numberAt(report, 'max_planarity_panel');
   const invalid = Array.isArray(report.invalid) && report.invalid.some((p) => typeof p === 'object' && p !== null && (p as { panel?: unknown }).panel === panel);
-  if (invalid) return { above: true, why: `the least flat is panel ${panel}, an invalid one (a vertex where its planes do not meet)`, farFromOrigin: false };
-  return { above: true, why: panel === null ? '' : `the least flat is panel ${panel}`, farFromOrigin: false };
+  if (invalid) return { cause: 'invalid', why: `the least flat is panel ${panel}, an invalid one (a vertex where its planes do not meet)` };
+  return { cause: 'unknown', why: panel === null ? '' : `the least flat is panel ${panel}` };
 }
 
 export function planarityRow(report: QualityReport): StatRow {
-  const { above, why } = reason(report);
+  const { cause, why } = reason(report);
+  const above = cause !== null;
   return {
     label: 'Planarity',
     value: scientific(numberAt(report, 'max_planarity')),
@@ -51,10 +42,8 @@ export function planarityRow(report: QualityReport): StatRow {
 // For the status line, only where the designer can act on it (valid panels on a model far from
 // the origin; invalid panels are named there already): '' otherwise.
 export function planarityWarning(report: QualityReport): string {
-  const { farFromOrigin } = reason(report);
-  if (!farFromOrigin) return '';
-  const floor = numberAt(report, 'planarity_floor') ?? 0;
-  const planarity = numberAt(report, 'max_planarity') ?? 0;
-  const where = floor * 100 >= planarity ? 'the model is far from the origin (move it nearer)' : 'a part of the mesh lies far from the rest (remove it)';
-  return `panels flat to ${scientific(planarity)} of their size, not 10⁻⁹: ${where}`;
+  const { cause } = reason(report);
+  if (cause !== 'origin' && cause !== 'part') return '';
+  const where = cause === 'origin' ? 'the model is far from the origin (move it nearer)' : 'a part of the mesh lies far from the rest (remove it)';
+  return `panels flat to ${scientific(numberAt(report, 'max_planarity'))} of their size, not 10⁻⁹: ${where}`;
 }

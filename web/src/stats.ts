@@ -2,14 +2,11 @@
 import type { QualityReport, SolveResult } from './protocol.ts';
 import { coverageRow } from './coverage.ts';
 import { planarityRow } from './planarity.ts';
+import { numberAt } from './reportNumber.ts';
 import { scientific } from './scientific.ts';
 import { problemsPhrase, summarizeInvalid } from './invalidPanels.ts';
 import { statsList, type StatRow } from './statsList.ts';
 
-function numberAt(report: QualityReport, key: string): number | null {
-  const value = report[key];
-  return typeof value === 'number' && Number.isFinite(value) ? value : null;
-}
 
 // The invalid panels appear as a count or as a list of {panel, problems}.
 function countAt(report: QualityReport, key: string): number | null {
