@@ -3,13 +3,13 @@
 #include <Eigen/Geometry>
 #include <cmath>
 #include <algorithm>
-#include <cstdio>
 #include <cstdlib>
 #include <utility>
 #include <vector>
 
 #include "core/mesh/half_edges.h"
 #include "core/util/error.h"
+#include "core/util/short_number.h"
 
 namespace ff::prepare_detail {
 
@@ -77,10 +77,8 @@ std::string longest_edge_phrase(const RemeshState& s) {
     if (worst < 0 || ratio > worst_ratio) worst = e, worst_ratio = ratio;
   }
   if (worst < 0) return "";
-  char ratio[32];
-  std::snprintf(ratio, sizeof ratio, "%.3g", worst_ratio);
   return "the edge from " + detail::format_point(m.position(m.to(2 * worst + 1))) + " to " +
-         detail::format_point(m.position(m.to(2 * worst))) + " is " + ratio + " times its target";
+         detail::format_point(m.position(m.to(2 * worst))) + " is " + short_number(worst_ratio) + " times its target";
 }
 
 void split_long_edges(RemeshState& s, long long max_faces) {
