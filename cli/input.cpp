@@ -46,6 +46,9 @@ LoadedInput load_input(const std::string& path, const CleanOptions& options) {
   } catch (const NonManifoldError& e) {
     throw InputError(std::string(e.what()) + "; rerun with --largest-part to keep the largest manifold part (" +
                      std::to_string(e.largest_part_faces) + " of " + std::to_string(e.total_faces) + " faces)");
+  } catch (const LargestPartError& e) {  // a stray part far off
+    throw InputError(std::string(e.what()) + ", or rerun with --largest-part to keep only the largest part (" +
+                     std::to_string(e.largest_part_faces) + " of " + std::to_string(e.total_faces) + " faces)");
   }
   in.clean_seconds = seconds_since(t0);
   return in;

@@ -37,7 +37,8 @@ const std::set<std::string>& repair_switch_names();
 CleanOptions parse_repair(const Args& args);
 
 // Reads and cleans. A mesh with non-manifold edges is refused with the edge named and the
-// offer of the largest manifold part ("rerun with --largest-part ... (N of M faces)").
+// offer of the largest manifold part ("rerun with --largest-part ... (N of M faces)"); one
+// with a part far from the rest, with the part named and the same offer.
 LoadedInput load_input(const std::string& path, const CleanOptions& options = {});
 
 // Replaces in.clean by the subdivided surface: the cleaned triangles merged back into the

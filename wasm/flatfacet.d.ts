@@ -36,8 +36,9 @@ export interface MeshRepair {
   partsDropped: number;
 }
 
-// A load refused for non-manifold edges: the message names the first edge; setRepair(_, true)
-// and loading again keeps the largest manifold part, of `faces` of the mesh's `of` faces.
+// A load refused for non-manifold edges (the message names the first edge) or for a part far
+// from the rest (named): setRepair(_, true) and loading again keeps the largest part, of `faces`
+// of the mesh's `of` faces.
 export interface NonManifoldStatus extends Status {
   largestPart?: { faces: number; of: number };
 }
@@ -194,7 +195,8 @@ export interface Session {
   remapFaces(faces: Int32Array): Int32Array;
   // How the next loads repair the mesh (issue 7): fill holes of at most `fillHoles` edges
   // (0 = off, at most 500); with `largestPart`, a mesh with non-manifold edges is cut there and
-  // its largest manifold part kept. Without it such a load fails with a NonManifoldStatus.
+  // only its largest part kept (every other part dropped). Without it such a load, or one with a
+  // part far from the rest, fails with a NonManifoldStatus.
   // Status JSON; the mesh already loaded stays as it is.
   setRepair(fillHoles: number, largestPart: boolean): string;
   // Sets parameters (JSON of RemeshParams). With a solve under way or finished, warm-starts from

@@ -22,8 +22,9 @@ template <typename F>
 std::string guarded(F&& f) {
   try {
     return f();
-  } catch (const NonManifoldError& e) {
-    // The page offers to open the largest manifold part instead (Session::set_repair).
+  } catch (const LargestPartError& e) {
+    // Non-manifold edges or a far-off part: the page offers to open the largest part instead
+    // (Session::set_repair).
     JsonWriter j;
     j.begin_object().value("ok", false).value("message", e.what());
     j.begin_object("largestPart").value("faces", e.largest_part_faces).value("of", e.total_faces).end_object();

@@ -60,9 +60,9 @@ class Session {
   std::vector<std::int32_t> remap_faces(const std::vector<std::int32_t>& faces) const;
   // How the next loads repair the mesh (wasm/session_repair.cpp, core/mesh/clean.h): fill
   // holes of at most `fill_holes` edges (0 = off, at most 500) and, with `largest_part`, cut
-  // a mesh with non-manifold edges there and keep its largest manifold part (otherwise such
-  // a load fails with a Status naming the edge and "largestPart": {"faces", "of"}). Status
-  // JSON; the mesh loaded already stays as it is.
+  // a mesh with non-manifold edges there and keep only its largest part (otherwise such a
+  // load, or one with a part far from the rest, fails with a Status naming the problem and
+  // "largestPart": {"faces", "of"}). Status JSON; the mesh loaded already stays as it is.
   std::string set_repair(int fill_holes, bool largest_part);
   // Status JSON. Warm-starts a solve under way or finished (Remesher::set_params). The
   // density field (set_density) stays as it is.

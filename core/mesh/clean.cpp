@@ -196,17 +196,19 @@ int split_nonmanifold_vertices(std::vector<Triangle>& tris, const HalfEdgeGroups
 
 // Non-manifold edges: refused with a NonManifoldError (naming the first edge and offering
 // the largest manifold part), or with largest_manifold_part cut there and only the largest
-// part kept (tris and kept, the input face of each, shrink to it). Returns, per vertex,
-// whether it was used before the cut (empty when nothing was cut), so the vertices of the
-// parts left out are not reported as unused ones.
+// part kept (tris and kept, the input face of each, shrink to it); with that option a mesh of
+// several parts keeps its largest as well. Returns, per vertex, whether it was used before
+// the cut (empty when nothing was cut), so the vertices of the parts left out are not
+// reported as unused ones.
 std::vector<char> keep_manifold_part(std::vector<Triangle>& tris, std::vector<int>& kept,
                                      const std::vector<Vec3>& positions, const CleanOptions& options,
                                      CleanReport& report) {
   const HalfEdgeGroups groups = detail::group_half_edges(tris, static_cast<int>(positions.size()));
   bool manifold = true;
   for (int g = 0; g < groups.num_groups() && manifold; ++g) manifold = groups.group_size(g) < 3;
-  if (manifold) return {};
+  if (manifold && !options.largest_manifold_part) return {};
   const detail::ManifoldPart part = detail::largest_manifold_part(tris, positions);
+  if (manifold && part.sheets <= 1) return {};  // one part: nothing to drop
   const int total = static_cast<int>(tris.size()), part_faces = static_cast<int>(part.faces.size());
   if (!options.largest_manifold_part) {
     try {
@@ -256,6 +258,11 @@ std::vector<std::string> CleanReport::messages() const {
     out.push_back("kept the largest manifold part (" + std::to_string(faces_before_cut - faces_outside_part) + " of " +
                   count_of(faces_before_cut, "face", "faces") + "): cut at " +
                   count_of(nonmanifold_edges_cut, "non-manifold edge", "non-manifold edges") + ", dropped " +
+                  count_of(faces_outside_part, "face", "faces") + " in " +
+                  count_of(parts_dropped, "other part", "other parts"));
+  } else if (parts_dropped > 0) {
+    out.push_back("kept the largest part (" + std::to_string(faces_before_cut - faces_outside_part) + " of " +
+                  count_of(faces_before_cut, "face", "faces") + "): dropped " +
                   count_of(faces_outside_part, "face", "faces") + " in " +
                   count_of(parts_dropped, "other part", "other parts"));
   }

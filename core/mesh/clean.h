@@ -30,8 +30,10 @@ struct CleanOptions {
   // Fill boundary loops (holes) of at most this many edges with a least-area triangulation
   // (core/mesh/fill_holes.h); 0 = off, at most 500.
   int fill_holes_max_edges = 0;
-  // Instead of refusing non-manifold edges (NonManifoldError), cut the mesh there (each
-  // fan of faces becomes its own sheet) and keep the manifold part of largest area.
+  // Keep only the part of largest area: cut the mesh at non-manifold edges (each fan of faces
+  // becomes its own sheet) instead of refusing them (NonManifoldError), and drop every other
+  // part, joined to it by no edge (a stray piece, which part_spread.h refuses when far off).
+  // Parts that touch only at a vertex count as separate. A mesh of one part stays as it is.
   bool largest_manifold_part = false;
 };
 
@@ -45,8 +47,9 @@ struct CleanReport {
   int slivers_removed = 0;           // sliver faces collapsed, flipped or dropped
   int holes_filled = 0;              // boundary loops filled (fill_holes_max_edges)
   int hole_faces_added = 0;          // faces those fillings added
-  // largest_manifold_part: the non-manifold edges cut, the faces then (after dropping
-  // degenerate and duplicate ones), and the faces and parts left out.
+  // largest_manifold_part: the non-manifold edges cut (0 when only separate parts were
+  // dropped), the faces then (after dropping degenerate and duplicate ones), and the faces
+  // and parts left out.
   int nonmanifold_edges_cut = 0;
   int faces_before_cut = 0;
   int faces_outside_part = 0;
@@ -76,14 +79,13 @@ struct CleanMesh {
 
 // What clean_mesh() throws for non-manifold edges without largest_manifold_part: the
 // message names the first edge (vertices, position, faces) and how many more there are;
-// the numbers let a caller offer the largest manifold part ("N of M faces").
-class NonManifoldError : public InputError {
+// the numbers let a caller offer the largest manifold part ("N of M faces"). A part far from
+// the rest is refused with a LargestPartError too (part_spread.h).
+class NonManifoldError : public LargestPartError {
  public:
   NonManifoldError(const std::string& message, int edges, int part_faces, int faces)
-      : InputError(message), nonmanifold_edges(edges), largest_part_faces(part_faces), total_faces(faces) {}
+      : LargestPartError(message, part_faces, faces), nonmanifold_edges(edges) {}
   int nonmanifold_edges;
-  int largest_part_faces;  // faces of the part largest_manifold_part would keep
-  int total_faces;         // after dropping degenerate and duplicate faces
 };
 
 // Faces added to fill a hole stand, in face_source, for the face along the hole's first

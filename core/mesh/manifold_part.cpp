@@ -29,7 +29,7 @@ ManifoldPart largest_manifold_part(const std::vector<Triangle>& tris, const std:
       }
     }
     if (first_round) result.nonmanifold_edges = bad;
-    if (bad == 0) break;
+    if (bad == 0 && !first_round) break;  // the first round splits a manifold mesh into its parts
 
     std::vector<int> parent(sub.size());
     std::iota(parent.begin(), parent.end(), 0);

@@ -9,15 +9,16 @@ namespace ff::detail {
 
 struct ManifoldPart {
   std::vector<int> faces;      // the part's faces (indices into tris), increasing
-  int sheets = 0;              // parts after cutting the mesh at its non-manifold edges
+  int sheets = 0;              // parts after cutting the mesh at its non-manifold edges (if any)
   int nonmanifold_edges = 0;   // edges with three or more faces
 };
 
 // Cuts the mesh at every edge with three or more faces (the faces of each fan there become
 // their own sheets: faces are joined only across edges with exactly two faces) and keeps
-// the sheet of largest area (ties: more faces, then the lowest face). Should that sheet
-// still hold three faces of one edge (it wraps back onto it), the faces there beyond the
-// first two are dropped and the cut repeated, so the result is always edge-manifold.
+// the sheet of largest area (ties: more faces, then the lowest face). A mesh without such
+// edges is split into its parts (joined by edges) the same way. Should that sheet still hold
+// three faces of one edge (it wraps back onto it), the faces there beyond the first two are
+// dropped and the cut repeated, so the result is always edge-manifold.
 // tris: distinct, non-degenerate faces with valid indices.
 ManifoldPart largest_manifold_part(const std::vector<Triangle>& tris, const std::vector<Vec3>& positions);
 

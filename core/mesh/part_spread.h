@@ -11,9 +11,11 @@ namespace ff {
 // The mesh's bounding box may be at most this many times the largest part's (by diagonal).
 constexpr double kMaxPartSpread = 1e5;
 
-// Throws InputError naming the part farthest from the largest one (its triangles and where it
-// is) when the whole mesh's bounding-box diagonal exceeds kMaxPartSpread times the largest
-// connected part's. Parts are connected through shared vertices. O(m).
+// Throws a LargestPartError naming the part farthest from the largest one (its triangles and
+// where it is) when the whole mesh's bounding-box diagonal exceeds kMaxPartSpread times the
+// largest connected part's; its numbers count the faces of the part of largest area, which
+// CleanOptions::largest_manifold_part would keep. Parts are connected through shared
+// vertices (mesh: cleaned, so also through edges). O(m), plus O(m log m) when refused.
 void require_compact_parts(const TriMesh& mesh);
 
 }  // namespace ff

@@ -14,4 +14,15 @@ class InputError : public std::runtime_error {
   explicit InputError(const std::string& message) : std::runtime_error(message) {}
 };
 
+// An input error that keeping only the mesh's largest part gets past (clean_mesh with
+// CleanOptions::largest_manifold_part): non-manifold edges, a stray part far from the rest.
+// The numbers let a caller offer it ("the largest part, N of M faces").
+class LargestPartError : public InputError {
+ public:
+  LargestPartError(const std::string& message, int part_faces, int faces)
+      : InputError(message), largest_part_faces(part_faces), total_faces(faces) {}
+  int largest_part_faces;  // faces of the part that option would keep
+  int total_faces;         // after dropping degenerate and duplicate faces
+};
+
 }  // namespace ff

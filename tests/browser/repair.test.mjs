@@ -2,11 +2,12 @@
 // edge named and a "Use largest manifold part" button; the button opens one closed cube that
 // solves to valid planar panels and says what was dropped; a share link carries the choice (and
 // "Fill holes up to (edges)"), so a fresh context opens and solves the very same mesh, and so
-// does the stored session. Holes are filled only when asked. Run after `npm run build`.
+// does the stored session. A stray part far off gets the same offer. Holes are filled only when
+// asked. Run after `npm run build`.
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
 import { browserSuite, download, errorAfter, exampleLink, maxPlanarity, outcomes, parseObj, screenshot, solveAfter, waitForDone, waitForSaved } from './harness.mjs';
-import { openBoxObj, twoCubesObj } from '../fixtures/meshes.mjs';
+import { cubeAndFarTriangleObj, openBoxObj, twoCubesObj } from '../fixtures/meshes.mjs';
 
 const suite = browserSuite();
 
@@ -46,6 +47,22 @@ test('a non-manifold upload offers its largest manifold part, which solves, and 
       assert.match(await cleanupNote(opened), /kept the largest manifold part \(12 of 24 faces\)/);
       assert.equal((await download(opened, 'Export OBJ')).text, obj, 'the link opens the same part: the same OBJ bytes');
     });
+  }));
+
+test('a stray part far off is named and offered the largest part, which solves', () =>
+  suite.withPage(exampleLink(suite.url, 'saddle', params), async (page) => {
+    await waitForDone(page);
+    const offer = page.getByRole('button', { name: 'Use largest manifold part' });
+    const message = await errorAfter(page, () => upload(page, 'stray.obj', cubeAndFarTriangleObj()));
+    assert.match(message, /a part of 1 triangle near \(1e\+08, 0\.005, 0\) lies .* times the largest part's size/);
+    assert.match(message, /Use the largest manifold part \(12 of 13 faces\)\?/);
+    assert.equal(await offer.isVisible(), true);
+    assert.equal(await solveAfter(page, () => offer.click()), PANELS);
+    assert.match(await cleanupNote(page), /kept the largest part \(12 of 13 faces\): dropped 1 face in 1 other part/);
+    const panels = parseObj((await download(page, 'Export OBJ')).text);
+    assert.ok(maxPlanarity(panels) <= 1e-9);
+    for (const v of panels.vertices) assert.ok(Math.max(...v) <= 1.01, `${v} is on the cube, not the far triangle`);
+    await screenshot(page, 'repair-far-part');
   }));
 
 test('holes are filled only when asked, and the setting travels in a link', () =>

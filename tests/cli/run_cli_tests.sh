@@ -685,8 +685,17 @@ for _ in range(nf):
 faces.append(f"3 {nv} {nv + 1} {nv + 2}")
 open(sys.argv[1], "w").write(f"OFF\n{nv + 3} {nf + 1} 0\n" + "\n".join(rows + faces) + "\n")
 PY
-expect_error 2 "a part of 1 triangle near \(1e\+08, 0.005, 0\) lies .* times the largest part's size .*delete the far-off part" \
+expect_error 2 "a part of 1 triangle near \(1e\+08, 0.005, 0\) lies .* times the largest part's size .*delete the far-off part, or rerun with --largest-part to keep only the largest part \(1536 of 1537 faces\)$" \
   remesh "$tmp/farpart.off" --panels 30 --out "$tmp/never.obj" --report "$tmp/never.json"
+# The offer works: --largest-part drops the stray triangle and solves epcot (its 1536 triangles).
+"$bin" remesh "$tmp/farpart.off" --panels 30 --largest-part --report "$tmp/farpart.json" >/dev/null 2>"$tmp/err.txt" &&
+  python3 -c "
+import json, sys
+r = json.load(open(sys.argv[1]))
+assert r['triangles'] == 1536 and r['components'] == 1 and r['status'] == 'valid', r
+assert r['repair']['parts_dropped'] == 1 and r['repair']['faces_outside_part'] == 1 and r['repair']['nonmanifold_edges_cut'] == 0, r['repair']
+assert r['cleanup'] == ['kept the largest part (1536 of 1537 faces): dropped 1 face in 1 other part'], r['cleanup']
+" "$tmp/farpart.json" && ok || bad "--largest-part on a far-off part: $(cat "$tmp/err.txt")"
 
 # A missing triangle between two panels stays a hole (fuzz_cli.py found it closed, exit 0).
 python3 - "$e" "$tmp/holed1.off" <<'PY'

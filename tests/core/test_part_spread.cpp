@@ -29,13 +29,35 @@ TEST(PartSpread, AFarOffTriangleIsRefusedByName) {
   try {
     clean_mesh(with_triangle_at(epcot, 1e8));
     FAIL() << "a triangle 1e8 away was accepted";
-  } catch (const InputError& e) {
+  } catch (const LargestPartError& e) {
     const std::string message = e.what();
     EXPECT_NE(message.find("a part of 1 triangle near (1e+08, 0.005, 0) lies 2.76e+07 times the largest part's size"),
               std::string::npos)
         << message;
     EXPECT_NE(message.find("delete the far-off part"), std::string::npos) << message;
+    // What keeping the largest part would keep, for the CLI's and the page's offer.
+    EXPECT_EQ(e.largest_part_faces, 1536);
+    EXPECT_EQ(e.total_faces, 1537);
   }
+}
+
+// The offer works: with largest_manifold_part the stray triangle is dropped, and epcot comes
+// out exactly as it does alone.
+TEST(PartSpread, KeepingTheLargestPartDropsTheFarOffOne) {
+  const TriMesh epcot = test::load_clean("epcot.off");
+  CleanOptions largest;
+  largest.largest_manifold_part = true;
+  const CleanMesh kept = clean_mesh(with_triangle_at(epcot, 1e8), largest);
+  EXPECT_EQ(kept.mesh.triangles, epcot.triangles);
+  EXPECT_EQ(kept.mesh.positions, epcot.positions);
+  EXPECT_EQ(kept.report.parts_dropped, 1);
+  EXPECT_EQ(kept.report.faces_outside_part, 1);
+  EXPECT_EQ(kept.report.nonmanifold_edges_cut, 0);
+  EXPECT_EQ(kept.input_face_to_clean.back(), -1);
+  EXPECT_EQ(kept.report.unreferenced_vertices_removed, 0);  // the stray triangle's are not "unused"
+  const auto messages = kept.report.messages();
+  ASSERT_FALSE(messages.empty());
+  EXPECT_EQ(messages.front(), "kept the largest part (1536 of 1537 faces): dropped 1 face in 1 other part");
 }
 
 TEST(PartSpread, PartsFarButWithinTheLimitAreKept) {

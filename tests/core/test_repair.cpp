@@ -273,6 +273,41 @@ TEST(Repair, TwoCubesOnAnEdgeNameItAndKeepOneClosedCube) {
             messages.end());
 }
 
+// Two cubes apart, each closed and manifold: kept both unless the largest part is asked for,
+// which keeps the larger one whole (a part joined by no edge is dropped, as a cut-off sheet is).
+TEST(Repair, LargestPartDropsSeparateParts) {
+  TriMesh big = cube_at(Vec3(0, 0, 0));
+  for (Vec3& p : big.positions) p *= 2.0;
+  const TriMesh m = joined({cube_at(Vec3(5, 0, 0)), big});
+  const CleanMesh both = clean_mesh(m);
+  EXPECT_EQ(both.mesh.num_faces(), 24);
+  EXPECT_EQ(both.report.components, 2);
+  EXPECT_EQ(both.report.parts_dropped, 0);
+  CleanOptions o;
+  o.largest_manifold_part = true;
+  const CleanMesh c = clean_mesh(m, o);
+  expect_maps(m, c);
+  EXPECT_EQ(c.mesh.num_faces(), 12);
+  EXPECT_EQ(c.report.components, 1);
+  EXPECT_NEAR(signed_volume(c.mesh), 8.0, 1e-12);  // the big cube
+  EXPECT_EQ(c.report.nonmanifold_edges_cut, 0);
+  EXPECT_EQ(c.report.faces_before_cut, 24);
+  EXPECT_EQ(c.report.faces_outside_part, 12);
+  EXPECT_EQ(c.report.parts_dropped, 1);
+  EXPECT_EQ(c.report.unreferenced_vertices_removed, 0);
+  for (int f = 0; f < 12; ++f) EXPECT_EQ(c.input_face_to_clean[static_cast<size_t>(f)], -1);
+  const auto messages = c.report.messages();
+  EXPECT_NE(std::find(messages.begin(), messages.end(),
+                      "kept the largest part (12 of 24 faces): dropped 12 faces in 1 other part"),
+            messages.end());
+  // A mesh of one part is left exactly as it is.
+  const TriMesh one = cube_at(Vec3(0, 0, 0));
+  const CleanMesh alone = clean_mesh(one, o);
+  EXPECT_EQ(alone.mesh.triangles, clean_mesh(one).mesh.triangles);
+  EXPECT_EQ(alone.report.faces_before_cut, 0);
+  EXPECT_EQ(alone.report.messages(), clean_mesh(one).report.messages());  // welded, nothing dropped
+}
+
 // Three rectangular sheets (two triangles each) on the spine from (0,0,0) to (0,0,1),
 // sizes 1, 2 and 1.5 across: the 2 one is the largest part.
 TEST(Repair, BookOfThreeSheetsKeepsTheLargest) {

@@ -302,7 +302,7 @@ export class App {
     const what = this.machine.failed(job);
     if (what === null) return; // an answer to a request the page moved past
     if (what === 'open' && largestPart && !this.machine.opening) {
-      // Non-manifold edges: offer the largest manifold part (issue 7).
+      // Non-manifold edges or a stray part far off: offer the largest manifold part (issue 7).
       this.repair.showOffer(largestPart.faces, largestPart.of, () => void this.opener.openLargestPart());
       reason = `${reason}. Use the largest manifold part (${largestPart.faces.toLocaleString('en-US')} of ${largestPart.of.toLocaleString('en-US')} faces)?`;
     }

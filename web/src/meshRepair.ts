@@ -1,6 +1,6 @@
 // How an opened mesh is repaired beyond the clean-up every load gets (issue 7, Session.setRepair):
 // holes of at most `fillHoles` edges filled, and with `largestPart` a mesh with non-manifold
-// edges cut there and its largest manifold part kept. Recorded with the design's mesh
+// edges cut there and only its largest part kept (a stray part far off dropped too). Recorded with the design's mesh
 // (DesignMesh.repair) so a link or a reload opens the very same mesh; absent means neither
 // (links made before this open as they did). No DOM: unit-tested in Node.
 import { failure, type Checked } from './params.ts';

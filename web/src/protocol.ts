@@ -105,7 +105,7 @@ export type WorkerResponse =
   | { type: 'crashed'; message: string }
   | { type: 'loaded'; job: number; info: MeshInfo; positions: Float32Array; indices: Uint32Array; carried?: Carry }
   // A load or solve the core refused; the worker's previous mesh and result are intact.
-  // largestPart: refused for non-manifold edges; the largest manifold part has `faces` of `of`.
+  // largestPart: refused for non-manifold edges or a part far off; the largest part has `faces` of `of`.
   | { type: 'failed'; job: number; message: string; largestPart?: { faces: number; of: number } }
   | { type: 'progress'; job: number; progress: Progress; elapsedSeconds: number }
   | { type: 'clusters'; job: number; clusterIds: Int32Array }

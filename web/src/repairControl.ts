@@ -1,6 +1,6 @@
 // The page's side of mesh repair (issue 7): the "Fill holes up to (edges)" input of the Surface
-// section, and, when a mesh was refused for non-manifold edges, the offer under the status to
-// open its largest manifold part instead. What was chosen travels with the design's mesh
+// section, and, when a mesh was refused for non-manifold edges or a stray part far off, the
+// offer under the status to open its largest manifold part instead. What was chosen travels with the design's mesh
 // (DesignMesh.repair, meshRepair.ts).
 import { element } from './dom.ts';
 import { failure, type Checked } from './params.ts';
@@ -47,7 +47,7 @@ export class RepairControl {
     this.fillHoles.removeAttribute('aria-invalid');
   }
 
-  // After a refusal for non-manifold edges: the button reopens with the largest part.
+  // After a refusal for non-manifold edges or a far-off part: the button reopens with the largest part.
   showOffer(faces: number, of: number, reopen: () => void): void {
     this.useLargest.title = `Open the largest manifold part: ${faces.toLocaleString('en-US')} of ${of.toLocaleString('en-US')} faces`;
     this.offered = reopen;

@@ -35,7 +35,7 @@ let crashAfterSteps: number | null = null; // test hook: counts down in the seco
 let solvesFinished = 0;
 
 // A Status with ok false: the request failed, the session kept its mesh and result. A load
-// refused for non-manifold edges says how large its largest manifold part is.
+// refused for non-manifold edges or a far-off part says how large its largest part is.
 class StatusError extends Error {
   constructor(
     message: string,
