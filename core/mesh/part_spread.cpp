@@ -58,12 +58,15 @@ void require_compact_parts(const TriMesh& mesh) {
     if (d > distance) distance = d, farthest = p;
   }
   const Part& far = parts[farthest];
+  const std::string message = "a part of " + std::to_string(far.triangles) +
+                              (far.triangles == 1 ? " triangle" : " triangles") + " near " +
+                              detail::format_point(far.middle()) + " lies " + short_number(distance / size) +
+                              " times the largest part's size (" + short_number(size) +
+                              ") away from it: a stray piece? The mesh may span at most " +
+                              short_number(kMaxPartSpread) + " times its largest part; delete the far-off part";
+  // What keeping the largest part would keep: the part of largest area (manifold_part.h).
   const size_t kept = detail::largest_manifold_part(mesh.triangles, mesh.positions).faces.size();
-  throw LargestPartError("a part of " + std::to_string(far.triangles) + (far.triangles == 1 ? " triangle" : " triangles") +
-                   " near " + detail::format_point(far.middle()) + " lies " + short_number(distance / size) +
-                   " times the largest part's size (" + short_number(size) + ") away from it: a stray piece? The mesh " +
-                   "may span at most " + short_number(kMaxPartSpread) + " times its largest part; delete the far-off part",
-                         static_cast<int>(kept), static_cast<int>(mesh.triangles.size()));
+  throw LargestPartError(message, static_cast<int>(kept), static_cast<int>(mesh.triangles.size()));
 }
 
 }  // namespace ff
