@@ -87,7 +87,7 @@ const char* kUsage =
     "          [--fill-holes N] [--largest-part]\n"
     "      Cluster the surface into N contiguous regions (the Lloyd phase). LABELS.txt gets\n"
     "      one cluster id (0..N-1) per input triangle, in input order (polygons count as the\n"
-    "      triangles they are split into, in order).\n"
+    "      triangles they are split into, in order; -1 for one --largest-part left out).\n"
     "      Weights: euclidean (round, even panels), l2 and l21 (follow the curvature), each\n"
     "      0..1e6; density (how strongly a density field sets panel size), 0..8. The boundary\n"
     "      weight belongs to the panel phase and has no effect here.\n"

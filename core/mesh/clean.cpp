@@ -199,10 +199,11 @@ int split_nonmanifold_vertices(std::vector<Triangle>& tris, const HalfEdgeGroups
 // part kept (tris and kept, the input face of each, shrink to it); with that option a mesh of
 // several parts keeps its largest as well. Returns, per vertex, whether it was used before
 // the cut (empty when nothing was cut), so the vertices of the parts left out are not
-// reported as unused ones.
+// reported as unused ones; `outside` (per input face, of input_faces) marks the faces left
+// out with their part.
 std::vector<char> keep_manifold_part(std::vector<Triangle>& tris, std::vector<int>& kept,
                                      const std::vector<Vec3>& positions, const CleanOptions& options,
-                                     CleanReport& report) {
+                                     CleanReport& report, size_t input_faces, std::vector<char>& outside) {
   const HalfEdgeGroups groups = detail::group_half_edges(tris, static_cast<int>(positions.size()));
   bool manifold = true;
   for (int g = 0; g < groups.num_groups() && manifold; ++g) manifold = groups.group_size(g) < 3;
@@ -231,6 +232,9 @@ std::vector<char> keep_manifold_part(std::vector<Triangle>& tris, std::vector<in
   for (const Triangle& t : tris) {
     for (int v : t) used[static_cast<size_t>(v)] = 1;
   }
+  outside.assign(input_faces, 0);
+  for (const int f : kept) outside[static_cast<size_t>(f)] = 1;
+  for (const int f : part_kept) outside[static_cast<size_t>(f)] = 0;
   tris = std::move(part_tris);
   kept = std::move(part_kept);
   return used;
@@ -332,7 +336,8 @@ CleanMesh clean_mesh(const TriMesh& input, const CleanOptions& options) {
   std::vector<Triangle> tris(filter.kept.size());
   for (size_t k = 0; k < tris.size(); ++k) tris[k] = welded[static_cast<size_t>(filter.kept[k])];
   welded = {};
-  const std::vector<char> used_before_cut = keep_manifold_part(tris, filter.kept, input.positions, options, report);
+  const std::vector<char> used_before_cut = keep_manifold_part(tris, filter.kept, input.positions, options, report,
+                                                               input.triangles.size(), out.input_face_outside_part);
 
   const HalfEdgeGroups groups = detail::group_half_edges(tris, n);
 

@@ -74,6 +74,9 @@ struct CleanMesh {
   std::vector<int> input_vertex_to_clean;
   // Cleaned vertex -> the input vertex it stands for (a split copy -> its original).
   std::vector<int> vertex_source;
+  // Per input face, 1 when largest_manifold_part left it out with its part (rather than as a
+  // degenerate or duplicate face); empty when no part was dropped.
+  std::vector<char> input_face_outside_part;
   CleanReport report;
 };
 

@@ -11,6 +11,10 @@ std::vector<int> values_for_input_faces(const CleanMesh& clean, const TriMesh& i
       out[f] = values[static_cast<size_t>(kept)];
       continue;
     }
+    if (f < clean.input_face_outside_part.size() && clean.input_face_outside_part[f]) {
+      out[f] = -1;
+      continue;
+    }
     for (int v : input.triangles[f]) {
       const int cv = v >= 0 && static_cast<size_t>(v) < clean.input_vertex_to_clean.size()
                          ? clean.input_vertex_to_clean[static_cast<size_t>(v)]

@@ -10,7 +10,8 @@ namespace ff {
 
 // values[f] per cleaned face -> one value per input face. An input face that clean-up
 // dropped (degenerate or duplicate) takes the value of the lowest-numbered cleaned face
-// around its first surviving vertex (its twin or neighbour), or values[0] if none survives.
+// around its first surviving vertex (its twin or neighbour), or values[0] if none survives;
+// one left out with its part (CleanOptions::largest_manifold_part) takes -1.
 std::vector<int> values_for_input_faces(const CleanMesh& clean, const TriMesh& input,
                                         const MeshTopology& clean_topology, const std::vector<int>& values);
 

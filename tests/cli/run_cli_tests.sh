@@ -589,6 +589,13 @@ assert any(m.startswith('kept the largest manifold part (12 of 24 faces)') for m
 " "$tmp/cube.json" && ok || bad "remesh --largest-part (exit $code): $(cat "$tmp/err.txt")"
 "$bin" cluster "$tmp/twocubes.obj" --panels 4 --largest-part --labels "$tmp/cube.labels" &&
   [ "$(wc -l <"$tmp/cube.labels")" = 24 ] && ok || bad "cluster --largest-part: one label per input triangle"
+# The second cube's 12 triangles (the part left out) are labelled -1, the first cube's 0..3.
+python3 -c "
+import sys
+labels = [int(x) for x in open(sys.argv[1]).read().split()]
+assert labels[12:] == [-1] * 12, labels
+assert sorted(set(labels[:12])) == [0, 1, 2, 3], labels
+" "$tmp/cube.labels" && ok || bad "cluster --largest-part: the dropped part's triangles are not -1: $(tr '\n' ' ' <"$tmp/cube.labels")"
 rm -f "$tmp"/never.*
 # epcot.off (closed) without its first triangle: one hole of 3 edges.
 python3 - "$meshes/epcot.off" "$tmp/holed.off" <<'PY'

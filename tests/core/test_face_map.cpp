@@ -3,6 +3,7 @@
 
 #include "core/mesh/clean.h"
 #include "core/mesh/face_map.h"
+#include "synthetic_meshes.h"
 
 namespace ff {
 namespace {
@@ -21,6 +22,30 @@ TEST(FaceMap, DroppedFacesTakeTheirTwinsValueAndKeptFacesTheirOwn) {
   EXPECT_EQ(out[1], labels[static_cast<size_t>(clean.input_face_to_clean[1])]);
   EXPECT_EQ(out[2], out[0]);  // the duplicate of face 0 shares its vertices' faces
   EXPECT_TRUE(out[3] == 7 || out[3] == 9);
+}
+
+// A part left out by largest_manifold_part is no cluster's: -1, not a neighbour's value (the
+// second cube shares an edge with the first, so its faces there have kept neighbours).
+TEST(FaceMap, FacesOfADroppedPartTakeMinusOne) {
+  TriMesh in = test::cube_soup();
+  const TriMesh second = test::cube_soup();
+  const int base = in.num_vertices();
+  for (const Vec3& p : second.positions) in.positions.push_back(p + Vec3(1, 1, 0));
+  for (const Triangle& t : second.triangles) in.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+  CleanOptions largest;
+  largest.largest_manifold_part = true;
+  const CleanMesh clean = clean_mesh(in, largest);
+  ASSERT_EQ(clean.mesh.num_faces(), 12);
+  const MeshTopology topo = build_topology(clean.mesh);
+  std::vector<int> labels(12);
+  for (int f = 0; f < 12; ++f) labels[static_cast<size_t>(f)] = 100 + f;
+  const std::vector<int> out = values_for_input_faces(clean, in, topo, labels);
+  ASSERT_EQ(out.size(), 24u);
+  for (int f = 0; f < 12; ++f)
+    EXPECT_EQ(out[static_cast<size_t>(f)], 100 + clean.input_face_to_clean[static_cast<size_t>(f)]);
+  for (int f = 12; f < 24; ++f) EXPECT_EQ(out[static_cast<size_t>(f)], -1) << f;
+  // Without the option nothing is outside a part.
+  EXPECT_TRUE(clean_mesh(test::cube_soup()).input_face_outside_part.empty());
 }
 
 TEST(FaceMap, WeldedVerticesAverageAndSplitCopiesKeepTheirOriginalsValue) {
