@@ -258,16 +258,15 @@ std::vector<std::string> CleanReport::messages() const {
   if (duplicate_faces_dropped > 0) {
     out.push_back("dropped " + count_of(duplicate_faces_dropped, "duplicate face", "duplicate faces"));
   }
-  if (nonmanifold_edges_cut > 0) {
-    out.push_back("kept the largest manifold part (" + std::to_string(faces_before_cut - faces_outside_part) + " of " +
-                  count_of(faces_before_cut, "face", "faces") + "): cut at " +
-                  count_of(nonmanifold_edges_cut, "non-manifold edge", "non-manifold edges") + ", dropped " +
-                  count_of(faces_outside_part, "face", "faces") + " in " +
-                  count_of(parts_dropped, "other part", "other parts"));
-  } else if (parts_dropped > 0) {
-    out.push_back("kept the largest part (" + std::to_string(faces_before_cut - faces_outside_part) + " of " +
-                  count_of(faces_before_cut, "face", "faces") + "): dropped " +
-                  count_of(faces_outside_part, "face", "faces") + " in " +
+  if (nonmanifold_edges_cut > 0 || parts_dropped > 0) {
+    // "manifold" and the cut only when there were non-manifold edges to cut.
+    const bool cut = nonmanifold_edges_cut > 0;
+    out.push_back(std::string(cut ? "kept the largest manifold part (" : "kept the largest part (") +
+                  std::to_string(faces_before_cut - faces_outside_part) + " of " +
+                  count_of(faces_before_cut, "face", "faces") + "): " +
+                  (cut ? "cut at " + count_of(nonmanifold_edges_cut, "non-manifold edge", "non-manifold edges") + ", "
+                       : std::string()) +
+                  "dropped " + count_of(faces_outside_part, "face", "faces") + " in " +
                   count_of(parts_dropped, "other part", "other parts"));
   }
   if (slivers_removed > 0) {
