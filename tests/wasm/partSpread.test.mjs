@@ -6,20 +6,14 @@ import { readFileSync } from 'node:fs';
 import path from 'node:path';
 import { test } from 'node:test';
 import { json, loadModule, meshes, solve } from './module.mjs';
+import { offWithFarTriangle } from '../fixtures/meshes.mjs';
 
 const ff = await loadModule();
 
-// epcot.off with one triangle 1e8 away.
+// epcot.off, and epcot.off with one triangle 1e8 away.
 function epcotWithFarTriangle() {
   const text = readFileSync(path.join(meshes, 'epcot.off'), 'utf8');
-  const tokens = text.split(/\s+/).filter(Boolean);
-  const [nv, nf] = [Number(tokens[1]), Number(tokens[2])];
-  const rows = [];
-  for (let i = 0; i < nv; ++i) rows.push(tokens.slice(4 + 3 * i, 7 + 3 * i).join(' '));
-  rows.push('1e8 0 0', '100000000.01 0 0', '1e8 0.01 0');
-  for (let f = 0, at = 4 + 3 * nv; f < nf; ++f, at += 1 + Number(tokens[at])) rows.push(tokens.slice(at, at + 1 + Number(tokens[at])).join(' '));
-  rows.push(`3 ${nv} ${nv + 1} ${nv + 2}`);
-  return { text, far: new TextEncoder().encode(`OFF\n${nv + 3} ${nf + 1} 0\n${rows.join('\n')}\n`) };
+  return { text, far: offWithFarTriangle(text) };
 }
 
 test('a triangle 1e8 away from epcot is refused by name; the loaded mesh stays', () => {
