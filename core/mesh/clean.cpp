@@ -13,6 +13,7 @@
 #include "core/mesh/manifold_part.h"
 #include "core/mesh/orient.h"
 #include "core/mesh/part_spread.h"
+#include "core/mesh/vertex_spread.h"
 #include "core/mesh/weld.h"
 #include "core/util/error.h"
 #include "core/util/union_find.h"
@@ -391,7 +392,9 @@ CleanMesh clean_mesh(const TriMesh& input, const CleanOptions& options) {
   out.vertex_source = std::move(vertex_name);
   detail::repair_locally(out, options);
   report.zero_area_faces = count_zero_area(out.mesh.triangles, out.mesh.positions);
-  require_compact_parts(out.mesh);  // a far-off stray part: refused by name (part_spread.h)
+  // Refused by name: a far-off stray part (part_spread.h), then a far-off vertex in a part.
+  require_compact_parts(out.mesh);
+  require_no_stray_vertex(out.mesh, out.vertex_source);
   return out;
 }
 

@@ -386,10 +386,13 @@ def main():
     os.makedirs(work, exist_ok=True)
     deadline = time.monotonic() + a.minutes * 60 if a.minutes > 0 else float("inf")
     indices = [a.only] if a.only >= 0 else range(a.runs if a.runs > 0 else 10**9)
-    bad, codes = [], {}
+    bad, codes, slowest = [], {}, None
 
     def count(r):
+        nonlocal slowest
         codes[r["exit"]] = codes.get(r["exit"], 0) + 1
+        if slowest is None or r["seconds"] > slowest["seconds"]:
+            slowest = r
         if r["problem"]:
             bad.append(r)
             print(f"BAD run {r['index']} (--seed {a.seed} --only {r['index']}): {r['problem']}; {r['source']} as "
@@ -410,6 +413,9 @@ def main():
             count(future.result())
     exits = ", ".join(f"exit {k}: {v}" for k, v in sorted(codes.items(), key=lambda kv: str(kv[0])))
     print(f"fuzz_cli: {sum(codes.values())} runs (seed {a.seed}; {exits}), {len(bad)} bad")
+    if slowest:  # how close the slowest came to --timeout
+        print(f"fuzz_cli: slowest run {slowest['index']} took {slowest['seconds']} s of {a.timeout} s "
+              f"({slowest['source']} as {slowest['format']}, {' '.join(slowest['options'])}; exit {slowest['exit']})")
     if not bad and not a.keep:
         shutil.rmtree(work, ignore_errors=True)
     return 1 if bad else 0
