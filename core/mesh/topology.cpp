@@ -181,10 +181,50 @@ std::vector<char> closed_components(const MeshTopology& topology) {
   return closed;
 }
 
-std::vector<int> fewest_panels(const MeshTopology& topology) {
+std::vector<PartShape> part_shapes(const MeshTopology& topology) {
+  std::vector<PartShape> shapes(static_cast<size_t>(topology.num_components));
   const std::vector<char> closed = closed_components(topology);
-  std::vector<int> fewest(closed.size());
-  for (size_t c = 0; c < closed.size(); ++c) fewest[c] = closed[c] ? 4 : 1;
+  const auto component_of_face = [&](int f) { return topology.face_component[static_cast<size_t>(f)]; };
+  for (size_t f = 0; f < topology.face_component.size(); ++f)
+    ++shapes[static_cast<size_t>(component_of_face(static_cast<int>(f)))].euler;
+  // A vertex counts once in each component it is in (one, unless two sheets touch at it).
+  std::vector<std::pair<int, int>> vertex_in_component;
+  std::vector<int> vertex_component(topology.vertex_face_offsets.size(), -1);
+  for (int e = 0; e < topology.num_edges(); ++e) {
+    const int c = component_of_face(topology.edge_faces[static_cast<size_t>(e)][0]);
+    --shapes[static_cast<size_t>(c)].euler;
+    for (const int v : topology.edge_vertices[static_cast<size_t>(e)]) {
+      vertex_in_component.emplace_back(c, v);
+      vertex_component[static_cast<size_t>(v)] = c;
+    }
+  }
+  std::sort(vertex_in_component.begin(), vertex_in_component.end());
+  vertex_in_component.erase(std::unique(vertex_in_component.begin(), vertex_in_component.end()),
+                            vertex_in_component.end());
+  for (const auto& [c, v] : vertex_in_component) ++shapes[static_cast<size_t>(c)].euler;
+  for (const std::vector<int>& loop : topology.boundary_loops) {
+    const int c = loop.empty() ? -1 : vertex_component[static_cast<size_t>(loop[0])];
+    if (c >= 0) ++shapes[static_cast<size_t>(c)].boundary_loops;
+  }
+  for (size_t c = 0; c < shapes.size(); ++c) shapes[c].closed = closed[c] != 0;
+  return shapes;
+}
+
+int fewest_panels(const PartShape& shape) {
+  const long long euler = shape.euler;
+  for (long long panels = 1;; ++panels) {
+    // The most shared sides that many panels can have; more sides only make it easier.
+    const long long sides = std::min(panels * (panels - 1) / 2, 3 * panels - 3 * euler);
+    const long long nodes = euler + sides - panels;  // a closed part's nodes; an open part's inner ones
+    const bool fits =
+        shape.closed ? 3 * panels <= 2 * sides && nodes >= 1 && sides <= nodes * (nodes - 1) / 2 : nodes >= 0;
+    if (fits) return static_cast<int>(panels);
+  }
+}
+
+std::vector<int> fewest_panels(const MeshTopology& topology) {
+  std::vector<int> fewest;
+  for (const PartShape& shape : part_shapes(topology)) fewest.push_back(fewest_panels(shape));
   return fewest;
 }
 

@@ -48,10 +48,25 @@ inline int local_index(const Triangle& t, int v) { return t[0] == v ? 0 : (t[1] 
 // Per connected component (face_component's numbering): 1 when it has no boundary edge.
 std::vector<char> closed_components(const MeshTopology& topology);
 
-// Per component: the fewest planar panels it can become. A panel has three sides or more, and
-// on a closed part each side is shared with a different panel (one chain per neighbour), so a
-// closed part needs four (a tetrahedron; a torus needs seven, but four holds for every closed
-// part); an open part needs one.
+// Per component: its shape as a surface. V - E + F = 2 - 2 handles - boundary loops.
+struct PartShape {
+  bool closed = true;
+  int euler = 0;  // V - E + F of the component alone
+  int boundary_loops = 0;
+  int handles() const { return (2 - boundary_loops - euler) / 2; }  // the genus
+};
+std::vector<PartShape> part_shapes(const MeshTopology& topology);
+
+// The fewest planar panels a part of this shape can become, by counting: panels are discs
+// (F of them), each meets each neighbour along one side (a chain on the line where their
+// planes meet), so at most F(F-1)/2 shared sides E; a node joins three panels or more (3V <=
+// 2E) and two nodes one side at most (E <= V(V-1)/2); a closed part's panels have three sides
+// or more (3F <= 2E); and V - E + F is the part's Euler characteristic, which on an open part
+// counts only inner nodes and shared sides. Sphere 4 (a tetrahedron), torus 5, three handles
+// closed 7; a disc 1, an annulus 3 (a band of three), three handles and four boundary loops 6.
+// A necessary count, not always enough (no torus of planar faces has fewer than 7 known).
+int fewest_panels(const PartShape& shape);
+// Per component (face_component's numbering).
 std::vector<int> fewest_panels(const MeshTopology& topology);
 
 // Per component: the fewest of n clusters it should keep, so that every part can become valid

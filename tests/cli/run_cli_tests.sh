@@ -468,6 +468,8 @@ expect_error 2 "non-manifold edge" remesh "$tmp/nonmanifold.obj" --panels 1 "${o
 expect_error 2 "density.*3 values" remesh "$m" --panels 10 --density "$tmp/short.txt" "${o[@]}"
 # A closed surface cannot be fewer than four planar panels: refused at once, not solved.
 expect_error 2 "closed surface needs at least 4 planar panels.*asked for 3" remesh "$meshes/bunny.off" --panels 3 "${o[@]}"
+expect_error 2 "closed surface with 3 handles needs at least 7 planar panels.*asked for 6" remesh "$meshes/3holes.off" --panels 6 "${o[@]}"
+expect_error 2 "open surface with 2 boundary loops needs at least 3 planar panels.*asked for 2" remesh "$meshes/hyperboloid_s4.off" --panels 2 "${o[@]}"
 # Procedural density and anisotropy (issue 6): they run, are recorded in the report, and bad
 # values are usage errors naming the flag, the problem and its column.
 "$bin" remesh "$meshes/epcot.off" --panels 30 --density-expr "1 + 3 * smoothstep(0.4, 0.6, u)" \

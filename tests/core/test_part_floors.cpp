@@ -43,6 +43,47 @@ TEST(PartFloors, FewestPanelsPerPart) {
   EXPECT_EQ(cluster_floors(topo, 4), (std::vector<int>{1, 1}));  // too few for both: one each
 }
 
+// The counting bound per shape (fewest_panels, topology.h), and the shapes of real meshes.
+TEST(PartFloors, FewestPanelsByShape) {
+  const auto fewest = [](bool closed, int euler) {
+    PartShape shape;
+    shape.closed = closed;
+    shape.euler = euler;
+    return fewest_panels(shape);
+  };
+  EXPECT_EQ(fewest(true, 2), 4);      // a sphere: the tetrahedron
+  EXPECT_EQ(fewest(true, 0), 5);      // a torus (no torus of planar faces below 7 is known)
+  EXPECT_EQ(fewest(true, -4), 7);     // three handles
+  EXPECT_EQ(fewest(false, 1), 1);     // a disc
+  EXPECT_EQ(fewest(false, 0), 3);     // an annulus: a band of three
+  EXPECT_EQ(fewest(false, -8), 6);    // three handles and four holes
+  EXPECT_EQ(fewest(true, -200), 23);  // 101 handles: grows as the square root
+
+  const auto shape_of = [](const std::string& file) { return part_shapes(build_topology(test::load_clean(file))); };
+  const std::vector<PartShape> holes = shape_of("3holes.off");
+  ASSERT_EQ(holes.size(), 1u);
+  EXPECT_TRUE(holes[0].closed);
+  EXPECT_EQ(holes[0].handles(), 3);
+  const std::vector<PartShape> hyperboloid = shape_of("hyperboloid_s4.off");
+  ASSERT_EQ(hyperboloid.size(), 1u);
+  EXPECT_FALSE(hyperboloid[0].closed);
+  EXPECT_EQ(hyperboloid[0].boundary_loops, 2);
+  EXPECT_EQ(hyperboloid[0].handles(), 0);
+  EXPECT_EQ(fewest_panels(build_topology(test::load_clean("hyperboloid_s4.off"))), (std::vector<int>{3}));
+  // The shapes of the parts add up to the whole mesh's Euler characteristic, on every shared mesh.
+  for (const test::SharedMesh& m : test::shared_meshes()) {
+    const TriMesh mesh = test::load_clean(m.file);
+    const MeshTopology topo = build_topology(mesh);
+    int euler = 0;
+    for (const PartShape& shape : part_shapes(topo)) {
+      euler += shape.euler;
+      EXPECT_EQ((2 - shape.boundary_loops - shape.euler) % 2, 0) << m.file;
+      EXPECT_GE(shape.handles(), 0) << m.file;
+    }
+    EXPECT_EQ(euler, euler_characteristic(mesh, topo)) << m.file;
+  }
+}
+
 TEST(PartFloors, SeedingGivesASmallClosedPartFour) {
   const TriMesh mesh = plate_and_pebble();
   const MeshTopology topo = build_topology(mesh);

@@ -10,7 +10,9 @@
 #include "core/shapes/hard_cases.h"
 #include "core/shapes/shapes.h"
 #include "input_error_message.h"
+#include "subdivision_shapes.h"
 #include "synthetic_meshes.h"
+#include "test_meshes.h"
 
 namespace ff {
 namespace {
@@ -235,13 +237,18 @@ namespace ff {
 namespace {
 
 // A closed part cannot be fewer than four planar panels (each panel meets at least three
-// others): asking for fewer is refused at once with the reason, and the Remesher keeps its
-// last design; an open part can be one panel. The Lloyd phase alone has no such limit.
+// others), a torus fewer than five (fewest_panels, topology.h): asking for fewer is refused at
+// once with the reason, and the Remesher keeps its last design; an open part can be one panel.
+// The Lloyd phase alone has no such limit.
 TEST(Remesher, TooFewPanelsForAClosedSurfaceAreRefused) {
   const TriMesh closed = make_torus(800);
   RemeshParams p;
-  p.panels = 3;
+  p.panels = 4;
   EXPECT_EQ(test::input_error_message([&] { Remesher r(closed, p); }),
+            "a closed surface with 1 handle needs at least 5 planar panels (each meets at least three others, each "
+            "neighbour along one side); asked for 4");
+  p.panels = 3;
+  EXPECT_EQ(test::input_error_message([&] { Remesher r(test::icosahedron(), p); }),
             "a closed surface needs at least 4 planar panels (each meets at least three others); asked for 3");
   p.make_panels = false;
   EXPECT_EQ(test::input_error_message([&] { Remesher r(closed, p); }), "");
@@ -266,9 +273,10 @@ TEST(Remesher, TooFewPanelsForAClosedSurfaceAreRefused) {
   EXPECT_EQ(flat.panels().num_invalid(), 0);
 }
 
-// With several parts the count is the sum: four per closed part, one per open part.
+// With several parts the count is the sum: four per closed part without handles, one per
+// disc, more per handle and hole, grouped by kind in the message.
 TEST(Remesher, TooFewPanelsCountEveryPart) {
-  TriMesh mesh = make_torus(800);
+  TriMesh mesh = test::icosahedron();
   test::append_shifted(mesh, make_plane(4, 4), Vec3(100, 0, 0));
   RemeshParams p;
   p.panels = 4;
@@ -277,6 +285,29 @@ TEST(Remesher, TooFewPanelsCountEveryPart) {
             "5 panels; asked for 4");
   p.panels = 5;
   EXPECT_EQ(test::input_error_message([&] { Remesher r(mesh, p); }), "");
+  test::append_shifted(mesh, make_torus(800), Vec3(-100, 0, 0));
+  test::append_shifted(mesh, make_torus(800), Vec3(-200, 0, 0));
+  p.panels = 12;
+  EXPECT_EQ(test::input_error_message([&] { Remesher r(mesh, p); }),
+            "the mesh has 1 closed part (at least 4 panels each), 2 closed parts with 1 handle (at least 5 each) and 1 "
+            "open part (at least 1 each): it needs at least 15 panels; asked for 12");
+}
+
+// An open part that is no disc cannot be one panel: the hyperboloid (an annulus) needs three,
+// and at three every panel is valid; at two it spent nine solves (16 s) on two unbuilt panels.
+TEST(Remesher, AnAnnulusNeedsThreePanels) {
+  const TriMesh hyperboloid = test::load_clean("hyperboloid_s4.off");
+  RemeshParams p;
+  p.panels = 2;
+  EXPECT_EQ(test::input_error_message([&] { Remesher r(hyperboloid, p); }),
+            "an open surface with 2 boundary loops needs at least 3 planar panels (each a disc, each neighbour along "
+            "one side); asked for 2");
+  p.panels = 3;
+  p.seed = 1;
+  Remesher r(hyperboloid, p);
+  r.run();
+  EXPECT_EQ(r.panels().num_panels(), 3);
+  EXPECT_EQ(r.panels().num_invalid(), 0);
 }
 
 }  // namespace
