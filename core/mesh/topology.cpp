@@ -184,29 +184,35 @@ std::vector<char> closed_components(const MeshTopology& topology) {
 std::vector<PartShape> part_shapes(const MeshTopology& topology) {
   std::vector<PartShape> shapes(static_cast<size_t>(topology.num_components));
   const std::vector<char> closed = closed_components(topology);
-  const auto component_of_face = [&](int f) { return topology.face_component[static_cast<size_t>(f)]; };
+  for (size_t c = 0; c < shapes.size(); ++c) shapes[c].closed = closed[c] != 0;
+  const auto component = [&](int f) { return topology.face_component[static_cast<size_t>(f)]; };
   for (size_t f = 0; f < topology.face_component.size(); ++f)
-    ++shapes[static_cast<size_t>(component_of_face(static_cast<int>(f)))].euler;
-  // A vertex counts once in each component it is in (one, unless two sheets touch at it).
-  std::vector<std::pair<int, int>> vertex_in_component;
-  std::vector<int> vertex_component(topology.vertex_face_offsets.size(), -1);
-  for (int e = 0; e < topology.num_edges(); ++e) {
-    const int c = component_of_face(topology.edge_faces[static_cast<size_t>(e)][0]);
-    --shapes[static_cast<size_t>(c)].euler;
-    for (const int v : topology.edge_vertices[static_cast<size_t>(e)]) {
-      vertex_in_component.emplace_back(c, v);
-      vertex_component[static_cast<size_t>(v)] = c;
+    ++shapes[static_cast<size_t>(component(static_cast<int>(f)))].euler;
+  for (int e = 0; e < topology.num_edges(); ++e)
+    --shapes[static_cast<size_t>(component(topology.edge_faces[static_cast<size_t>(e)][0]))].euler;
+  // A vertex counts once in each component it is in: one, unless two sheets touch at it. No
+  // sort (cluster_floors() asks for this at every teleport).
+  std::vector<int> seen;
+  const size_t n = topology.vertex_face_offsets.empty() ? 0 : topology.vertex_face_offsets.size() - 1;
+  std::vector<int> vertex_component(n, -1);
+  for (size_t v = 0; v < n; ++v) {
+    const int begin = topology.vertex_face_offsets[v], end = topology.vertex_face_offsets[v + 1];
+    if (begin == end) continue;
+    const int first = component(topology.vertex_faces[static_cast<size_t>(begin)]);
+    vertex_component[v] = first;
+    ++shapes[static_cast<size_t>(first)].euler;
+    seen.assign(1, first);
+    for (int k = begin + 1; k < end; ++k) {
+      const int c = component(topology.vertex_faces[static_cast<size_t>(k)]);
+      if (c == first || std::find(seen.begin(), seen.end(), c) != seen.end()) continue;
+      seen.push_back(c);
+      ++shapes[static_cast<size_t>(c)].euler;
     }
   }
-  std::sort(vertex_in_component.begin(), vertex_in_component.end());
-  vertex_in_component.erase(std::unique(vertex_in_component.begin(), vertex_in_component.end()),
-                            vertex_in_component.end());
-  for (const auto& [c, v] : vertex_in_component) ++shapes[static_cast<size_t>(c)].euler;
   for (const std::vector<int>& loop : topology.boundary_loops) {
     const int c = loop.empty() ? -1 : vertex_component[static_cast<size_t>(loop[0])];
     if (c >= 0) ++shapes[static_cast<size_t>(c)].boundary_loops;
   }
-  for (size_t c = 0; c < shapes.size(); ++c) shapes[c].closed = closed[c] != 0;
   return shapes;
 }
 
