@@ -86,18 +86,27 @@ test('bad requests are refused by name and the loaded mesh stays', () => {
   s.delete();
 });
 
-// One coordinate of the grid shell typed as 4294967296: refining it for 200 panels would split
-// its slivers into millions of triangles, past the 4 GB a wasm module can have (the worker
-// died). The core refuses at once, naming the edge, and the mesh as loaded stays.
-test('a vertex far from the rest is refused by name, not by running out of memory', () => {
+// One coordinate of the grid shell typed as 1e5 (4,000 times the shell's size out): refining it
+// for 200 panels would split its slivers into millions of triangles, past the 4 GB a wasm
+// module can have (the worker died). The core refuses at once, naming the edge, and the mesh as
+// loaded stays. Typed as 4294967296, the vertex is refused on opening (vertex_spread.h).
+function yasWithVertexAt(y) {
   const lines = yas.toString('utf8').split('\n');
   const fields = lines[892].split(' ');
-  fields[1] = '4294967296';
+  fields[1] = y;
   lines[892] = fields.join(' ');
-  const { s, info } = loaded('stray.off', Buffer.from(lines.join('\n')));
+  return Buffer.from(lines.join('\n'));
+}
+
+test('a vertex far from the rest is refused by name, not by running out of memory', () => {
+  const { s, info } = loaded('stray.off', yasWithVertexAt('100000'));
   const status = json(s.prepare(200, 0, 0));
   assert.equal(status.ok, false);
-  assert.match(status.message, /^preparing the mesh for 200 panels: .*4\.29497e\+09.*a vertex far from the rest of the mesh\?\)$/);
+  assert.match(status.message, /^preparing the mesh for 200 panels: remeshing: .* triangles.*a vertex far from the rest of the mesh\?\)$/);
+  assert.equal(s.inputIndices().length, info.triangles * 3, 'still the loaded mesh');
+  const refused = json(s.loadMesh('typo.off', yasWithVertexAt('4294967296')));
+  assert.equal(refused.ok, false);
+  assert.match(refused.message, /^vertex 890 at \(-278\.746, 4\.29497e\+09, 8\.55571\) lies 1\.69e\+08 times farther .*corrupted coordinate\?/);
   assert.equal(s.inputIndices().length, info.triangles * 3, 'still the loaded mesh');
   s.delete();
 });
