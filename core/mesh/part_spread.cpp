@@ -25,9 +25,7 @@ struct Part {
 
 }  // namespace
 
-void require_compact_parts(const TriMesh& mesh) {
-  const double whole = bbox_diagonal(mesh);
-  if (!(whole > 0.0) || mesh.triangles.empty()) return;
+std::vector<int> vertex_part_roots(const TriMesh& mesh) {
   std::vector<int> parent(mesh.positions.size());
   std::iota(parent.begin(), parent.end(), 0);
   for (const Triangle& t : mesh.triangles) {
@@ -36,9 +34,17 @@ void require_compact_parts(const TriMesh& mesh) {
       if (a != b) parent[static_cast<size_t>(std::max(a, b))] = std::min(a, b);
     }
   }
+  for (size_t v = 0; v < parent.size(); ++v) parent[v] = union_find_root(parent, static_cast<int>(v));
+  return parent;
+}
+
+void require_compact_parts(const TriMesh& mesh) {
+  const double whole = bbox_diagonal(mesh);
+  if (!(whole > 0.0) || mesh.triangles.empty()) return;
+  const std::vector<int> root = vertex_part_roots(mesh);
   std::vector<Part> parts(mesh.positions.size());
   for (const Triangle& t : mesh.triangles) {
-    Part& part = parts[static_cast<size_t>(union_find_root(parent, t[0]))];
+    Part& part = parts[static_cast<size_t>(root[static_cast<size_t>(t[0])])];
     ++part.triangles;
     for (const int v : t) {
       part.lo = part.lo.cwiseMin(mesh.positions[static_cast<size_t>(v)]);

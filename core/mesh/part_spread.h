@@ -4,9 +4,15 @@
 // tolerances relative to its bounding box: a part 1e6 times the model's size away leaves the
 // model too few digits there and its panels end invalid (epcot.off with a triangle 3e6 away:
 // exit 3 at 30 panels; 1e6 away: valid), with nothing to say why.
+#include <vector>
+
 #include "core/mesh/tri_mesh.h"
 
 namespace ff {
+
+// Per vertex, the smallest vertex of its part: parts are connected through shared vertices
+// (so two sheets touching at a vertex are one). Unused vertices are parts of their own. O(m).
+std::vector<int> vertex_part_roots(const TriMesh& mesh);
 
 // The mesh's bounding box may be at most this many times the largest part's (by diagonal).
 constexpr double kMaxPartSpread = 1e5;

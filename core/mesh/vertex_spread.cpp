@@ -1,13 +1,12 @@
 #include "core/mesh/vertex_spread.h"
 
 #include <algorithm>
-#include <numeric>
 #include <string>
 
 #include "core/mesh/half_edges.h"
+#include "core/mesh/part_spread.h"
 #include "core/util/error.h"
 #include "core/util/short_number.h"
-#include "core/util/union_find.h"
 
 namespace ff {
 namespace {
@@ -50,17 +49,9 @@ Spread spread_of(const std::vector<Vec3>& positions, const std::vector<size_t>& 
 void require_no_stray_vertex(const TriMesh& mesh, const std::vector<int>& vertex_source) {
   // Part by part: a small part far from the rest is part_spread.h's to name (and to offer
   // the largest part for); here each part is measured against itself.
-  std::vector<int> parent(mesh.positions.size());
-  std::iota(parent.begin(), parent.end(), 0);
-  for (const Triangle& t : mesh.triangles) {
-    for (size_t i = 1; i < 3; ++i) {
-      const int a = union_find_root(parent, t[0]), b = union_find_root(parent, t[i]);
-      if (a != b) parent[static_cast<size_t>(std::max(a, b))] = std::min(a, b);
-    }
-  }
+  const std::vector<int> root = vertex_part_roots(mesh);
   std::vector<std::vector<size_t>> parts(mesh.positions.size());
-  for (size_t v = 0; v < mesh.positions.size(); ++v)
-    parts[static_cast<size_t>(union_find_root(parent, static_cast<int>(v)))].push_back(v);
+  for (size_t v = 0; v < mesh.positions.size(); ++v) parts[static_cast<size_t>(root[v])].push_back(v);
   Spread worst;
   int nonempty_parts = 0;
   for (const std::vector<size_t>& part : parts) {
