@@ -183,6 +183,15 @@ std::vector<char> closed_components(const MeshTopology& topology) {
 
 std::vector<PartShape> part_shapes(const MeshTopology& topology) {
   std::vector<PartShape> shapes(static_cast<size_t>(topology.num_components));
+  if (topology.num_components == 1) {  // most meshes: counts the topology has, and used vertices
+    int used = 0;
+    for (size_t v = 0; v + 1 < topology.vertex_face_offsets.size(); ++v)
+      used += topology.vertex_face_offsets[v + 1] > topology.vertex_face_offsets[v] ? 1 : 0;
+    shapes[0].euler = used - topology.num_edges() + static_cast<int>(topology.face_component.size());
+    shapes[0].boundary_loops = static_cast<int>(topology.boundary_loops.size());
+    shapes[0].closed = topology.boundary_loops.empty();
+    return shapes;
+  }
   const std::vector<char> closed = closed_components(topology);
   for (size_t c = 0; c < shapes.size(); ++c) shapes[c].closed = closed[c] != 0;
   const auto component = [&](int f) { return topology.face_component[static_cast<size_t>(f)]; };
