@@ -105,30 +105,32 @@ void check_enough_panels(const MeshTopology& topology, int panels) {
     throw InputError(std::string(shape.closed ? "a closed" : "an open") + " surface" + shape_traits(shape) +
                      " needs at least " + std::to_string(fewest) + " planar panels (" + why + neighbours + ")" + asked);
   }
-  // Parts of one kind and floor together, closed ones first: "1 closed part (at least 4 panels
-  // each) and 2 open parts with 2 boundary loops (at least 3 each)".
-  std::vector<std::pair<std::pair<int, std::string>, int>> groups;  // ((closed first, traits), count)
-  std::vector<int> group_floor;
+  // Parts of one kind together, closed ones first: "1 closed part (at least 4 panels each)
+  // and 2 open parts with 2 boundary loops (at least 3 each)".
+  struct Group {
+    bool open;
+    std::string traits;
+    int floor;  // the same for every part of the group: fewest_panels() reads only the shape
+    int count;
+  };
+  std::vector<Group> groups;
   for (size_t c = 0; c < shapes.size(); ++c) {
-    const std::pair<int, std::string> key(shapes[c].closed ? 0 : 1, shape_traits(shapes[c]));
-    auto found = std::find_if(groups.begin(), groups.end(), [&](const auto& g) { return g.first == key; });
-    if (found == groups.end()) {
-      groups.push_back({key, 0});
-      group_floor.push_back(per_part[c]);
-      found = groups.end() - 1;
-    }
-    ++found->second;
+    const bool open = !shapes[c].closed;
+    const std::string traits = shape_traits(shapes[c]);
+    const auto same = [&](const Group& g) { return g.open == open && g.traits == traits; };
+    const auto found = std::find_if(groups.begin(), groups.end(), same);
+    if (found != groups.end())
+      ++found->count;
+    else
+      groups.push_back({open, traits, per_part[c], 1});
   }
-  std::vector<size_t> order(groups.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(),
-                   [&](size_t a, size_t b) { return groups[a].first.first < groups[b].first.first; });
+  std::stable_sort(groups.begin(), groups.end(), [](const Group& a, const Group& b) { return !a.open && b.open; });
   std::string list;
-  for (size_t k = 0; k < order.size(); ++k) {
-    const auto& [key, count] = groups[order[k]];
-    list += k == 0 ? "" : (k + 1 == order.size() ? " and " : ", ");
-    list += std::to_string(count) + (key.first == 0 ? " closed" : " open") + (count == 1 ? " part" : " parts") +
-            key.second + " (at least " + std::to_string(group_floor[order[k]]) + (k == 0 ? " panels each)" : " each)");
+  for (size_t k = 0; k < groups.size(); ++k) {
+    const Group& g = groups[k];
+    list += k == 0 ? "" : (k + 1 == groups.size() ? " and " : ", ");
+    list += std::to_string(g.count) + (g.open ? " open" : " closed") + (g.count == 1 ? " part" : " parts") + g.traits +
+            " (at least " + std::to_string(g.floor) + (k == 0 ? " panels each)" : " each)");
   }
   throw InputError("the mesh has " + list + ": it needs at least " + std::to_string(fewest) + " panels" + asked);
 }

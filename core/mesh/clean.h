@@ -5,8 +5,7 @@
 // asked, and refuse what we cannot handle (non-manifold edges unless asked for the largest
 // manifold part, non-orientable surfaces, non-finite coordinates, bad indices, a part far
 // from the rest (part_spread.h), a vertex far from all the others (vertex_spread.h), no
-// faces left) with an InputError naming where. Everything
-// done is counted in CleanReport.
+// faces left) with an InputError naming where. Everything done is counted in CleanReport.
 #include <string>
 #include <vector>
 
