@@ -197,8 +197,12 @@ test('a cancel that replaces the worker (as for a long step) leaves the page wor
 test('a parameter change during a solve reaches the worker and warm-starts it', () =>
   withPage(suite.url, async (page) => {
     await waitForDone(page);
+    // A solve of several seconds, so the change lands in it even on a loaded machine (with 20
+    // iterations at 500 panels it once finished first under a parallel build: two solves).
+    await page.getByText('Metric and solver').click();
+    await page.getByLabel('Lloyd iterations').fill('100');
     const since = await outcomes(page);
-    await setPanels(page, 500);
+    await setPanels(page, 1200);
     await remesh(page);
     await waitForProgress(page);
     await page.getByLabel('Panels', { exact: true }).fill('220');
