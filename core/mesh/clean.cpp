@@ -393,8 +393,9 @@ CleanMesh clean_mesh(const TriMesh& input, const CleanOptions& options) {
   detail::repair_locally(out, options);
   report.zero_area_faces = count_zero_area(out.mesh.triangles, out.mesh.positions);
   // Refused by name: a far-off stray part (part_spread.h), then a far-off vertex in a part.
-  require_compact_parts(out.mesh);
-  require_no_stray_vertex(out.mesh, out.vertex_source);
+  const std::vector<int> roots = vertex_part_roots(out.mesh);
+  require_compact_parts(out.mesh, roots);
+  require_no_stray_vertex(out.mesh, out.vertex_source, roots);
   return out;
 }
 

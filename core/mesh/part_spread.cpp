@@ -38,10 +38,11 @@ std::vector<int> vertex_part_roots(const TriMesh& mesh) {
   return parent;
 }
 
-void require_compact_parts(const TriMesh& mesh) {
+void require_compact_parts(const TriMesh& mesh) { require_compact_parts(mesh, vertex_part_roots(mesh)); }
+
+void require_compact_parts(const TriMesh& mesh, const std::vector<int>& root) {
   const double whole = bbox_diagonal(mesh);
   if (!(whole > 0.0) || mesh.triangles.empty()) return;
-  const std::vector<int> root = vertex_part_roots(mesh);
   std::vector<Part> parts(mesh.positions.size());
   for (const Triangle& t : mesh.triangles) {
     Part& part = parts[static_cast<size_t>(root[static_cast<size_t>(t[0])])];

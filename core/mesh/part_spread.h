@@ -23,5 +23,8 @@ constexpr double kMaxPartSpread = 1e5;
 // CleanOptions::largest_manifold_part would keep. Parts are connected through shared
 // vertices (mesh: cleaned, so also through edges). O(m), plus O(m log m) when refused.
 void require_compact_parts(const TriMesh& mesh);
+// The same with the mesh's vertex_part_roots() known (clean_mesh computes them once for both
+// spread checks).
+void require_compact_parts(const TriMesh& mesh, const std::vector<int>& roots);
 
 }  // namespace ff

@@ -47,9 +47,13 @@ Spread spread_of(const std::vector<Vec3>& positions, const std::vector<size_t>& 
 }  // namespace
 
 void require_no_stray_vertex(const TriMesh& mesh, const std::vector<int>& vertex_source) {
+  require_no_stray_vertex(mesh, vertex_source, vertex_part_roots(mesh));
+}
+
+void require_no_stray_vertex(const TriMesh& mesh, const std::vector<int>& vertex_source,
+                             const std::vector<int>& root) {
   // Part by part: a small part far from the rest is part_spread.h's to name (and to offer
   // the largest part for); here each part is measured against itself.
-  const std::vector<int> root = vertex_part_roots(mesh);
   std::vector<std::vector<size_t>> parts(mesh.positions.size());
   for (size_t v = 0; v < mesh.positions.size(); ++v) parts[static_cast<size_t>(root[v])].push_back(v);
   Spread worst;

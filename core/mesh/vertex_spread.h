@@ -23,5 +23,8 @@ constexpr double kMaxVertexSpread = 1e5;
 // vertex_source maps mesh vertices to input vertex numbers (CleanMesh::vertex_source);
 // empty: numbered as in mesh. O(n).
 void require_no_stray_vertex(const TriMesh& mesh, const std::vector<int>& vertex_source);
+// The same with the mesh's vertex_part_roots() (part_spread.h) known.
+void require_no_stray_vertex(const TriMesh& mesh, const std::vector<int>& vertex_source,
+                             const std::vector<int>& roots);
 
 }  // namespace ff
