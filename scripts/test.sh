@@ -8,26 +8,29 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 jobs=$(nproc 2>/dev/null || echo 2)
+# Each phase says when it starts (seconds since this script began): CI has 90 minutes.
+phase() { echo "== $1 (at ${SECONDS} s)"; }
 
 scripts/setup.sh
 
-echo "== native build (Release)"
+phase "native build (Release)"
 cmake -S . -B build/release -DCMAKE_BUILD_TYPE=Release -DFF_WEB_TESTS=ON >/dev/null
 cmake --build build/release -j"$jobs"
 
-echo "== benchmark smoke runs"
+phase "benchmark smoke runs"
 build/release/bench/bench_cluster --smoke
 build/release/bench/bench_remesh --smoke --seeds 2
 
-echo "== WebAssembly and web build (wasm modules, site in web/dist, strict type check)"
+phase "WebAssembly and web build (wasm modules, site in web/dist, strict type check)"
 npm run --silent build
 npm run --silent typecheck
 
-echo "== native, wasm (Node) and browser tests"
+phase "native, wasm (Node) and browser tests"
 ctest --test-dir build/release --output-on-failure -j"$jobs"
 
-echo "== sanitizer build (ASan + UBSan) of the core tests"
+phase "sanitizer build (ASan + UBSan) of the core tests"
 cmake -S . -B build/sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFF_SANITIZE=ON -DFF_BUILD_BENCH=OFF >/dev/null
 cmake --build build/sanitize -j"$jobs" --target ff_core_tests flatfacet
+phase "sanitizer tests"
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
   ctest --test-dir build/sanitize --output-on-failure -j"$jobs"
