@@ -82,9 +82,14 @@ def remove_faces(rng, v, f):  # holes, from one face to a patch
     del f[start:start + rng.choice([1, 2, 5, 30, 200])]
 
 
+def valid_indices(v, *indices):  # an earlier mutation (bad_index) may have broken them
+    return all(0 <= i < len(v) for i in indices)
+
+
 def collapse_vertex(rng, v, f):  # zero-area faces where a vertex lands on its neighbour
     face = f[rng.randrange(len(f))]
-    v[face[0]] = list(v[face[1]])
+    if valid_indices(v, face[0], face[1]):
+        v[face[0]] = list(v[face[1]])
 
 
 def bad_index(rng, v, f):
@@ -99,6 +104,8 @@ def repeated_index(rng, v, f):
 
 def fin(rng, v, f):  # a third face on an edge: non-manifold
     a, b = f[rng.randrange(len(f))][:2]
+    if not valid_indices(v, a, b):
+        return
     c = [(v[a][d] + v[b][d]) / 2 + rng.uniform(-0.1, 0.1) for d in range(3)]
     v.append(c)
     f.append([a, b, len(v) - 1])
