@@ -249,15 +249,15 @@ int run_remesh(const std::vector<std::string>& argv) {
   if (!invalid.empty()) {
     const int solves = remesher.retries_done() + 1;
     std::fprintf(stderr,
-                 "flatfacet: %s after %d solve%s; --report lists them; another --seed or more panels may make "
-                 "every panel valid\n",
+                 "flatfacet: %s after %d solve%s; --report lists them; another --seed or --panels count (more or "
+                 "fewer) may make every panel valid\n",
                  invalid.c_str(), solves, solves == 1 ? "" : "s");
   }
   // Valid panels that still close a hole or join two sheets (topology_preserved false): the
   // same exit 3, named.
   const std::string topology = topology_phrase(quality);
   if (!topology.empty() && invalid.empty())
-    std::fprintf(stderr, "flatfacet: %s; --report has both; another --seed or more panels may keep it\n",
+    std::fprintf(stderr, "flatfacet: %s; --report has both; another --seed or --panels count may keep it\n",
                  topology.c_str());
   // Flat to 1e-9 by construction; not where the coordinates cannot hold that (far from the
   // origin): the file is still written (fabrication tolerances are ~1e-4), the designer told.

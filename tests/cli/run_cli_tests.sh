@@ -200,7 +200,7 @@ python3 -c "
 import json, re, sys
 r = json.load(open(sys.argv[1]))
 line = open(sys.argv[2]).read()
-m = re.fullmatch(r'flatfacet: (\d+) panels? invalid \((.+)\) after 1 solve; --report lists them; another --seed or more panels may make every panel valid\n', line)
+m = re.fullmatch(r'flatfacet: (\d+) panels? invalid \((.+)\) after 1 solve; --report lists them; another --seed or --panels count \(more or fewer\) may make every panel valid\n', line)
 assert m and int(m.group(1)) == len(r['invalid']) > 0, (line, r['invalid'])
 names = {p for entry in r['invalid'] for p in entry['problems']}
 assert {part.rsplit(' ', 1)[0] for part in m.group(2).split(', ')} == names, (line, names)" "$tmp/cow0.json" "$tmp/err0.txt" &&

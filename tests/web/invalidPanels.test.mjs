@@ -22,17 +22,17 @@ test('the invalid list becomes counts per problem, in the core order, unbuilt ap
   assert.deepEqual(summary, { panels: 3, unbuilt: 1, problems: [['not star-shaped', 2], ['spike', 2]] });
   assert.equal(
     invalidPhrase(summary),
-    '3 invalid panels (shown red: not star-shaped 2, spike 2); 1 cluster could not become a panel; another seed or more panels may make every panel valid',
+    '3 invalid panels (shown red: not star-shaped 2, spike 2); 1 cluster could not become a panel; another seed or panel count (more or fewer) may make every panel valid',
   );
 });
 
 test('one panel, only unbuilt clusters, nothing invalid, no list', () => {
   assert.equal(
     invalidPhrase(summarizeInvalid({ invalid: [{ panel: 0, cluster: 0, problems: ['not_simple'] }] })),
-    '1 invalid panel (shown red: self-intersecting 1); another seed or more panels may make every panel valid',
+    '1 invalid panel (shown red: self-intersecting 1); another seed or panel count (more or fewer) may make every panel valid',
   );
   const unbuilt = { invalid: [0, 2].map((cluster) => ({ panel: -1, cluster, problems: ['unbuilt'], vertices: 0 })) };
-  assert.equal(invalidPhrase(summarizeInvalid(unbuilt)), '2 clusters could not become panels; another seed or more panels may make every panel valid');
+  assert.equal(invalidPhrase(summarizeInvalid(unbuilt)), '2 clusters could not become panels; another seed or panel count (more or fewer) may make every panel valid');
   assert.equal(invalidPhrase(summarizeInvalid({ invalid: [] })), '');
   assert.equal(summarizeInvalid({ panels: 0 }), null, 'a report without panels has no list');
   // A name the page does not know yet (a newer core) still shows, not dropped.

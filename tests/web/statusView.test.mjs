@@ -21,13 +21,13 @@ test('the summary ends with "Done: N panels", the problems in front', () => {
   assert.deepEqual(solvedSummary(result(0, 0)), { text: 'Done: 40 panels', warning: false });
   // Without the report's "invalid" list (a solve without panels), the problem list's counts.
   assert.deepEqual(solvedSummary(result(1, 2)), {
-    text: '1 invalid panel (shown red); 2 clusters could not become panels; another seed or more panels may make every panel valid. Done: 40 panels',
+    text: '1 invalid panel (shown red); 2 clusters could not become panels; another seed or panel count (more or fewer) may make every panel valid. Done: 40 panels',
     warning: true,
   });
   // With it, what is wrong with them (invalidPanels.ts).
   const listed = { ...result(0, 0), report: { panels: 40, invalid: [{ panel: 5, cluster: 5, problems: ['not_star'] }] } };
   assert.deepEqual(solvedSummary(listed), {
-    text: '1 invalid panel (shown red: not star-shaped 1); another seed or more panels may make every panel valid. Done: 40 panels',
+    text: '1 invalid panel (shown red: not star-shaped 1); another seed or panel count (more or fewer) may make every panel valid. Done: 40 panels',
     warning: true,
   });
   assert.deepEqual(solvedSummary({ ...result(0, 0), report: { panels: 40, invalid: [] } }), { text: 'Done: 40 panels', warning: false });

@@ -70,7 +70,7 @@ export function problemsPhrase(summary: InvalidSummary): string {
 }
 
 // "2 invalid panels (shown red: not star-shaped 1, spike 1); 1 cluster could not become a
-// panel; another seed or more panels may make every panel valid", or '' when all are valid.
+// panel; another seed or panel count (more or fewer) may make every panel valid", or '' when all are valid.
 export function invalidPhrase(summary: InvalidSummary): string {
   const parts: string[] = [];
   if (summary.panels > 0) {
@@ -81,5 +81,5 @@ export function invalidPhrase(summary: InvalidSummary): string {
     parts.push(`${summary.unbuilt} cluster${summary.unbuilt === 1 ? '' : 's'} could not become ${summary.unbuilt === 1 ? 'a panel' : 'panels'}`);
   }
   if (parts.length === 0) return '';
-  return `${parts.join('; ')}; another seed or more panels may make every panel valid`;
+  return `${parts.join('; ')}; another seed or panel count (more or fewer) may make every panel valid`;
 }
