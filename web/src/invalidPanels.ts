@@ -70,7 +70,8 @@ export function problemsPhrase(summary: InvalidSummary): string {
 }
 
 // "2 invalid panels (shown red: not star-shaped 1, spike 1); 1 cluster could not become a
-// panel; another seed or panel count (more or fewer) may make every panel valid", or '' when all are valid.
+// panel; another seed or panel count (more or fewer) may make every panel valid", or '' when
+// all are valid.
 export function invalidPhrase(summary: InvalidSummary): string {
   const parts: string[] = [];
   if (summary.panels > 0) {
