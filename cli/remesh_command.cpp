@@ -91,7 +91,8 @@ struct Options {
 Options parse_options(const std::vector<std::string>& argv) {
   std::set<std::string> with_value = {"panels",  "seed",        "weights",      "density",    "iterations",
                                       "out",     "report",      "seeding",      "min-angle",  "edits",
-                                      "prepare", "edge-length", "density-expr", "anisotropy", "retries"};
+                                      "prepare", "edge-length", "density-expr", "anisotropy", "retries",
+                                      "coplanar-angle"};
   with_value.insert(fabrication_option_names().begin(), fabrication_option_names().end());
   with_value.insert(subdivision_option_names().begin(), subdivision_option_names().end());
   with_value.insert(repair_option_names().begin(), repair_option_names().end());
@@ -123,6 +124,11 @@ Options parse_options(const std::vector<std::string>& argv) {
     // Above 60 no triangle qualifies, so no mesh could pass.
     if (!(p.min_corner_angle_deg >= 0.0 && p.min_corner_angle_deg <= 60.0))
       throw UsageError("--min-angle: expected degrees between 0 and 60, got '" + args.get("min-angle") + "'");
+  }
+  if (args.has("coplanar-angle")) {
+    p.coplanar_angle_deg = parse_double(args.get("coplanar-angle"), "--coplanar-angle");
+    if (!(p.coplanar_angle_deg >= 0.0 && p.coplanar_angle_deg <= 10.0))
+      throw UsageError("--coplanar-angle: expected degrees between 0 and 10, got '" + args.get("coplanar-angle") + "'");
   }
   o.out = args.get("out");
   o.report = args.get("report");

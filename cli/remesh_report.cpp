@@ -107,6 +107,7 @@ std::string remesh_report_json(const RemeshRun& run) {
   j.value("optimize_planes", p.optimize_planes);
   j.value("glass", p.glass);
   j.value("min_angle_deg", p.min_corner_angle_deg);
+  j.value("coplanar_angle_deg", p.coplanar_angle_deg);
   j.begin_object("iterations");
   j.value("lloyd", r.lloyd_iterations_done()).value("panel_rounds", r.panel_rounds_done());
   j.value("lloyd_limit", p.lloyd_iterations).value("panel_rounds_limit", p.panel_rounds);

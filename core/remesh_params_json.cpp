@@ -179,6 +179,8 @@ RemeshParams remesh_params_from_json(std::string_view json, const RemeshParams& 
       p.glass = boolean(value, name);  // glass mode: concave panels cut into convex pieces
     } else if (name == "minCornerAngleDeg") {
       p.min_corner_angle_deg = number(value, name, 0, 60, false);  // as the CLI's --min-angle
+    } else if (name == "coplanarAngleDeg") {
+      p.coplanar_angle_deg = number(value, name, 0, 10, false);  // as the CLI's --coplanar-angle
     } else if (name == "densityExpression") {
       if (value.type != JsonValue::Type::String) throw InputError("parameter 'densityExpression' must be a string");
       // Checked here (length, syntax, names) so a bad link fails with its own message.

@@ -167,6 +167,8 @@ void Remesher::validate(const RemeshParams& p) const {
     throw InputError("retries must be between 0 and " + std::to_string(RemeshParams::kMaxRetries));
   if (!(p.min_corner_angle_deg >= 0.0 && p.min_corner_angle_deg <= 60.0))
     throw InputError("the minimum corner angle must be between 0 and 60 degrees");
+  if (!(p.coplanar_angle_deg >= 0.0 && p.coplanar_angle_deg <= 10.0))
+    throw InputError("the coplanar angle must be between 0 and 10 degrees");
   if (p.make_panels) check_enough_panels(topology_, p.panels);
   seeds_per_component(faces_, topology_, p.panels);  // throws on too many / too few panels
   validate_edits(p.edits);
@@ -219,6 +221,7 @@ std::unique_ptr<PanelAttempt> Remesher::make_attempt() {
   options.layout.tolerance = check_tolerance_;
   options.layout.min_corner_angle_deg = params_.min_corner_angle_deg;
   options.layout.glass = params_.glass;
+  options.master_angle_deg = params_.coplanar_angle_deg;
   options.fixed = settled_;
   options.fixed_planes = settled_planes_;
   hold(options.fixed, options.fixed_planes);  // locked panels and their neighbours

@@ -88,6 +88,12 @@ struct RemeshParams {
   // The designer's smallest corner angle in degrees (0 = off, at most 60): a panel corner
   // below it is a problem the panel rounds fix like the others; what remains is reported.
   double min_corner_angle_deg = 0.0;
+  // Neighbouring clusters whose planes differ by less than this many degrees share one
+  // master plane (paper 2.4: 1 degree; 0 = none, at most 10). On a shallow
+  // surface every pair of neighbours can be that close and the shared planes then meet
+  // badly: a dome rising 1:100 at 400 panels ends with about 130 invalid panels at 1 degree
+  // and none at 0.25 (README.md, "Shallow surfaces").
+  double coplanar_angle_deg = 1.0;
   // Per-panel edits, applied in order once the solve is done (PanelEdit; DESIGN.md 3).
   std::vector<PanelEdit> edits;
   // A new field must be compared in Remesher::same_solve too (remesher_edits.cpp).

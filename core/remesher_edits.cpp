@@ -244,7 +244,8 @@ bool Remesher::same_solve(const RemeshParams& a, const RemeshParams& b) {
          a.teleport_interval == b.teleport_interval && a.teleport_moves == b.teleport_moves &&
          a.make_panels == b.make_panels && a.panel_rounds == b.panel_rounds &&
          a.single_point_nodes == b.single_point_nodes && a.optimize_planes == b.optimize_planes &&
-         a.glass == b.glass && a.min_corner_angle_deg == b.min_corner_angle_deg && a.retries == b.retries;
+         a.glass == b.glass && a.min_corner_angle_deg == b.min_corner_angle_deg &&
+         a.coplanar_angle_deg == b.coplanar_angle_deg && a.retries == b.retries;
 }
 
 // The count after edits is the target plus splits minus merges (or what a new count reached):

@@ -419,6 +419,8 @@ expect_error 2 "same file" remesh "$e" --panels 10 --parts "$tmp/never.svg" --sh
 expect_error 2 "min-angle.*between 0 and 60" remesh "$e" --panels 10 --glass --min-angle=61 "${o[@]}"
 expect_error 2 "min-angle.*between 0 and 60" remesh "$e" --panels 10 --min-angle -1 "${o[@]}"
 expect_error 2 "min-angle.*not a finite number" remesh "$e" --panels 10 --min-angle ten "${o[@]}"
+expect_error 2 "coplanar-angle.*between 0 and 10" remesh "$e" --panels 10 --coplanar-angle 12 "${o[@]}"
+expect_error 2 "coplanar-angle.*not a finite number" remesh "$e" --panels 10 --coplanar-angle one "${o[@]}"
 expect_error 2 "same file" remesh "$e" --panels 10 --out "$tmp/never.x" --parts "$tmp/never.x"
 expect_error 2 "seeding" remesh "$e" --panels 10 --seeding spiral "${o[@]}"
 expect_error 2 "weights" remesh "$e" --panels 10 --weights boundary=x "${o[@]}"
@@ -441,7 +443,7 @@ rc=$?
 python3 - "$tmp/glass.json" "$tmp/glass.csv" <<'PY' && ok || bad "glass report/parts check"
 import csv, json, re, sys
 r = json.load(open(sys.argv[1]))
-assert r["glass"] is True and r["min_angle_deg"] == 10, r
+assert r["glass"] is True and r["min_angle_deg"] == 10 and r["coplanar_angle_deg"] == 1, r
 assert r["concave_panels"] == 0 and r["acute_corners"] == 0 and r["invalid_panels"] == 0, r
 assert r["min_corner_angle_deg"] >= 10 and r["min_corner_angle_target_deg"] == 10, r
 assert r["topology_preserved"] and r["max_planarity"] <= 1e-9, r
