@@ -89,10 +89,8 @@ struct RemeshParams {
   // below it is a problem the panel rounds fix like the others; what remains is reported.
   double min_corner_angle_deg = 0.0;
   // Neighbouring clusters whose planes differ by less than this many degrees share one
-  // master plane (paper 2.4: 1 degree; 0 = none, at most 10). On a shallow
-  // surface every pair of neighbours can be that close and the shared planes then meet
-  // badly: a dome rising 1:100 at 400 panels ends with about 130 invalid panels at 1 degree
-  // and none at 0.25 (README.md, "Shallow surfaces").
+  // master plane (paper 2.4: 1 degree; 0 = none, at most 10), unless their planes meet near
+  // them, as neighbours on a smoothly curved surface do (master_planes.h).
   double coplanar_angle_deg = 1.0;
   // Per-panel edits, applied in order once the solve is done (PanelEdit; DESIGN.md 3).
   std::vector<PanelEdit> edits;

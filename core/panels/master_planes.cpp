@@ -1,5 +1,6 @@
 #include "core/panels/master_planes.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -26,6 +27,17 @@ int find(std::vector<int>& parent, int x) {
   return x;
 }
 
+// Whether two planes meet near the pair: their line closer to the middle of their centres
+// than kNearLineShare of the centres' distance. Measured across the line: at that middle the
+// two planes' signed distances differ by |ea - eb|, which grows by sin(angle) per unit of
+// distance across it.
+bool meet_near(const Plane& a, const Plane& b, const Vec3& center_a, const Vec3& center_b) {
+  const Vec3 middle = 0.5 * (center_a + center_b);
+  const double apart = std::abs(a.distance(middle) - b.distance(middle));
+  const double sine = a.normal.cross(b.normal).norm();
+  return apart < kNearLineShare * sine * (center_a - center_b).norm();
+}
+
 }  // namespace
 
 MasterPlanes snap_master_planes(const std::vector<Plane>& planes, const std::vector<Vec3>& centers,
@@ -49,8 +61,12 @@ MasterPlanes snap_master_planes(const std::vector<Plane>& planes, const std::vec
   const auto single = [&](int c) { return static_cast<size_t>(c) < alone.size() && alone[static_cast<size_t>(c)]; };
   for (const auto& [a, b] : neighbours) {
     if (single(a) || single(b)) continue;
-    const double c = planes[static_cast<size_t>(a)].normal.dot(planes[static_cast<size_t>(b)].normal);
-    if (c > cos_max) close.push_back({c, std::min(a, b), std::max(a, b)});
+    const Plane& pa = planes[static_cast<size_t>(a)];
+    const Plane& pb = planes[static_cast<size_t>(b)];
+    const double c = pa.normal.dot(pb.normal);
+    if (!(c > cos_max)) continue;
+    if (meet_near(pa, pb, centers[static_cast<size_t>(a)], centers[static_cast<size_t>(b)])) continue;
+    close.push_back({c, std::min(a, b), std::max(a, b)});
   }
   std::sort(close.begin(), close.end(), [](const Candidate& x, const Candidate& y) {
     if (x.cosine != y.cosine) return x.cosine > y.cosine;

@@ -1,6 +1,7 @@
 // Master planes: neighbouring planes within a degree share one plane (the area-weighted
 // normal through the area-weighted centre), a gently turning chain does not collapse into
-// one, and planes that stay alone keep their plane bit for bit.
+// one, planes that meet between their clusters (a curved surface) do not snap, and planes
+// that stay alone keep their plane bit for bit.
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
@@ -63,6 +64,26 @@ TEST(MasterPlanes, PlanesTwoDegreesApartStaySeparateAndExact) {
   EXPECT_EQ(snap_master_planes(planes, centers, {2.0, 1.0}, {{0, 1}}, 2.5).planes.size(), 1u);
 }
 
+// On a smoothly curved surface neighbouring planes meet about halfway between their
+// clusters, however small the angle: tangent planes of a sphere of radius 100 at points 1
+// apart (0.57 degrees) stay separate. The same two normals with the second plane moved by
+// 2 mm along its normal meet 0.2 away from the middle (a fifth of their distance): noise,
+// not curvature, so they snap. Identical and parallel planes snap.
+TEST(MasterPlanes, PlanesMeetingBetweenTheirClustersStaySeparate) {
+  const double radius = 100.0;
+  const Vec3 na = Vec3(-0.5, 0.0, radius).normalized(), nb = Vec3(0.5, 0.0, radius).normalized();
+  const std::vector<Vec3> centers = {radius * na, radius * nb};
+  const std::vector<Plane> tangent = {Plane::through(centers[0], na), Plane::through(centers[1], nb)};
+  ASSERT_NEAR(angle_deg(na, nb), 0.573, 0.001);
+  EXPECT_EQ(snap_master_planes(tangent, centers, {1.0, 1.0}, {{0, 1}}).planes.size(), 2u);
+  const std::vector<Plane> moved = {tangent[0], Plane{nb, tangent[1].offset + 2e-3}};
+  EXPECT_EQ(snap_master_planes(moved, centers, {1.0, 1.0}, {{0, 1}}).planes.size(), 1u);
+  const std::vector<Plane> same = {tangent[0], tangent[0]};
+  EXPECT_EQ(snap_master_planes(same, centers, {1.0, 1.0}, {{0, 1}}).planes.size(), 1u);
+  const std::vector<Plane> parallel = {tangent[0], Plane{na, tangent[0].offset + 0.1}};
+  EXPECT_EQ(snap_master_planes(parallel, centers, {1.0, 1.0}, {{0, 1}}).planes.size(), 1u);
+}
+
 TEST(MasterPlanes, AChainOfSmallTurnsDoesNotCollapse) {
   // Planes each 0.6 degree from the next (3 degrees end to end), neighbours in a chain.
   const int n = 6;
@@ -96,8 +117,9 @@ TEST(MasterPlanes, AChainOfSmallTurnsDoesNotCollapse) {
 }
 
 TEST(MasterPlanes, SingletonsKeepTheirPlaneAmongSnappedGroups) {
-  // 0 and 1 snap; 2 is 5 degrees off and keeps its plane exactly, whatever its area.
-  const std::vector<Vec3> centers = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(2, 0, 0.3)};
+  // 0 and 1 snap (their line runs through 1's centre, half their distance from the middle);
+  // 2 is 5 degrees off and keeps its plane exactly, whatever its area.
+  const std::vector<Vec3> centers = {Vec3(0, 0, 0), Vec3(0, 1, 0), Vec3(2, 0, 0.3)};
   const std::vector<Plane> planes = {Plane::through(centers[0], tilted(0.0)), Plane::through(centers[1], tilted(0.3)),
                                      Plane::through(centers[2], Vec3(0.3, -0.1, 1.0).normalized())};
   const MasterPlanes m = snap_master_planes(planes, centers, {1.0, 1.0, 1e-9}, {{0, 1}, {1, 2}, {0, 2}});
