@@ -74,6 +74,9 @@ export interface RemeshParams {
   edits?: PanelEdit[];
   glass?: boolean; // default false: concave panels cut into coplanar convex pieces
   minCornerAngleDeg?: number; // 0..60, default 0 (none): corners below it are panel problems
+  // 0..10, default 1 (the paper's): neighbours whose planes differ by less share one plane
+  // (master planes), unless their planes meet between them (core/panels/master_planes.h)
+  coplanarAngleDeg?: number;
 }
 
 export type PanelEdit =

@@ -33,11 +33,13 @@ async function copyShareLink(page) {
 }
 
 // Opens the link in a fresh context (no shared storage) and returns its exported OBJ.
-async function objFromLink(link, expectedPanels) {
+// `restored`: further inputs the link must have set, by label.
+async function objFromLink(link, expectedPanels, restored = {}) {
   let text = '';
   await withPage(link, async (page) => {
     assert.equal(await waitForDone(page), expectedPanels);
     assert.equal(await page.getByLabel('Panels', { exact: true }).inputValue(), String(expectedPanels), 'the parameters are restored');
+    for (const [label, value] of Object.entries(restored)) assert.equal(await page.getByLabel(label, { exact: true }).inputValue(), value, `${label} is restored`);
     text = (await download(page, 'Export OBJ')).text;
   });
   return text;
@@ -52,6 +54,7 @@ test('a share link of a warm-started example design gives the identical OBJ in a
     await page.getByText('Metric and solver').click();
     await page.getByLabel('Seed', { exact: true }).fill('7');
     await page.getByLabel('L2,1', { exact: true }).fill('2');
+    await page.getByLabel('Coplanar angle', { exact: true }).fill('2.5');
     await setPanels(page, 90);
     assert.equal(await solveAfter(page, () => remesh(page)), 90);
     await setPanels(page, 70); // a warm start from the 90-panel design
@@ -59,7 +62,7 @@ test('a share link of a warm-started example design gives the identical OBJ in a
     original = (await download(page, 'Export OBJ')).text;
     link = await copyShareLink(page);
   });
-  const restored = await objFromLink(link, 70);
+  const restored = await objFromLink(link, 70, { Seed: '7', 'L2,1': '2', 'Coplanar angle': '2.5' });
   assert.ok(original.length > 1000);
   assert.equal(restored, original, 'byte-identical OBJ');
 });

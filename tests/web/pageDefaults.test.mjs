@@ -51,6 +51,7 @@ test('a page default that differs from the core is caught', () => {
     optimizePlanes: !DEFAULT_PARAMS.optimizePlanes,
     glass: !DEFAULT_PARAMS.glass,
     minCornerAngleDeg: DEFAULT_PARAMS.minCornerAngleDeg + 1,
+    coplanarAngleDeg: DEFAULT_PARAMS.coplanarAngleDeg + 1,
   };
   const sent = Object.keys(toRemeshParams({ ...DEFAULT_PARAMS, panels }));
   assert.deepEqual(sent.filter((field) => field !== 'panels' && field !== 'weights').sort(), Object.keys(changed).sort());

@@ -159,7 +159,22 @@ test('form values are validated the same way, and map onto the wasm parameters',
     optimizePlanes: true,
     glass: false,
     minCornerAngleDeg: 0,
+    coplanarAngleDeg: 1,
   });
+});
+
+test('the coplanar angle: validated, defaulted for old links, sent to the core, carried by a link', () => {
+  const wide = validateParams({ ...DEFAULT_PARAMS, coplanarAngleDeg: 2.5 });
+  assert.equal(wide.ok, true, wide.message);
+  assert.equal(toRemeshParams(wide.value).coplanarAngleDeg, 2.5);
+  const { coplanarAngleDeg: _c, ...old } = DEFAULT_PARAMS;
+  assert.deepEqual(validateParams(old), { ok: true, value: DEFAULT_PARAMS }, "a link made before the control: the paper's 1 degree");
+  assert.equal(DEFAULT_PARAMS.coplanarAngleDeg, 1);
+  for (const bad of [10.5, -0.1, Number.NaN, '1']) assert.match(validateParams({ ...DEFAULT_PARAMS, coplanarAngleDeg: bad }).message, /Coplanar angle/, String(bad));
+  assert.equal(validateParams({ ...DEFAULT_PARAMS, coplanarAngleDeg: 0 }).ok, true, '0: never share a plane');
+  const link = hashToState(stateToHash({ mesh: { kind: 'example', id: 'saddle' }, params: wide.value, history: [] }));
+  assert.equal(link.ok, true, link.message);
+  assert.equal(link.value.params.coplanarAngleDeg, 2.5);
 });
 
 test('a corrupted link is refused: the zlib checksum is checked', () => {

@@ -46,6 +46,8 @@ export interface DesignParams {
   paint: string;
   glass: boolean; // glass mode: concave panels cut into coplanar convex pieces
   minCornerAngleDeg: number; // 0: no minimum corner angle
+  // Neighbours whose planes differ by less share one plane (the paper's master planes, 2.4).
+  coplanarAngleDeg: number;
   // Per-panel edits in order (edits/panelEdits.ts): split, merge, lock, unlock by triangle.
   edits: PanelEdit[];
 }
@@ -65,6 +67,7 @@ export const DEFAULT_PARAMS: DesignParams = {
   paint: '',
   glass: false,
   minCornerAngleDeg: 0,
+  coplanarAngleDeg: 1,
   edits: [],
 };
 
@@ -80,6 +83,7 @@ export const LIMITS = {
   lloydIterations: { min: 0, max: 200 },
   panelRounds: { min: 1, max: 100 },
   minCornerAngleDeg: { min: 0, max: 60 }, // as the core and the CLI's --min-angle
+  coplanarAngleDeg: { min: 0, max: 10 }, // as the core and the CLI's --coplanar-angle
   // Fabrication (fabricationParams.ts), in the designer's units; inside the core's 0..1e9.
   thickness: { min: 0, max: 100_000 },
   sheetSize: { min: 0.001, max: 1_000_000 },
@@ -226,7 +230,7 @@ function checkBoolean(value: unknown, what: string): Checked<boolean> {
 // Unknown fields are rejected too: a link from a newer version must not half-apply.
 export function validateParams(value: unknown, where = 'parameters'): Checked<DesignParams> {
   if (!isRecord(value)) return failure(`${where} must be an object`);
-  const known = new Set(['panels', 'seed', 'weights', 'lloydIterations', 'panelRounds', 'seeding', 'teleport', 'singlePointNodes', 'optimizePlanes', 'densityExpression', 'anisotropy', 'paint', 'glass', 'minCornerAngleDeg', 'edits']);
+  const known = new Set(['panels', 'seed', 'weights', 'lloydIterations', 'panelRounds', 'seeding', 'teleport', 'singlePointNodes', 'optimizePlanes', 'densityExpression', 'anisotropy', 'paint', 'glass', 'minCornerAngleDeg', 'coplanarAngleDeg', 'edits']);
   for (const key of Object.keys(value)) {
     if (!known.has(key)) return failure(`${where}: unknown field "${key.slice(0, 40)}"`);
   }
@@ -250,6 +254,9 @@ export function validateParams(value: unknown, where = 'parameters'): Checked<De
   if (!glass.ok) return glass;
   const minAngle = value.minCornerAngleDeg === undefined ? { ok: true as const, value: 0 } : checkNumber(value.minCornerAngleDeg, 'Min corner angle', LIMITS.minCornerAngleDeg);
   if (!minAngle.ok) return minAngle;
+  // Absent in links and sessions made before the control came to the page: the core's default.
+  const coplanar = value.coplanarAngleDeg === undefined ? { ok: true as const, value: DEFAULT_PARAMS.coplanarAngleDeg } : checkNumber(value.coplanarAngleDeg, 'Coplanar angle', LIMITS.coplanarAngleDeg);
+  if (!coplanar.ok) return coplanar;
   const weightsValue = value.weights;
   if (!isRecord(weightsValue)) return failure('weights must be an object');
   for (const key of Object.keys(weightsValue)) {
@@ -287,6 +294,7 @@ export function validateParams(value: unknown, where = 'parameters'): Checked<De
       paint,
       glass: glass.value,
       minCornerAngleDeg: minAngle.value,
+      coplanarAngleDeg: coplanar.value,
       edits: edits.value,
     },
   };
@@ -317,6 +325,7 @@ export function toRemeshParams(params: DesignParams): RemeshParams & { edits?: P
     optimizePlanes: params.optimizePlanes,
     glass: params.glass,
     minCornerAngleDeg: params.minCornerAngleDeg,
+    coplanarAngleDeg: params.coplanarAngleDeg,
     ...(params.densityExpression !== '' ? { densityExpression: params.densityExpression } : {}),
     ...(params.anisotropy.direction !== 'none' ? { anisotropy: { ...params.anisotropy } } : {}),
     ...(params.edits.length > 0 ? { edits: params.edits.map((edit) => ({ ...edit })) } : {}),

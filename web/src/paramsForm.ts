@@ -29,6 +29,7 @@ export class ParamsForm {
   private paintKey = '';
   private readonly glass = element('glass', HTMLInputElement);
   private readonly minCornerAngle = element('min-corner-angle', HTMLInputElement);
+  private readonly coplanarAngle = element('coplanar-angle', HTMLInputElement);
   // The per-panel edits (edits/editPanel.ts): made by clicking panels, not typed.
   private editList: PanelEdit[] = [];
   // "Panels" shows the count now, which after edits is not DesignParams.panels (the count the
@@ -49,6 +50,7 @@ export class ParamsForm {
       [this.lloydIterations, LIMITS.lloydIterations],
       [this.panelRounds, LIMITS.panelRounds],
       [this.minCornerAngle, LIMITS.minCornerAngleDeg],
+      [this.coplanarAngle, LIMITS.coplanarAngleDeg],
     ];
     for (const [input, range] of ranges) setRange(input, range);
     this.seed.title = `a whole number from ${LIMITS.seed.min} to 2^53 − 1 (${LIMITS.seed.max}); the same seed gives the same panels`;
@@ -87,7 +89,7 @@ export class ParamsForm {
   }
 
   private get numberInputs(): HTMLInputElement[] {
-    return [this.panels, this.seed, this.euclidean, this.l2, this.l21, this.boundary, this.lloydIterations, this.panelRounds, this.minCornerAngle];
+    return [this.panels, this.seed, this.euclidean, this.l2, this.l21, this.boundary, this.lloydIterations, this.panelRounds, this.minCornerAngle, this.coplanarAngle];
   }
 
   // Calls back on committed changes (enter, blur, spinner, checkbox), not on every keystroke.
@@ -116,6 +118,7 @@ export class ParamsForm {
       paint: this.paintKey,
       glass: this.glass.checked,
       minCornerAngleDeg: number(this.minCornerAngle),
+      coplanarAngleDeg: number(this.coplanarAngle),
       edits: this.editList,
     });
     if (!checked.ok) this.markInvalid(checked.message);
@@ -136,6 +139,7 @@ export class ParamsForm {
       ['Density expression', this.expression],
       ['Stretch', this.stretch],
       ['Min corner angle', this.minCornerAngle],
+      ['Coplanar angle', this.coplanarAngle],
     ];
     const match = byName.find(([name]) => message.includes(name));
     match?.[1].setAttribute('aria-invalid', 'true');
@@ -159,6 +163,7 @@ export class ParamsForm {
     this.optimizePlanes.checked = params.optimizePlanes;
     this.glass.checked = params.glass;
     this.minCornerAngle.value = String(params.minCornerAngleDeg);
+    this.coplanarAngle.value = String(params.coplanarAngleDeg);
     this.expression.value = params.densityExpression;
     this.syncPreset();
     this.direction.value = params.anisotropy.direction;
