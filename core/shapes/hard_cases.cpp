@@ -35,6 +35,8 @@ std::vector<NamedShape> hard_cases(int triangles) {
   shapes.push_back({"groin_vault", make_groin_vault(triangles), 1, 1});
   shapes.push_back({"roof_with_hole", make_roof_with_hole(triangles), 2, 0});
   shapes.push_back({"barrel_vault", make_barrel_vault(triangles), 1, 1});
+  shapes.push_back({"monkey_saddle", make_monkey_saddle(triangles), 1, 1});
+  shapes.push_back({"cone", make_cone(triangles), 1, 1});
   return shapes;
 }
 

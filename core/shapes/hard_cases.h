@@ -33,6 +33,17 @@ TriMesh make_twisted_strip(int triangles, double length = 24.0, double width = 6
 // height * exp(-(x^2 + y^2) / (2 sigma^2)) in the middle. 1 loop.
 TriMesh make_bump(int triangles, double size = 20.0, double height = 3.0, double sigma = 2.5);
 
+// Monkey saddle: z = rise * x (x^2 - 3 y^2) / (size/2)^3 over the square [-size/2, size/2]^2.
+// Three valleys and three ridges meet at a flat point (zero curvature, the normal turning
+// once more around it than a saddle's), so no quadratic fits around the middle. 1 loop.
+TriMesh make_monkey_saddle(int triangles, double size = 20.0, double rise = 3.0);
+
+// Conical tent over the square [-size/2, size/2]^2: z = rise * (1 - r / (size/2)), r the
+// distance from the z axis; the apex (a mesh vertex) is a point where the normals of every
+// direction around the cone meet, the rest is developable (all normals on one cone, as a
+// barrel vault's are on one circle). 1 loop.
+TriMesh make_cone(int triangles, double size = 20.0, double rise = 6.0);
+
 // Torus around the z axis, outward normals. Closed, genus 1: Euler 0, no loops.
 TriMesh make_torus(int triangles, double major_radius = 10.0, double minor_radius = 3.0);
 
@@ -62,7 +73,7 @@ struct NamedShape {
 
 // All of the above at their default sizes with about `triangles` triangles each, in this
 // order: saddle, helicoid, twisted_strip, bump, torus, groin_vault, roof_with_hole,
-// barrel_vault.
+// barrel_vault, monkey_saddle, cone.
 std::vector<NamedShape> hard_cases(int triangles);
 
 // Grid cells {along u, along v} giving about `triangles` triangles (two per cell) with

@@ -1,5 +1,5 @@
-// The hard cases that are one smooth map of a rectangle (make_grid_surface): saddle,
-// helicoid, twisted strip, bump, torus, barrel vault. The parameter directions are picked
+// The hard cases that are one map of a rectangle (make_grid_surface): saddle, helicoid,
+// twisted strip, bump, torus, barrel vault, monkey saddle, cone (smooth but at its apex). The parameter directions are picked
 // so d/du x d/dv, hence the face normals, points up (outward for the torus).
 #include <algorithm>
 #include <cmath>
@@ -67,6 +67,28 @@ TriMesh make_bump(int triangles, double size, double height, double sigma) {
   return make_grid_surface(nu, nv, [&](double u, double v) {
     const double x = (2.0 * u - 1.0) * half, y = (2.0 * v - 1.0) * half;
     return Vec3(x, y, height * std::exp(-(x * x + y * y) / (2.0 * sigma * sigma)));
+  });
+}
+
+TriMesh make_monkey_saddle(int triangles, double size, double rise) {
+  require(size > 0.0, "monkey saddle: the size must be positive");
+  const double half = size / 2.0;
+  // Even counts put a vertex on the flat point.
+  const auto [nu, nv] = grid_dims_for(triangles, size, size, 2, 2);
+  return make_grid_surface(nu, nv, [&](double u, double v) {
+    const double x = (2.0 * u - 1.0) * half, y = (2.0 * v - 1.0) * half;
+    return Vec3(x, y, rise * x * (x * x - 3.0 * y * y) / (half * half * half));
+  });
+}
+
+TriMesh make_cone(int triangles, double size, double rise) {
+  require(size > 0.0, "cone: the size must be positive");
+  const double half = size / 2.0;
+  // Even counts put a vertex on the apex.
+  const auto [nu, nv] = grid_dims_for(triangles, size, size, 2, 2);
+  return make_grid_surface(nu, nv, [&](double u, double v) {
+    const double x = (2.0 * u - 1.0) * half, y = (2.0 * v - 1.0) * half;
+    return Vec3(x, y, rise * (1.0 - std::hypot(x, y) / half));
   });
 }
 

@@ -70,7 +70,7 @@ TEST(HardCases, NamesAndOrder) {
   std::vector<std::string> names;
   for (const NamedShape& s : hard_cases(500)) names.push_back(s.name);
   EXPECT_EQ(names, (std::vector<std::string>{"saddle", "helicoid", "twisted_strip", "bump", "torus", "groin_vault",
-                                             "roof_with_hole", "barrel_vault"}));
+                                             "roof_with_hole", "barrel_vault", "monkey_saddle", "cone"}));
 }
 
 TEST(HardCases, CleanManifoldOrientedWithExpectedTopology) {
@@ -182,6 +182,27 @@ TEST(HardCases, AreasMatchTheSurfaces) {
     });
     EXPECT_NEAR(total_area(make_roof_with_hole(n)), expected, 0.01 * expected);
   }
+  {
+    const double expected = height_field_area(10.0, 0.0, [](double x, double y) {
+      return Eigen::Vector2d(3.0 * (3.0 * x * x - 3.0 * y * y) / 1000.0, 3.0 * (-6.0 * x * y) / 1000.0);
+    });
+    EXPECT_NEAR(total_area(make_monkey_saddle(n)), expected, 0.01 * expected);
+  }
+  // Cone: the slope is the same everywhere, so the area is the square's times sqrt(1 + s^2).
+  EXPECT_NEAR(total_area(make_cone(n)), 400.0 * std::sqrt(1.0 + 0.6 * 0.6), 0.01 * 400.0 * std::sqrt(1.36));
+}
+
+// The cone's apex and the monkey saddle's flat point are mesh vertices, where the hard part is.
+TEST(HardCases, ConeApexAndMonkeySaddleFlatPointAreVertices) {
+  for (int request : {1, 1000, 8000}) {
+    const TriMesh cone = make_cone(request);
+    const TriMesh monkey = make_monkey_saddle(request);
+    const auto has = [](const TriMesh& m, const Vec3& p) {
+      return std::any_of(m.positions.begin(), m.positions.end(), [&](const Vec3& q) { return (q - p).norm() < 1e-12; });
+    };
+    EXPECT_TRUE(has(cone, Vec3(0.0, 0.0, 6.0))) << request;
+    EXPECT_TRUE(has(monkey, Vec3::Zero())) << request;
+  }
 }
 
 TEST(HardCases, GroinVaultCreasesAreSharpEdgesOnTheDiagonals) {
@@ -284,6 +305,8 @@ TEST(HardCases, BadParametersThrow) {
   EXPECT_THROW(make_barrel_vault(1000, 24.0, 12.0, 0.0), InputError);
   EXPECT_THROW(make_roof_with_hole(1000, 30.0, 15.0), InputError);
   EXPECT_THROW(make_saddle(1000, -1.0), InputError);
+  EXPECT_THROW(make_monkey_saddle(1000, 0.0), InputError);
+  EXPECT_THROW(make_cone(1000, -2.0), InputError);
 }
 
 TEST(HardCases, TinyRequestsStillGiveValidMeshes) {

@@ -79,7 +79,9 @@ INSTANTIATE_TEST_SUITE_P(Counts, HardCasePanels, ::testing::Values(60, 120));
 // chaotic, and the barrel vault still ends with a panel or two invalid at some counts in
 // between (bench/README.md). (700 became 750 when two-chain clusters started splitting along
 // their chains: of 400, 550, 650, 700, 750 and 850, four passed before and four after; 650
-// and 750 failed before, 650 and 700 after.)
+// and 750 failed before, 650 and 700 after.) The cone (developable but at its apex) and the
+// monkey saddle (a flat point where three ridges meet) were valid at 400 and 800 at seeds 1-3
+// when added (cone 800: 13-15 rounds).
 struct DenseCase {
   std::string shape;
   int panels;
@@ -93,14 +95,22 @@ TEST_P(DenseHardCasePanels, ValidPlanarAndTopologyPreserving) {
   const DenseCase& c = GetParam();
   RemeshParams p;
   p.panels = c.panels;
-  Remesher r(c.shape == "barrel_vault" ? make_barrel_vault(50000) : make_roof(158, 158), p);
+  const auto mesh = [&]() -> TriMesh {
+    if (c.shape == "barrel_vault") return make_barrel_vault(50000);
+    if (c.shape == "cone") return make_cone(50000);
+    if (c.shape == "monkey_saddle") return make_monkey_saddle(50000);
+    return make_roof(158, 158);
+  };
+  Remesher r(mesh(), p);
   r.run();
   EXPECT_TRUE(test::valid_panels(r, c.panels, 0.05)) << c.shape << " at " << c.panels;
 }
 
 INSTANTIATE_TEST_SUITE_P(Counts, DenseHardCasePanels,
                          ::testing::Values(DenseCase{"barrel_vault", 400}, DenseCase{"barrel_vault", 750},
-                                           DenseCase{"freeform_roof", 500}, DenseCase{"freeform_roof", 700}),
+                                           DenseCase{"freeform_roof", 500}, DenseCase{"freeform_roof", 700},
+                                           DenseCase{"cone", 400}, DenseCase{"cone", 800},
+                                           DenseCase{"monkey_saddle", 400}, DenseCase{"monkey_saddle", 800}),
                          [](const auto& info) { return info.param.shape + "_" + std::to_string(info.param.panels); });
 
 // Draws with a long tail of panel rounds: one to three panels stay flipped for 10-30 rounds at
