@@ -181,7 +181,8 @@ export interface Session {
   // with them (meshes, render meshes; may be empty). Returns SurfacesInfo JSON or a Status.
   loadSurfaces(name: string, surfacesJson: string, positions: Float64Array, indices: Uint32Array): string;
   // A generated example: 'saddle' | 'barrel_vault' | 'groin_vault' | 'helicoid' | 'freeform_roof'
-  // | 'torus' | 'bump' | 'roof_with_hole' | 'twisted_strip', with about `triangles` triangles.
+  // | 'torus' | 'bump' | 'roof_with_hole' | 'twisted_strip' | 'cone' | 'monkey_saddle', with
+  // about `triangles` triangles.
   loadShape(name: string, triangles: number): string;
   // After a load, and again whenever the panel count outgrows the mesh: from the mesh as
   // loaded (kept in the session), subdivide `subdivide` levels (0..4; Loop on triangles, else

@@ -8,7 +8,8 @@ namespace ff {
 
 std::vector<std::string> example_shape_names() {
   return {"saddle", "barrel_vault", "groin_vault",    "helicoid",     "freeform_roof",
-          "torus",  "bump",         "roof_with_hole", "twisted_strip"};
+          "torus",  "bump",         "roof_with_hole", "twisted_strip", "cone",
+          "monkey_saddle"};
 }
 
 TriMesh make_example_shape(const std::string& name, int triangles) {
@@ -26,6 +27,8 @@ TriMesh make_example_shape(const std::string& name, int triangles) {
   if (name == "bump") return make_bump(triangles);
   if (name == "roof_with_hole") return make_roof_with_hole(triangles);
   if (name == "twisted_strip") return make_twisted_strip(triangles);
+  if (name == "cone") return make_cone(triangles);
+  if (name == "monkey_saddle") return make_monkey_saddle(triangles);
   throw InputError("unknown example shape '" + name + "'");
 }
 

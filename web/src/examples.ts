@@ -32,6 +32,7 @@ export const EXAMPLES: readonly Example[] = [
   { kind: 'shape', id: 'groin_vault', label: 'Groin vault (generated)', shape: 'groin_vault', triangles: 8000, panels: 120, up: 'z' },
   { kind: 'shape', id: 'helicoid', label: 'Helicoid (generated)', shape: 'helicoid', triangles: 8000, panels: 120, up: 'z' },
   { kind: 'shape', id: 'freeform_roof', label: 'Freeform roof (generated)', shape: 'freeform_roof', triangles: 8000, panels: 120, up: 'z' },
+  { kind: 'shape', id: 'cone', label: 'Conical tent (generated)', shape: 'cone', triangles: 8000, panels: 120, up: 'z' },
 ];
 
 export const DEFAULT_EXAMPLE_ID = 'hyperboloid_s4';
