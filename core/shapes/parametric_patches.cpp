@@ -18,17 +18,25 @@ void require(bool ok, const std::string& message) {
   if (!ok) throw InputError(message);
 }
 
+// A height field z = height(x, y) over the square [-size/2, size/2]^2, u along x and v along
+// y (so the normals point up). Even counts put a vertex on the middle (x, y) = (0, 0).
+template <typename Height>
+TriMesh height_field_on_square(int triangles, double size, const Height& height) {
+  const double half = size / 2.0;
+  const auto [nu, nv] = grid_dims_for(triangles, size, size, 2, 2);
+  return make_grid_surface(nu, nv, [&](double u, double v) {
+    const double x = (2.0 * u - 1.0) * half, y = (2.0 * v - 1.0) * half;
+    return Vec3(x, y, height(x, y));
+  });
+}
+
 }  // namespace
 
 TriMesh make_saddle(int triangles, double size, double rise) {
   require(size > 0.0, "saddle: the size must be positive");
   const double half = size / 2.0;
-  // Even counts put a vertex on the saddle point itself.
-  const auto [nu, nv] = grid_dims_for(triangles, size, size, 2, 2);
-  return make_grid_surface(nu, nv, [&](double u, double v) {
-    const double x = (2.0 * u - 1.0) * half, y = (2.0 * v - 1.0) * half;
-    return Vec3(x, y, rise * (x * x - y * y) / (half * half));
-  });
+  return height_field_on_square(triangles, size,
+                                [&](double x, double y) { return rise * (x * x - y * y) / (half * half); });
 }
 
 TriMesh make_helicoid(int triangles, double inner_radius, double outer_radius, double turns, double rise_per_turn) {
@@ -62,34 +70,24 @@ TriMesh make_twisted_strip(int triangles, double length, double width, double tw
 
 TriMesh make_bump(int triangles, double size, double height, double sigma) {
   require(size > 0.0 && sigma > 0.0, "bump: size and sigma must be positive");
-  const double half = size / 2.0;
-  const auto [nu, nv] = grid_dims_for(triangles, size, size, 2, 2);
-  return make_grid_surface(nu, nv, [&](double u, double v) {
-    const double x = (2.0 * u - 1.0) * half, y = (2.0 * v - 1.0) * half;
-    return Vec3(x, y, height * std::exp(-(x * x + y * y) / (2.0 * sigma * sigma)));
+  return height_field_on_square(triangles, size, [&](double x, double y) {
+    return height * std::exp(-(x * x + y * y) / (2.0 * sigma * sigma));
   });
 }
 
 TriMesh make_monkey_saddle(int triangles, double size, double rise) {
   require(size > 0.0, "monkey saddle: the size must be positive");
   const double half = size / 2.0;
-  // Even counts put a vertex on the flat point.
-  const auto [nu, nv] = grid_dims_for(triangles, size, size, 2, 2);
-  return make_grid_surface(nu, nv, [&](double u, double v) {
-    const double x = (2.0 * u - 1.0) * half, y = (2.0 * v - 1.0) * half;
-    return Vec3(x, y, rise * x * (x * x - 3.0 * y * y) / (half * half * half));
+  return height_field_on_square(triangles, size, [&](double x, double y) {
+    return rise * x * (x * x - 3.0 * y * y) / (half * half * half);
   });
 }
 
 TriMesh make_cone(int triangles, double size, double rise) {
   require(size > 0.0, "cone: the size must be positive");
   const double half = size / 2.0;
-  // Even counts put a vertex on the apex.
-  const auto [nu, nv] = grid_dims_for(triangles, size, size, 2, 2);
-  return make_grid_surface(nu, nv, [&](double u, double v) {
-    const double x = (2.0 * u - 1.0) * half, y = (2.0 * v - 1.0) * half;
-    return Vec3(x, y, rise * (1.0 - std::hypot(x, y) / half));
-  });
+  return height_field_on_square(triangles, size,
+                                [&](double x, double y) { return rise * (1.0 - std::hypot(x, y) / half); });
 }
 
 TriMesh make_torus(int triangles, double major_radius, double minor_radius) {
