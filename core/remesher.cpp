@@ -73,6 +73,10 @@ constexpr int kMendEarlyAt = 3;
 constexpr int kTinyClusterShare = 20;
 // Panel rounds after the first valid attempt with collapsed panels (coverage_round), at most.
 constexpr int kCoverageRounds = 8;
+// A corner below this (degrees) in a finished valid result starts the needle rounds
+// (start_needle_rounds), which last this many panel rounds at most.
+constexpr double kNeedleRoundsDeg = 1.0;
+constexpr int kNeedleRounds = 16;
 // "3 handles", "1 boundary loop".
 std::string count_of(int count, const std::string& thing) {
   return std::to_string(count) + " " + thing + (count == 1 ? "" : "s");
@@ -181,6 +185,7 @@ void Remesher::start_lloyd() {
   best_.reset();
   polish_ = PolishState{};
   coverage_ = CoverageState{};
+  needles_ = NeedleState{};
   settled_.clear();
   settled_planes_.clear();
   panel_rounds_done_ = 0;
@@ -219,7 +224,7 @@ std::unique_ptr<PanelAttempt> Remesher::make_attempt() {
   PanelAttemptOptions options;
   options.layout.diameter = metric_.diameter();
   options.layout.tolerance = check_tolerance_;
-  options.layout.min_corner_angle_deg = params_.min_corner_angle_deg;
+  options.layout.min_corner_angle_deg = min_corner_angle();
   options.layout.glass = params_.glass;
   options.master_angle_deg = params_.coplanar_angle_deg;
   options.fixed = settled_;
@@ -279,12 +284,15 @@ void Remesher::panel_round() {
   // After a valid fallback (coverage_round), also at most kCoverageRounds rounds from the first.
   const bool last = invalid == 0 || panel_rounds_done_ >= std::max(1, params_.panel_rounds) ||
                     panel_rounds_done_ - best_round_ >= kPanelPatience ||
-                    (coverage_.fallback && panel_rounds_done_ - coverage_.first_round >= kCoverageRounds);
+                    (coverage_.fallback && panel_rounds_done_ - coverage_.first_round >= kCoverageRounds) ||
+                    (needles_.fallback && panel_rounds_done_ - needles_.first_round >= kNeedleRounds);
   if (last) {
     if (!best_ || invalid <= best_->num_invalid()) std::swap(best_, attempt);
     keep_alternate(std::move(attempt));
     if (best_->num_invalid() > 0 && coverage_.fallback)  // valid, with collapsed panels
       finish_with_fallback();
+    else if (best_->num_invalid() > 0 && needles_.fallback)  // valid, with a needle corner
+      finish_with_needle_fallback();
     else
       finish_panels();
     return;
@@ -316,6 +324,11 @@ bool Remesher::coverage_round(std::unique_ptr<PanelAttempt>& attempt) {
 }
 
 void Remesher::finish_with_fallback() {
+  // In the needle rounds: the needle's fallback has no collapsed panel, so it is the better.
+  if (needles_.fallback) {
+    finish_with_needle_fallback();
+    return;
+  }
   best_ = std::move(coverage_.fallback);
   alternates_.clear();
   finish_panels();
@@ -361,7 +374,7 @@ void Remesher::fix_panels(const PanelAttempt& attempt, bool coverage) {
   if (stalled) stalled_rounds_ = 0;
   // Acute corners do not move with the boundary term (it shifts faces, not where clusters
   // meet), so with a minimum angle a stall splits at up to three of them at once.
-  const int splits = stalled ? (params_.min_corner_angle_deg > 0.0 ? 3 : 1) : 0;
+  const int splits = stalled ? (min_corner_angle() > 0.0 ? 3 : 1) : 0;
   std::vector<std::pair<int, int>> requests = split_requests(mesh_, topology_, attempt, splits, held);
   requests.erase(std::remove_if(requests.begin(), requests.end(), [&](const auto& r) { return is_held(r.first); }),
                  requests.end());
@@ -541,12 +554,55 @@ void Remesher::optimize_planes() {
   layout.widen_needle_corners(kNeedleCornerDeg, held_clusters());
   // Last: it pins planes to points, which the fit above would undo.
   if (params_.single_point_nodes) layout.make_single_point_nodes();
-  panels_ = layout.to_panel_mesh(faces_);
+  if (start_needle_rounds()) return;
+  finish_layout();
+}
+
+void Remesher::finish_layout() {
+  panels_ = best_->layout().to_panel_mesh(faces_);
   progress_.iteration = 1;
   progress_.invalid_panels = panels_.num_invalid();
   progress_.stage = Stage::Done;
   record_planes();
   cut_glass();
+}
+
+double Remesher::min_corner_angle() const {
+  return needles_.fallback ? kNeedleRoundsDeg : params_.min_corner_angle_deg;
+}
+
+// A finished valid result with a corner below kNeedleRoundsDeg: a needle no fabricator can
+// cut, which the paper's checks pass and the finish's widening (widen_needle_corners) did not
+// remove (mostly at nodes of three planes, where no pairing moves it). When the designer set
+// no minimum corner angle, the result is kept as it is as the fallback and up to
+// kNeedleRounds more panel rounds judge such corners as panel problems (as --min-angle does
+// in every round, at a cost in every solve); a valid attempt then is finished as usual, or
+// the fallback ends the run. Not with locked panels or edits (their clusters stay as they
+// are), nor once the rounds' budget is spent.
+bool Remesher::start_needle_rounds() {
+  if (needles_.tried || params_.min_corner_angle_deg > 0.0 || !locks_.empty() || next_edit_ > 0 || base_edits_ > 0)
+    return false;
+  if (panel_rounds_done_ >= std::max(1, params_.panel_rounds)) return false;
+  PanelLayout& layout = best_->layout();
+  if (!(layout.smallest_corner_deg() < kNeedleRoundsDeg)) return false;
+  needles_.tried = true;
+  needles_.first_round = panel_rounds_done_;
+  // The next rounds work on the needles: judged as problems for fix_panels, then put back.
+  layout.judge_min_corner_angle(kNeedleRoundsDeg);
+  stalled_rounds_ = 0;
+  fix_panels(*best_);
+  layout.judge_min_corner_angle(0.0);
+  needles_.fallback = std::move(best_);  // best_ empty: the rounds start a new best
+  progress_ = Progress{Stage::Panels, panel_rounds_done_, std::max(1, params_.panel_rounds), progress_.energy, 0};
+  return true;
+}
+
+void Remesher::finish_with_needle_fallback() {
+  best_ = std::move(needles_.fallback);
+  alternates_.clear();
+  clustering_ = best_->clustering();
+  progress_.energy = clustering_.energy * faces_.area_to_world();
+  finish_layout();
 }
 
 Progress Remesher::step() {

@@ -184,6 +184,10 @@ class Remesher {
   void finish_panels();
   // finish_panels with the coverage rounds' fallback (valid, fewest collapsed) as the best.
   void finish_with_fallback();
+  bool start_needle_rounds();  // true: the panel rounds go on
+  void finish_with_needle_fallback();
+  void finish_layout();       // best_'s finished layout -> panels_, Done
+  double min_corner_angle() const;  // the designer's, or kNeedleRoundsDeg in the needle rounds
   void end_panels();  // the panel phase's result: the best attempt's panels, then Optimize or Done
   // At the end of a panel phase: keeps the better of this solve and the earlier ones, and
   // starts a retry from a new seeding when panels are invalid and retries are left (true).
@@ -275,6 +279,17 @@ class Remesher {
     int first_round = 0;  // the round of the first fallback
   };
   CoverageState coverage_;
+  // Needle rounds: a finished valid result with a corner below kNeedleRoundsDeg (and no
+  // minimum corner angle of the designer's) is kept as the fallback, and up to kNeedleRounds
+  // more panel rounds treat such corners as panel problems; the first valid attempt then
+  // ends the run (finished as usual), or the fallback does, as it was. Once per panel phase.
+  // Reset with best_.
+  struct NeedleState {
+    std::unique_ptr<PanelAttempt> fallback;
+    int first_round = 0;
+    bool tried = false;
+  };
+  NeedleState needles_;
   // The best solve before the current retry (retry_if_invalid), with what the report says
   // about it. Empty outside a retry.
   struct EarlierSolve {

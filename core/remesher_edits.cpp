@@ -83,6 +83,7 @@ void Remesher::restore(const EditState& s) {
   best_.reset();
   polish_ = PolishState{};
   coverage_ = CoverageState{};
+  needles_ = NeedleState{};
 }
 
 void Remesher::clear_edits() {
@@ -134,6 +135,7 @@ void Remesher::start_edited_panels(const std::vector<int>& edited) {
   best_.reset();
   polish_ = PolishState{};
   coverage_ = CoverageState{};
+  needles_ = NeedleState{};
   panel_rounds_done_ = 0;
   stalled_rounds_ = 0;
   progress_ = Progress{Stage::Panels, 0, std::max(1, params_.panel_rounds), progress_.energy, 0};

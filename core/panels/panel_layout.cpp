@@ -431,6 +431,12 @@ void PanelLayout::judge_orientation() {
   for (size_t c = 0; c < polygons_.size(); ++c) build_panel(static_cast<int>(c));
 }
 
+void PanelLayout::judge_min_corner_angle(double deg) {
+  if (options_.min_corner_angle_deg == deg) return;
+  options_.min_corner_angle_deg = deg;
+  for (size_t c = 0; c < polygons_.size(); ++c) build_panel(static_cast<int>(c));
+}
+
 void PanelLayout::set_planes(std::vector<Plane> planes) {
   std::vector<Plane> old = std::move(planes_.planes);
   planes_.planes = std::move(planes);

@@ -173,6 +173,12 @@ class PanelLayout {
   // round that looks valid (Remesher::panel_round: a misoriented panel then keeps the rounds
   // going) and for the attempts it finishes with (Remesher::finish_panels), before the mend.
   void judge_orientation();
+  // From now on a corner below `deg` (0: none) is a panel problem (acute_corner), as
+  // LayoutOptions::min_corner_angle_deg makes it; rebuilds every panel. Setting it back
+  // gives exactly the panels before.
+  void judge_min_corner_angle(double deg);
+  // The smallest corner (degrees, in its panel's plane) of every panel (360 when none).
+  double smallest_corner_deg() const;
 
   PanelMesh to_panel_mesh(const FaceData& frame) const;
 

@@ -60,6 +60,12 @@ double PanelLayout::smallest_corner_near_group(int g, const std::vector<int>& cl
   });
 }
 
+double PanelLayout::smallest_corner_deg() const {
+  std::vector<int> all(polygons_.size());
+  for (size_t c = 0; c < all.size(); ++c) all[c] = static_cast<int>(c);
+  return smallest_corner(all);
+}
+
 double PanelLayout::smallest_corner(const std::vector<int>& clusters) const {
   return smallest_corner_among(clusters, [](const PanelPolygon&, size_t, size_t, size_t) { return true; });
 }
