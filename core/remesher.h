@@ -184,10 +184,13 @@ class Remesher {
   void finish_panels();
   // finish_panels with the coverage rounds' fallback (valid, fewest collapsed) as the best.
   void finish_with_fallback();
-  bool start_needle_rounds();  // true: the panel rounds go on
+  // True: the panel rounds go on, working on the needles (remesher.cpp).
+  bool start_needle_rounds();
   void finish_with_needle_fallback();
-  void finish_layout();       // best_'s finished layout -> panels_, Done
-  double min_corner_angle() const;  // the designer's, or kNeedleRoundsDeg in the needle rounds
+  // best_'s finished layout -> panels_, Done.
+  void finish_layout();
+  // The designer's minimum corner angle, or kNeedleRoundsDeg in the needle rounds.
+  double min_corner_angle() const;
   void end_panels();  // the panel phase's result: the best attempt's panels, then Optimize or Done
   // At the end of a panel phase: keeps the better of this solve and the earlier ones, and
   // starts a retry from a new seeding when panels are invalid and retries are left (true).

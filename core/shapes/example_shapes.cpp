@@ -7,9 +7,8 @@
 namespace ff {
 
 std::vector<std::string> example_shape_names() {
-  return {"saddle", "barrel_vault", "groin_vault",    "helicoid",     "freeform_roof",
-          "torus",  "bump",         "roof_with_hole", "twisted_strip", "cone",
-          "monkey_saddle"};
+  return {"saddle", "barrel_vault",   "groin_vault",   "helicoid", "freeform_roof", "torus",
+          "bump",   "roof_with_hole", "twisted_strip", "cone",     "monkey_saddle"};
 }
 
 TriMesh make_example_shape(const std::string& name, int triangles) {

@@ -1,6 +1,7 @@
 // The hard cases that are one map of a rectangle (make_grid_surface): saddle, helicoid,
-// twisted strip, bump, torus, barrel vault, monkey saddle, cone (smooth but at its apex). The parameter directions are picked
-// so d/du x d/dv, hence the face normals, points up (outward for the torus).
+// twisted strip, bump, torus, barrel vault, monkey saddle, cone (smooth but at its apex).
+// The parameter directions are picked so d/du x d/dv, hence the face normals, points up
+// (outward for the torus).
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -70,17 +71,15 @@ TriMesh make_twisted_strip(int triangles, double length, double width, double tw
 
 TriMesh make_bump(int triangles, double size, double height, double sigma) {
   require(size > 0.0 && sigma > 0.0, "bump: size and sigma must be positive");
-  return height_field_on_square(triangles, size, [&](double x, double y) {
-    return height * std::exp(-(x * x + y * y) / (2.0 * sigma * sigma));
-  });
+  return height_field_on_square(
+      triangles, size, [&](double x, double y) { return height * std::exp(-(x * x + y * y) / (2.0 * sigma * sigma)); });
 }
 
 TriMesh make_monkey_saddle(int triangles, double size, double rise) {
   require(size > 0.0, "monkey saddle: the size must be positive");
   const double half = size / 2.0;
-  return height_field_on_square(triangles, size, [&](double x, double y) {
-    return rise * x * (x * x - 3.0 * y * y) / (half * half * half);
-  });
+  return height_field_on_square(
+      triangles, size, [&](double x, double y) { return rise * x * (x * x - 3.0 * y * y) / (half * half * half); });
 }
 
 TriMesh make_cone(int triangles, double size, double rise) {
