@@ -563,6 +563,7 @@ void Remesher::finish_layout() {
   progress_.iteration = 1;
   progress_.invalid_panels = panels_.num_invalid();
   progress_.stage = Stage::Done;
+  progress_.needle_rounds = false;
   record_planes();
   cut_glass();
 }
@@ -594,6 +595,7 @@ bool Remesher::start_needle_rounds() {
   layout.judge_min_corner_angle(0.0);
   needles_.fallback = std::move(best_);  // best_ empty: the rounds start a new best
   progress_ = Progress{Stage::Panels, panel_rounds_done_, std::max(1, params_.panel_rounds), progress_.energy, 0};
+  progress_.needle_rounds = true;
   return true;
 }
 

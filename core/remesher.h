@@ -106,6 +106,9 @@ struct Progress {
   int of = 0;         // the stage's iteration limit
   double energy = 0.0;
   int invalid_panels = 0;
+  // In the needle rounds (Remesher::start_needle_rounds): a valid result had a corner below
+  // 1 degree, so the stage went back from Optimize to Panels on purpose.
+  bool needle_rounds = false;
 };
 
 class Remesher {

@@ -161,6 +161,9 @@ export interface Progress extends Status {
   panelRounds: number; // panel rounds done so far
   attempt: number; // the solve in progress: 1, or 2.. for a retry from a new seeding (RemeshParams.retries)
   attempts: number; // 1 + RemeshParams.retries: the most there can be
+  // Panel rounds again after a valid result with a corner below 1 degree (the needle rounds):
+  // the stage went back from Optimize to Panels on purpose.
+  needleRounds: boolean;
 }
 
 export interface Problems extends Status {

@@ -191,6 +191,7 @@ std::string Session::step() {
     j.value("energy", p.energy).value("invalidPanels", p.invalid_panels);
     j.value("done", remesher_->done()).value("panelRounds", remesher_->panel_rounds_done());
     j.value("attempt", remesher_->retries_done() + 1).value("attempts", remesher_->params().retries + 1);
+    j.value("needleRounds", p.needle_rounds);
     j.end_object();
     return j.str();
   });

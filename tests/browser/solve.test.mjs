@@ -435,6 +435,30 @@ test('a solve whose panels stay invalid retries from a new seeding and says so',
   });
 });
 
+// bunny.off into 77 panels at seed 3 is valid after 4 rounds with a corner of 0.3 degrees: the
+// needle rounds take the stage back from Optimize to Panels (tests/core/test_needle_rounds.cpp).
+// The progress line says why, so the bar going back does not look like a fault.
+test('the needle rounds are named in the progress line', async () => {
+  await suite.withPage(suite.url, async (page) => {
+    await solveAfter(page, () => page.getByLabel('Open mesh').setInputFiles(join(sharedMeshes, 'bunny.off')), 120_000);
+    await page.evaluate(() => {
+      window.statusTexts = [];
+      const status = document.querySelector('[role="status"]');
+      new MutationObserver(() => window.statusTexts.push(status.textContent ?? '')).observe(status, { childList: true, characterData: true, subtree: true });
+    });
+    await page.locator('#solver-options > summary').click(); // "Metric and solver" opens
+    await page.getByLabel('Seed', { exact: true }).fill('3');
+    await setPanels(page, 77);
+    assert.equal(await solveAfter(page, () => remesh(page), 120_000), 77);
+    assert.equal(await statusText(page), 'Done: 77 panels');
+    const texts = await page.evaluate(() => window.statusTexts);
+    const needle = texts.findIndex((text) => /^Solving: panels \d+ of \d+ · valid, but a corner is below 1°: more rounds to widen it · /.test(text));
+    assert.ok(needle >= 0, `the needle rounds are named in the progress line (${texts.length} texts)`);
+    assert.ok(!texts.slice(0, needle).some((text) => text.includes('below 1°')), 'not before');
+    await screenshot(page, 'bunny-77-after-needle-rounds');
+  });
+});
+
 // The Yas Island grid shell into 4 panels stays invalid through every retry (seed 1): the
 // status line says what is wrong with the panels shown red, that a cluster found no panel, and
 // what to try; the Invalid row counts the same, with the problems in its hint.

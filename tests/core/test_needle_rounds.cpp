@@ -44,6 +44,23 @@ TEST(NeedleRounds, ANeedleThePaperPassesIsWorkedAway) {
   ASSERT_LT(smallest_corner(*spent), 1.0) << "the draw should end with a needle when no round is left";
   EXPECT_EQ(spent->panel_rounds_done(), 4);
 
+  // Step by step: the stage goes back from Optimize to Panels, and the progress says why.
+  RemeshParams p;
+  p.panels = 77;
+  p.seed = 3;
+  Remesher stepped(test::load_clean("bunny.off"), p);
+  bool optimized = false, needle_rounds = false;
+  while (!stepped.done()) {
+    const Progress progress = stepped.step();
+    optimized = optimized || progress.stage == Stage::Optimize;
+    if (progress.stage == Stage::Panels) {
+      EXPECT_EQ(progress.needle_rounds, optimized) << "needle rounds are the rounds after an Optimize";
+      needle_rounds = needle_rounds || progress.needle_rounds;
+    }
+  }
+  EXPECT_TRUE(needle_rounds);
+  EXPECT_FALSE(stepped.progress().needle_rounds) << "done: no longer in the needle rounds";
+
   const auto r = solved("bunny.off", 77, 3);
   EXPECT_TRUE(test::valid_panels(*r, 77, 0.08));
   EXPECT_GE(smallest_corner(*r), 1.0);

@@ -192,6 +192,31 @@ test('a retry from a new seeding is in the progress and the report', () => {
   s.delete();
 });
 
+// A valid result with a corner below 1 degree gets needle rounds: the stage goes back from
+// Optimize to Panels, and the progress says why (the page's status line names it). The draw
+// of tests/core/test_needle_rounds.cpp: bunny.off at 77 panels, seed 3.
+test('the needle rounds are in the progress', () => {
+  const s = session();
+  const file = 'bunny.off';
+  assert.equal(json(s.loadMesh(file, readFileSync(path.join(meshes, file)))).ok, true);
+  assert.equal(json(s.setParams(JSON.stringify({ panels: 77, seed: 3 }))).ok, true);
+  let last;
+  let optimized = false;
+  let needleRounds = 0;
+  for (let i = 0; i < 10000 && !(last && last.done); ++i) {
+    last = json(s.step());
+    assert.equal(last.ok, true, last.message);
+    assert.equal(typeof last.needleRounds, 'boolean');
+    optimized ||= last.stage === 'Optimize';
+    if (last.stage === 'Panels') assert.equal(last.needleRounds, optimized, `step ${i}: needle rounds come after an Optimize`);
+    if (last.needleRounds) needleRounds += 1;
+  }
+  assert.ok(needleRounds > 0, 'the draw has a needle round');
+  assert.equal(last.needleRounds, false);
+  assert.equal(json(s.reportJson()).status, 'valid');
+  s.delete();
+});
+
 // The defaults flatfacet.d.ts documents are the ones the core applies (its retries comment
 // said "default 2" through two changes of the default): a solve with only `panels` set
 // reports its limits, and they must match the comments.

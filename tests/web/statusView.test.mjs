@@ -2,7 +2,7 @@
 // `npm run test:web`).
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
-import { retryNote, solvedSummary } from '../../build/web-tests/statusView.js';
+import { needleNote, retryNote, solvedSummary } from '../../build/web-tests/statusView.js';
 
 // A retry from a new seeding (RemeshParams.retries) starts the stages over: the progress line
 // says why, so the bar going back does not look like a fault. The first solve says nothing.
@@ -10,6 +10,13 @@ test('a retry is named in the progress line, the first solve is not', () => {
   assert.equal(retryNote({ attempt: 1, attempts: 3 }), '');
   assert.equal(retryNote({ attempt: 2, attempts: 3 }), ' · panels stayed invalid: new seeding, try 2 of 3');
   assert.equal(retryNote({ attempt: 3, attempts: 3 }), ' · panels stayed invalid: new seeding, try 3 of 3');
+});
+
+// The needle rounds (a valid result with a corner below 1 degree) take the stage back from
+// Optimize to Panels: the progress line says why.
+test('the needle rounds are named in the progress line, other rounds are not', () => {
+  assert.equal(needleNote({ needleRounds: false }), '');
+  assert.equal(needleNote({ needleRounds: true }), ' · valid, but a corner is below 1°: more rounds to widen it');
 });
 
 test('the summary ends with "Done: N panels", the problems in front', () => {

@@ -27,6 +27,12 @@ export function retryNote(progress: Pick<Progress, 'attempt' | 'attempts'>): str
   return progress.attempt > 1 ? ` · panels stayed invalid: new seeding, try ${progress.attempt} of ${progress.attempts}` : '';
 }
 
+// The needle rounds take the stage back from Optimize to Panels (Progress.needleRounds): say
+// why, as for a retry.
+export function needleNote(progress: Pick<Progress, 'needleRounds'>): string {
+  return progress.needleRounds ? ' · valid, but a corner is below 1°: more rounds to widen it' : '';
+}
+
 export type StatusTone = 'info' | 'done' | 'error';
 
 export class StatusView {
@@ -48,13 +54,16 @@ export class StatusView {
 
   private pendingProgress: { progress: Progress; elapsedSeconds: number } | null = null;
   private shownAttempt = 1;
+  private shownNeedleRounds = false;
 
   // Steps can come faster than frames: draw the latest progress once per frame. A new attempt
-  // (a retry) is drawn at once: a small retry can be over within a frame, and the line must
-  // still have said so (screen readers announce each change of role="status").
+  // (a retry) and the start of the needle rounds are drawn at once: either can be over within
+  // a frame, and the line must still have said so (screen readers announce each change of
+  // role="status").
   showProgress(progress: Progress, elapsedSeconds: number): void {
-    if (progress.attempt !== this.shownAttempt) {
+    if (progress.attempt !== this.shownAttempt || progress.needleRounds !== this.shownNeedleRounds) {
       this.shownAttempt = progress.attempt;
+      this.shownNeedleRounds = progress.needleRounds;
       this.drawProgress(progress, elapsedSeconds);
       return;
     }
@@ -80,7 +89,7 @@ export class StatusView {
     this.progress.value = progress.done ? 1 : value;
     this.label.textContent = progress.done ? 'done' : `${progress.stage} ${progress.iteration}/${progress.of}`;
     const invalid = progress.invalidPanels > 0 ? ` · ${progress.invalidPanels} invalid` : '';
-    this.show(`Solving: ${progress.stage.toLowerCase()} ${progress.iteration} of ${progress.of}${invalid}${retryNote(progress)} · ${elapsedSeconds.toFixed(1)} s`);
+    this.show(`Solving: ${progress.stage.toLowerCase()} ${progress.iteration} of ${progress.of}${invalid}${needleNote(progress)}${retryNote(progress)} · ${elapsedSeconds.toFixed(1)} s`);
   }
 
   resetProgress(label = 'idle'): void {
