@@ -45,6 +45,7 @@ test('a page default that differs from the core is caught', () => {
     seed: 2,
     lloydIterations: DEFAULT_PARAMS.lloydIterations - 1,
     panelRounds: DEFAULT_PARAMS.panelRounds - 1,
+    retries: DEFAULT_PARAMS.retries - 1, // the report's retries_limit
     seeding: 'random',
     teleport: !DEFAULT_PARAMS.teleport,
     singlePointNodes: !DEFAULT_PARAMS.singlePointNodes,

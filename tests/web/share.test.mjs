@@ -153,6 +153,7 @@ test('form values are validated the same way, and map onto the wasm parameters',
     weights: { euclidean: 1, l2: 0.5, l21: 2, boundary: 1 },
     lloydIterations: 20,
     panelRounds: 100,
+    retries: 8,
     seeding: 'farthest',
     teleport: true,
     singlePointNodes: false,
@@ -175,6 +176,20 @@ test('the coplanar angle: validated, defaulted for old links, sent to the core, 
   const link = hashToState(stateToHash({ mesh: { kind: 'example', id: 'saddle' }, params: wide.value, history: [] }));
   assert.equal(link.ok, true, link.message);
   assert.equal(link.value.params.coplanarAngleDeg, 2.5);
+});
+
+test('the retries: validated, defaulted for old links, sent to the core, carried by a link', () => {
+  const few = validateParams({ ...DEFAULT_PARAMS, retries: 2 });
+  assert.equal(few.ok, true, few.message);
+  assert.equal(toRemeshParams(few.value).retries, 2);
+  const { retries: _r, ...old } = DEFAULT_PARAMS;
+  assert.deepEqual(validateParams(old), { ok: true, value: DEFAULT_PARAMS }, "a link made before the control: the core's 8");
+  assert.equal(DEFAULT_PARAMS.retries, 8);
+  for (const bad of [11, -1, 2.5, Number.NaN, '3']) assert.match(validateParams({ ...DEFAULT_PARAMS, retries: bad }).message, /Retries/, String(bad));
+  assert.equal(validateParams({ ...DEFAULT_PARAMS, retries: 0 }).ok, true, '0: never retry');
+  const link = hashToState(stateToHash({ mesh: { kind: 'example', id: 'saddle' }, params: few.value, history: [] }));
+  assert.equal(link.ok, true, link.message);
+  assert.equal(link.value.params.retries, 2);
 });
 
 test('a corrupted link is refused: the zlib checksum is checked', () => {

@@ -34,6 +34,8 @@ export interface DesignParams {
   weights: MetricWeights;
   lloydIterations: number;
   panelRounds: number;
+  // Solves from a new seeding when panels end invalid (the fewest invalid kept).
+  retries: number;
   seeding: Seeding;
   teleport: boolean;
   singlePointNodes: boolean;
@@ -58,6 +60,7 @@ export const DEFAULT_PARAMS: DesignParams = {
   weights: { euclidean: 1, l2: 1, l21: 1, boundary: 1 },
   lloydIterations: 20,
   panelRounds: 100,
+  retries: 8,
   seeding: 'farthest',
   teleport: true,
   singlePointNodes: false,
@@ -82,6 +85,7 @@ export const LIMITS = {
   weight: { min: 0, max: 1000 },
   lloydIterations: { min: 0, max: 200 },
   panelRounds: { min: 1, max: 100 },
+  retries: { min: 0, max: 10 }, // as the core (RemeshParams::kMaxRetries) and the CLI's --retries
   minCornerAngleDeg: { min: 0, max: 60 }, // as the core and the CLI's --min-angle
   coplanarAngleDeg: { min: 0, max: 10 }, // as the core and the CLI's --coplanar-angle
   // Fabrication (fabricationParams.ts), in the designer's units; inside the core's 0..1e9.
@@ -230,7 +234,7 @@ function checkBoolean(value: unknown, what: string): Checked<boolean> {
 // Unknown fields are rejected too: a link from a newer version must not half-apply.
 export function validateParams(value: unknown, where = 'parameters'): Checked<DesignParams> {
   if (!isRecord(value)) return failure(`${where} must be an object`);
-  const known = new Set(['panels', 'seed', 'weights', 'lloydIterations', 'panelRounds', 'seeding', 'teleport', 'singlePointNodes', 'optimizePlanes', 'densityExpression', 'anisotropy', 'paint', 'glass', 'minCornerAngleDeg', 'coplanarAngleDeg', 'edits']);
+  const known = new Set(['panels', 'seed', 'weights', 'lloydIterations', 'panelRounds', 'retries', 'seeding', 'teleport', 'singlePointNodes', 'optimizePlanes', 'densityExpression', 'anisotropy', 'paint', 'glass', 'minCornerAngleDeg', 'coplanarAngleDeg', 'edits']);
   for (const key of Object.keys(value)) {
     if (!known.has(key)) return failure(`${where}: unknown field "${key.slice(0, 40)}"`);
   }
@@ -242,6 +246,10 @@ export function validateParams(value: unknown, where = 'parameters'): Checked<De
   if (!lloyd.ok) return lloyd;
   const rounds = checkInteger(value.panelRounds, 'Panel rounds', LIMITS.panelRounds);
   if (!rounds.ok) return rounds;
+  // Absent in links and sessions made before the control came to the page: the core's default
+  // (which the page then sent nothing for), so they solve as they did.
+  const retries = value.retries === undefined ? { ok: true as const, value: DEFAULT_PARAMS.retries } : checkInteger(value.retries, 'Retries', LIMITS.retries);
+  if (!retries.ok) return retries;
   if (value.seeding !== 'farthest' && value.seeding !== 'random') return failure('Seeding must be "farthest" or "random"');
   const flags: Record<'teleport' | 'singlePointNodes' | 'optimizePlanes', boolean> = { teleport: true, singlePointNodes: false, optimizePlanes: true };
   for (const flag of ['teleport', 'singlePointNodes', 'optimizePlanes'] as const) {
@@ -287,6 +295,7 @@ export function validateParams(value: unknown, where = 'parameters'): Checked<De
       weights,
       lloydIterations: lloyd.value,
       panelRounds: rounds.value,
+      retries: retries.value,
       seeding: value.seeding,
       ...flags,
       densityExpression: expression.value,
@@ -319,6 +328,7 @@ export function toRemeshParams(params: DesignParams): RemeshParams & { edits?: P
     weights: { ...params.weights },
     lloydIterations: params.lloydIterations,
     panelRounds: params.panelRounds,
+    retries: params.retries,
     seeding: params.seeding,
     teleport: params.teleport,
     singlePointNodes: params.singlePointNodes,

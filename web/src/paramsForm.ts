@@ -14,6 +14,7 @@ export class ParamsForm {
   private readonly boundary = element('w-boundary', HTMLInputElement);
   private readonly lloydIterations = element('lloyd-iterations', HTMLInputElement);
   private readonly panelRounds = element('panel-rounds', HTMLInputElement);
+  private readonly retries = element('retries', HTMLInputElement);
   private readonly seeding = element('seeding', HTMLSelectElement);
   private readonly teleport = element('teleport', HTMLInputElement);
   private readonly singlePointNodes = element('single-point-nodes', HTMLInputElement);
@@ -49,6 +50,7 @@ export class ParamsForm {
       [this.boundary, LIMITS.weight],
       [this.lloydIterations, LIMITS.lloydIterations],
       [this.panelRounds, LIMITS.panelRounds],
+      [this.retries, LIMITS.retries],
       [this.minCornerAngle, LIMITS.minCornerAngleDeg],
       [this.coplanarAngle, LIMITS.coplanarAngleDeg],
     ];
@@ -56,6 +58,7 @@ export class ParamsForm {
     this.seed.title = `a whole number from ${LIMITS.seed.min} to 2^53 − 1 (${LIMITS.seed.max}); the same seed gives the same panels`;
     this.lloydIterations.title = `clustering iterations, ${LIMITS.lloydIterations.min} to ${LIMITS.lloydIterations.max}`;
     this.panelRounds.title = `panel rounds, ${LIMITS.panelRounds.min} to ${LIMITS.panelRounds.max}`;
+    this.retries.title = `${LIMITS.retries.min} to ${LIMITS.retries.max}: solves from a new seeding when panels end invalid (the fewest invalid kept; a valid solve never retries)`;
     this.panels.title = `${LIMITS.panels.min} to ${LIMITS.panels.max.toLocaleString('en')} panels (at most one per triangle)`;
     this.stretch.min = String(LIMITS.stretch.min);
     this.stretch.max = String(LIMITS.stretch.max);
@@ -89,7 +92,7 @@ export class ParamsForm {
   }
 
   private get numberInputs(): HTMLInputElement[] {
-    return [this.panels, this.seed, this.euclidean, this.l2, this.l21, this.boundary, this.lloydIterations, this.panelRounds, this.minCornerAngle, this.coplanarAngle];
+    return [this.panels, this.seed, this.euclidean, this.l2, this.l21, this.boundary, this.lloydIterations, this.panelRounds, this.retries, this.minCornerAngle, this.coplanarAngle];
   }
 
   // Calls back on committed changes (enter, blur, spinner, checkbox), not on every keystroke.
@@ -109,6 +112,7 @@ export class ParamsForm {
       weights: { euclidean: number(this.euclidean), l2: number(this.l2), l21: number(this.l21), boundary: number(this.boundary) },
       lloydIterations: number(this.lloydIterations),
       panelRounds: number(this.panelRounds),
+      retries: number(this.retries),
       seeding: this.seeding.value,
       teleport: this.teleport.checked,
       singlePointNodes: this.singlePointNodes.checked,
@@ -136,6 +140,7 @@ export class ParamsForm {
       ['boundary', this.boundary],
       ['Lloyd', this.lloydIterations],
       ['Panel rounds', this.panelRounds],
+      ['Retries', this.retries],
       ['Density expression', this.expression],
       ['Stretch', this.stretch],
       ['Min corner angle', this.minCornerAngle],
@@ -157,6 +162,7 @@ export class ParamsForm {
     this.boundary.value = String(params.weights.boundary);
     this.lloydIterations.value = String(params.lloydIterations);
     this.panelRounds.value = String(params.panelRounds);
+    this.retries.value = String(params.retries);
     this.seeding.value = params.seeding;
     this.teleport.checked = params.teleport;
     this.singlePointNodes.checked = params.singlePointNodes;
