@@ -493,6 +493,7 @@ void Remesher::start_over() {
 
 void Remesher::end_panels() {
   if (retry_if_invalid()) return;
+  progress_.needle_rounds = false;  // the needle rounds' own ends finish through finish_layout
   progress_.energy = clustering_.energy * faces_.area_to_world();
   panels_ = best_->layout().to_panel_mesh(faces_);
   progress_.invalid_panels = panels_.num_invalid();

@@ -162,7 +162,8 @@ export interface Progress extends Status {
   attempt: number; // the solve in progress: 1, or 2.. for a retry from a new seeding (RemeshParams.retries)
   attempts: number; // 1 + RemeshParams.retries: the most there can be
   // Panel rounds again after a valid result with a corner below 1 degree (the needle rounds):
-  // the stage went back from Optimize to Panels on purpose.
+  // the stage went back from Optimize to Panels on purpose. invalidPanels then counts needle
+  // corners too. False in every other stage (from the Optimize after them on).
   needleRounds: boolean;
 }
 

@@ -56,6 +56,9 @@ TEST(NeedleRounds, ANeedleThePaperPassesIsWorkedAway) {
     if (progress.stage == Stage::Panels) {
       EXPECT_EQ(progress.needle_rounds, optimized) << "needle rounds are the rounds after an Optimize";
       needle_rounds = needle_rounds || progress.needle_rounds;
+    } else {
+      EXPECT_FALSE(progress.needle_rounds) << "only panel rounds are needle rounds, not stage "
+                                           << static_cast<int>(progress.stage);
     }
   }
   EXPECT_TRUE(needle_rounds);

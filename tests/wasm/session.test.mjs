@@ -209,6 +209,7 @@ test('the needle rounds are in the progress', () => {
     assert.equal(typeof last.needleRounds, 'boolean');
     optimized ||= last.stage === 'Optimize';
     if (last.stage === 'Panels') assert.equal(last.needleRounds, optimized, `step ${i}: needle rounds come after an Optimize`);
+    else assert.equal(last.needleRounds, false, `step ${i}: only panel rounds are needle rounds (${last.stage})`);
     if (last.needleRounds) needleRounds += 1;
   }
   assert.ok(needleRounds > 0, 'the draw has a needle round');

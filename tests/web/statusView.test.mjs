@@ -2,7 +2,7 @@
 // `npm run test:web`).
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
-import { needleNote, retryNote, solvedSummary } from '../../build/web-tests/statusView.js';
+import { invalidNote, needleNote, retryNote, solvedSummary } from '../../build/web-tests/statusView.js';
 
 // A retry from a new seeding (RemeshParams.retries) starts the stages over: the progress line
 // says why, so the bar going back does not look like a fault. The first solve says nothing.
@@ -17,6 +17,18 @@ test('a retry is named in the progress line, the first solve is not', () => {
 test('the needle rounds are named in the progress line, other rounds are not', () => {
   assert.equal(needleNote({ needleRounds: false }), '');
   assert.equal(needleNote({ needleRounds: true }), ' · valid, but a corner is below 1°: more rounds to widen it');
+});
+
+// Outside the needle rounds the count says "invalid"; in them a valid result is kept and a
+// needle corner counts as a problem, so the count is what is left to mend (never "invalid"
+// beside "valid").
+test('the invalid count is worded as panels to mend in the needle rounds', () => {
+  assert.equal(invalidNote({ invalidPanels: 0, needleRounds: false }), '');
+  assert.equal(invalidNote({ invalidPanels: 0, needleRounds: true }), '');
+  assert.equal(invalidNote({ invalidPanels: 3, needleRounds: false }), ' · 3 invalid');
+  assert.equal(invalidNote({ invalidPanels: 1, needleRounds: true }), ' · 1 panel to mend (a corner below 1° counts)');
+  assert.equal(invalidNote({ invalidPanels: 2, needleRounds: true }), ' · 2 panels to mend (a corner below 1° counts)');
+  assert.ok(!(needleNote({ needleRounds: true }) + invalidNote({ invalidPanels: 2, needleRounds: true })).includes('invalid'));
 });
 
 test('the summary ends with "Done: N panels", the problems in front', () => {

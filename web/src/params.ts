@@ -246,8 +246,9 @@ export function validateParams(value: unknown, where = 'parameters'): Checked<De
   if (!lloyd.ok) return lloyd;
   const rounds = checkInteger(value.panelRounds, 'Panel rounds', LIMITS.panelRounds);
   if (!rounds.ok) return rounds;
-  // Absent in links and sessions made before the control came to the page: the core's default
-  // (which the page then sent nothing for), so they solve as they did.
+  // Absent in links and sessions made before the control came to the page: the core's current
+  // default, which such a page let the core apply (sending nothing). Links from before the
+  // core's default became 8 solve with 8 now, as they would have on the old page today.
   const retries = value.retries === undefined ? { ok: true as const, value: DEFAULT_PARAMS.retries } : checkInteger(value.retries, 'Retries', LIMITS.retries);
   if (!retries.ok) return retries;
   if (value.seeding !== 'farthest' && value.seeding !== 'random') return failure('Seeding must be "farthest" or "random"');

@@ -33,6 +33,16 @@ export function needleNote(progress: Pick<Progress, 'needleRounds'>): string {
   return progress.needleRounds ? ' · valid, but a corner is below 1°: more rounds to widen it' : '';
 }
 
+// The panels the rounds are still working on. In the needle rounds a corner below 1° counts as
+// a problem, and the valid result is kept whatever they do: "invalid" beside "valid" would
+// contradict the note above, so the count is worded as what is left to mend.
+export function invalidNote(progress: Pick<Progress, 'invalidPanels' | 'needleRounds'>): string {
+  const count = progress.invalidPanels;
+  if (count <= 0) return '';
+  if (!progress.needleRounds) return ` · ${count} invalid`;
+  return ` · ${count} ${count === 1 ? 'panel' : 'panels'} to mend (a corner below 1° counts)`;
+}
+
 export type StatusTone = 'info' | 'done' | 'error';
 
 export class StatusView {
@@ -88,8 +98,7 @@ export class StatusView {
     if (stageIndex < weights.length) value += weights[stageIndex]! * within;
     this.progress.value = progress.done ? 1 : value;
     this.label.textContent = progress.done ? 'done' : `${progress.stage} ${progress.iteration}/${progress.of}`;
-    const invalid = progress.invalidPanels > 0 ? ` · ${progress.invalidPanels} invalid` : '';
-    this.show(`Solving: ${progress.stage.toLowerCase()} ${progress.iteration} of ${progress.of}${invalid}${needleNote(progress)}${retryNote(progress)} · ${elapsedSeconds.toFixed(1)} s`);
+    this.show(`Solving: ${progress.stage.toLowerCase()} ${progress.iteration} of ${progress.of}${needleNote(progress)}${invalidNote(progress)}${retryNote(progress)} · ${elapsedSeconds.toFixed(1)} s`);
   }
 
   resetProgress(label = 'idle'): void {
