@@ -57,8 +57,8 @@ TEST(NeedleRounds, ANeedleThePaperPassesIsWorkedAway) {
       EXPECT_EQ(progress.needle_rounds, optimized) << "needle rounds are the rounds after an Optimize";
       needle_rounds = needle_rounds || progress.needle_rounds;
     } else {
-      EXPECT_FALSE(progress.needle_rounds) << "only panel rounds are needle rounds, not stage "
-                                           << static_cast<int>(progress.stage);
+      EXPECT_FALSE(progress.needle_rounds)
+          << "only panel rounds are needle rounds, not stage " << static_cast<int>(progress.stage);
     }
   }
   EXPECT_TRUE(needle_rounds);
