@@ -493,7 +493,6 @@ void Remesher::start_over() {
 
 void Remesher::end_panels() {
   if (retry_if_invalid()) return;
-  progress_.needle_rounds = false;  // the needle rounds' own ends finish through finish_layout
   progress_.energy = clustering_.energy * faces_.area_to_world();
   panels_ = best_->layout().to_panel_mesh(faces_);
   progress_.invalid_panels = panels_.num_invalid();
@@ -564,7 +563,6 @@ void Remesher::finish_layout() {
   progress_.iteration = 1;
   progress_.invalid_panels = panels_.num_invalid();
   progress_.stage = Stage::Done;
-  progress_.needle_rounds = false;
   record_planes();
   cut_glass();
 }
@@ -596,7 +594,6 @@ bool Remesher::start_needle_rounds() {
   layout.judge_min_corner_angle(0.0);
   needles_.fallback = std::move(best_);  // best_ empty: the rounds start a new best
   progress_ = Progress{Stage::Panels, panel_rounds_done_, std::max(1, params_.panel_rounds), progress_.energy, 0};
-  progress_.needle_rounds = true;
   return true;
 }
 
@@ -655,6 +652,8 @@ Progress Remesher::step() {
       apply_pending_edits();
       break;
   }
+  // Derived, not kept: panel rounds while a valid result waits as the needles' fallback.
+  progress_.needle_rounds = progress_.stage == Stage::Panels && needles_.fallback != nullptr;
   return progress_;
 }
 
