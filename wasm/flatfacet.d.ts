@@ -191,10 +191,10 @@ export interface Session {
   // After a load, and again whenever the panel count outgrows the mesh: from the mesh as
   // loaded (kept in the session), subdivide `subdivide` levels (0..4; Loop on triangles, else
   // Catmull-Clark on the file's polygons), then refine to the resolution `panels` need (below
-  // 20 triangles per panel; else the mesh stays as loaded), or to `edgeLength` when > 0 (0:
-  // automatic). MeshInfo JSON, its `prepared` saying what was done and why; a Status on
-  // failure (the mesh kept).
-  prepare(panels: number, subdivide: number, edgeLength: number): string;
+  // `refineBelow` triangles per panel, 20..50, 0: the core's 30; below 20 always; else the mesh
+  // stays as loaded), or to `edgeLength` when > 0 (0: automatic). MeshInfo JSON, its
+  // `prepared` saying what was done and why; a Status on failure (the mesh kept).
+  prepare(panels: number, subdivide: number, edgeLength: number, refineBelow: number): string;
   // Carried from the mesh before the last prepare() to the mesh now: values per vertex
   // (closest point, barycentric), triangle ids (nearest centroid). Empty arrays when refused
   // (wrong length, an id out of range, no mesh before). Carry right after prepare(): the next

@@ -47,10 +47,12 @@ class Session {
   // After a load (wasm/session_prepare.cpp), and again whenever the panel count outgrows the
   // mesh: from the mesh as loaded, subdivide it as a control mesh `subdivide` levels (Loop on
   // triangles, else Catmull-Clark on the file's polygons), then remesh it to the resolution
-  // `panels` need (core/prepare/prepare.h: refined below 20 triangles per panel, else
-  // untouched bit for bit), or to `edge_length` when > 0 (0: automatic). MeshInfo JSON whose
+  // `panels` need (core/prepare/prepare.h: refined below 30 triangles per panel, else
+  // untouched bit for bit), or to `edge_length` when > 0 (0: automatic). refine_below: the
+  // triangles per panel below which it refines (PrepareOptions::refine_triangles_per_panel, 20
+  // to 50; 0: the core's, 30; 20 for designs saved before the 30). MeshInfo JSON whose
   // "prepared" lists what was done and why; on failure a Status and the mesh stays as it was.
-  std::string prepare(int panels, int subdivide, double edge_length);
+  std::string prepare(int panels, int subdivide, double edge_length, int refine_below);
   // What was attached to the mesh before the last prepare(), carried to the mesh now
   // (core/prepare/mesh_transfer.h): per-vertex values by closest point, triangle ids by
   // nearest centroid. Empty when refused (wrong length, an id out of range, no mesh before).

@@ -20,6 +20,12 @@ size_t at(int i) { return static_cast<size_t>(i); }
 double equilateral_area(double L) { return std::sqrt(3.0) / 4.0 * L * L; }
 double edge_for_area(double a) { return std::sqrt(a / (std::sqrt(3.0) / 4.0)); }
 
+// The triangle count a refinement for `panels` aims at: about kPrepareTargetTrianglesPerPanel
+// each, within kPrepareMaxTriangles (dense: dense_factor, which the count is divided by).
+double refined_count(int panels, double dense) {
+  return std::min<double>(static_cast<double>(panels) * kPrepareTargetTrianglesPerPanel, kPrepareMaxTriangles / dense);
+}
+
 // Per-vertex values for the remeshing's sizing: as given, or per face averaged onto the
 // vertices by area.
 std::vector<double> sizing_density(const TriMesh& mesh, const std::vector<double>& density, bool per_vertex) {
@@ -90,6 +96,12 @@ PreparedSurface prepare_surface(const TriMesh& mesh, int panels, const std::vect
     throw InputError("an edge length needs preparation on (it remeshes to that length)");
   if (options.distance_samples < 0) throw InputError("the number of distance samples must not be negative");
   if (options.huge_triangles < 0) throw InputError("the triangle count that makes a mesh huge must not be negative");
+  if (options.refine_triangles_per_panel < kPrepareMinTrianglesPerPanel ||
+      options.refine_triangles_per_panel > kPrepareTargetTrianglesPerPanel)
+    throw InputError("the triangles per panel below which a mesh is refined must be " +
+                     std::to_string(kPrepareMinTrianglesPerPanel) + " to " +
+                     std::to_string(kPrepareTargetTrianglesPerPanel) + ", not " +
+                     std::to_string(options.refine_triangles_per_panel));
 
   PreparedSurface out;
   PrepareReport& r = out.report;
@@ -115,7 +127,7 @@ PreparedSurface prepare_surface(const TriMesh& mesh, int panels, const std::vect
   std::string reason;
   if (options.mode == PrepareMode::Off) {
     return keep("preparation off: the " + with_commas(faces) + " triangles are used as they are (" +
-                short_number(per_panel) + " per panel; 20 to 100 work best)");
+                short_number(per_panel) + " per panel; 30 to 100 work best)");
   }
   if (explicit_length) {
     target = options.edge_length;
@@ -127,18 +139,18 @@ PreparedSurface prepare_surface(const TriMesh& mesh, int panels, const std::vect
       throw InputError("an edge length of " + short_number(target) + " gives about " + with_commas(std::llround(estimate)) +
                        " triangles, fewer than the " + panels_text + " asked for");
     reason = " triangles each, at the edge length asked for";
-  } else if (dense_per_panel < kPrepareMinTrianglesPerPanel) {
+  } else if (dense_per_panel < kPrepareMinTrianglesPerPanel ||
+             (dense_per_panel < options.refine_triangles_per_panel &&
+              static_cast<double>(panels) * dense * kPrepareTargetTrianglesPerPanel <= kPrepareMaxTriangles)) {
     if (static_cast<double>(panels) * dense * kPrepareMinTrianglesPerPanel > kPrepareMaxTriangles)
       throw InputError(panels_text + " need at least " + with_commas(std::llround(panels * dense * kPrepareMinTrianglesPerPanel)) +
                        " triangles (20 per panel), more than the " + with_commas(kPrepareMaxTriangles) +
                        " the preparation makes; ask for at most " +
                        with_commas(static_cast<long long>(kPrepareMaxTriangles / (dense * kPrepareMinTrianglesPerPanel))) +
                        " panels");
-    const double wanted = std::min<double>(static_cast<double>(panels) * kPrepareTargetTrianglesPerPanel,
-                                           kPrepareMaxTriangles / dense);
-    target = edge_for_area(area / wanted);
-    reason = " triangles each (" + short_number(dense_per_panel) + (dense > 1.0 ? " where the density is highest" : "") +
-             " before; 20 to 100 work best)";
+    target = edge_for_area(area / refined_count(panels, dense));
+    reason = " triangles each (" + short_number(dense_per_panel) +
+             (dense > 1.0 ? " where the density is highest" : "") + " before; 30 to 100 work best)";
   } else if (per_panel > kPrepareHugeTrianglesPerPanel && faces > options.huge_triangles) {
     target = edge_for_area(area / (static_cast<double>(panels) * kPrepareCoarsenTrianglesPerPanel));
     reason = " triangles each instead of " + with_commas(std::llround(per_panel)) +

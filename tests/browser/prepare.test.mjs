@@ -141,7 +141,7 @@ test('preparing again carries the paint (by position) and the panel edits to the
     await page.getByRole('button', { name: 'Copy share link' }).click();
     await page.waitForFunction(() => location.hash.startsWith('#v1='));
     const shared = readLink(await page.evaluate(() => location.href));
-    assert.deepEqual(shared.json.mesh.prepare, { panels: 20, subdivide: 0 }, 'the new preparation is recorded');
+    assert.deepEqual(shared.json.mesh.prepare, { panels: 20, subdivide: 0, refineBelow: 30 }, 'the new preparation is recorded, with its rule');
     assert.equal(shared.json.history.length, 0, 'solved afresh on the prepared mesh');
     const carried = shared.paint;
     assert.equal(carried.length, vertices, 'one level per vertex of the prepared mesh');
@@ -179,7 +179,7 @@ test('a Target edge length prepares the mesh to it, travels in the link, and a b
     assert.ok(triangles > 1000, `${triangles} triangles at edge 0.5 on a 12 x 12 square`);
     await page.getByRole('button', { name: 'Copy share link' }).click();
     await page.waitForFunction((before) => location.hash.startsWith('#v1=') && location.href !== before, link);
-    assert.deepEqual(readLink(await page.evaluate(() => location.href)).json.mesh.prepare, { panels: 4, subdivide: 0, edgeLength: 0.5 });
+    assert.deepEqual(readLink(await page.evaluate(() => location.href)).json.mesh.prepare, { panels: 4, subdivide: 0, edgeLength: 0.5, refineBelow: 30 });
     // Raising the count keeps the designer's resolution: no new preparation.
     await setPanels(page, 8);
     assert.equal(await solveAfter(page, () => remesh(page)), 8);

@@ -73,10 +73,12 @@ test('a mesh opened with "Open mesh" (OFF, then GLB) or dropped on the view is s
     assert.equal(obj.name, 'bumpy-panels.obj');
     assert.equal(parseObj(obj.text).faces.length, 60);
 
+    // 512 triangles: 16 panels get 32 each, which the preparation keeps as they are (below 30
+    // per panel it would refine the mesh, and the details would name the refined count).
     const glb = wavyGridGlb(16);
-    await setPanels(page, 24);
+    await setPanels(page, 16);
     const open = () => page.getByLabel('Open mesh').setInputFiles({ name: 'canopy.glb', mimeType: 'model/gltf-binary', buffer: glb.bytes });
-    assert.equal(await solveAfter(page, open), 24);
+    assert.equal(await solveAfter(page, open), 16);
     assert.match(await page.locator('#mesh-details').textContent(), new RegExp(`${glb.triangles} triangles`));
     const canopy = parseObj((await download(page, 'Export OBJ')).text);
     // The node's scale (10) and translation (5, 0, -3) reach the core: x spans 5..15 (panel
@@ -97,7 +99,7 @@ test('a mesh opened with "Open mesh" (OFF, then GLB) or dropped on the view is s
       }
     }
     const off = `OFF\n${lines.length} ${faces.length} 0\n${lines.join('\n')}\n${faces.join('\n')}\n`;
-    await setPanels(page, 12);
+    await setPanels(page, 9); // 32 triangles each: kept as they are (as the GLB above)
     const drop = async () => {
       const dataTransfer = await page.evaluateHandle((text) => {
         const transfer = new DataTransfer();
@@ -107,7 +109,7 @@ test('a mesh opened with "Open mesh" (OFF, then GLB) or dropped on the view is s
       await page.dispatchEvent('#viewport', 'dragover', { dataTransfer });
       await page.dispatchEvent('#viewport', 'drop', { dataTransfer });
     };
-    assert.equal(await solveAfter(page, drop), 12);
+    assert.equal(await solveAfter(page, drop), 9);
     assert.match(await page.locator('#mesh-title').textContent(), /dome\.off/);
     assert.match(await page.locator('#mesh-details').textContent(), /288 triangles/);
     assert.equal(await page.locator('#drop-hint').isHidden(), true, 'the drop hint goes away');
@@ -440,7 +442,11 @@ test('a solve whose panels stay invalid retries from a new seeding and says so',
 // The progress line says why, so the bar going back does not look like a fault.
 test('the needle rounds are named in the progress line', async () => {
   await suite.withPage(suite.url, async (page) => {
+    // Opened at 77 panels, so the preparation keeps its 6,966 triangles (90 per panel).
+    await waitForDone(page);
+    await setPanels(page, 77);
     await solveAfter(page, () => page.getByLabel('Open mesh').setInputFiles(join(sharedMeshes, 'bunny.off')), 120_000);
+    assert.match(await page.locator('#mesh-details').textContent(), /^6,966 triangles/);
     await page.evaluate(() => {
       window.statusTexts = [];
       const status = document.querySelector('[role="status"]');

@@ -5,24 +5,31 @@
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
 import { DEFAULT_PARAMS } from '../../build/web-tests/params.js';
-import { carriedParams, editFaces, HUGE_TRIANGLES, levelsOf, MIN_TRIANGLES_PER_PANEL, preparationNeeded, refusedPreparation, remapEdits, samePrepare } from '../../build/web-tests/preparation.js';
-import { checkPrepare, hashToState, stateToHash } from '../../build/web-tests/share.js';
+import { carriedParams, editFaces, HUGE_TRIANGLES, levelsOf, MAX_PAGE_REFINE_TRIANGLES, MIN_TRIANGLES_PER_PANEL, preparationNeeded, REFINE_TRIANGLES_PER_PANEL, refusedPreparation, remapEdits, samePrepare } from '../../build/web-tests/preparation.js';
+import { checkPrepare, hashToState, LEGACY_REFINE_BELOW, stateToHash } from '../../build/web-tests/share.js';
 
 const opened = { panels: 150, subdivide: 0 }; // Yas Island as opened: 1,952 triangles refined
 
-test('raising the panel count past 20 triangles per panel prepares the mesh again; lowering it does not', () => {
+test('raising the panel count past 30 triangles per panel prepares the mesh again; lowering it does not', () => {
   const triangles = 7400; // about 50 per panel for 150
   const auto = { subdivide: 0 };
   assert.equal(preparationNeeded(opened, triangles, 150, auto), null, 'the count it was prepared for');
-  assert.equal(preparationNeeded(opened, triangles, Math.floor(triangles / MIN_TRIANGLES_PER_PANEL), auto), null, 'exactly 20 per panel serves');
-  assert.deepEqual(preparationNeeded(opened, triangles, Math.floor(triangles / MIN_TRIANGLES_PER_PANEL) + 1, auto), { panels: 371, subdivide: 0 });
-  assert.deepEqual(preparationNeeded(opened, triangles, 1200, auto), { panels: 1200, subdivide: 0 });
+  assert.equal(preparationNeeded(opened, triangles, Math.floor(triangles / REFINE_TRIANGLES_PER_PANEL), auto), null, 'exactly 30 per panel serves');
+  assert.deepEqual(preparationNeeded(opened, triangles, Math.floor(triangles / REFINE_TRIANGLES_PER_PANEL) + 1, auto), { panels: 247, subdivide: 0, refineBelow: 30 });
+  assert.deepEqual(preparationNeeded(opened, triangles, Math.floor(triangles / MIN_TRIANGLES_PER_PANEL) + 1, auto), { panels: 371, subdivide: 0, refineBelow: 30 });
+  assert.deepEqual(preparationNeeded(opened, triangles, 1200, auto), { panels: 1200, subdivide: 0, refineBelow: 30 });
   assert.equal(preparationNeeded(opened, triangles, 10, auto), null, 'lowering keeps the finer mesh');
   // ...unless the mesh is huge for the count (the core would coarsen it).
   assert.equal(preparationNeeded(opened, HUGE_TRIANGLES, 100, auto), null);
-  assert.deepEqual(preparationNeeded(opened, HUGE_TRIANGLES + 1000, 100, auto), { panels: 100, subdivide: 0 });
+  assert.deepEqual(preparationNeeded(opened, HUGE_TRIANGLES + 1000, 100, auto), { panels: 100, subdivide: 0, refineBelow: 30 });
+  // From 20 to 30 per panel only where 50 per panel are within the page's refinement cap:
+  // beyond it the mesh serves as it is (below 20 it would be refused by name, next test).
+  const big = 200_000;
+  assert.equal(MAX_PAGE_REFINE_TRIANGLES, 400_000);
+  assert.equal(preparationNeeded(opened, big, 10_000, auto), null, '20 per panel: 500,000 wanted, past the cap');
+  assert.deepEqual(preparationNeeded(opened, big, 8000, auto), { panels: 8000, subdivide: 0, refineBelow: 30 }, '25 per panel: 400,000 wanted');
   // A design from a link made before preparations were recorded: the same rule.
-  assert.deepEqual(preparationNeeded(undefined, 1952, 150, auto), { panels: 150, subdivide: 0 });
+  assert.deepEqual(preparationNeeded(undefined, 1952, 150, auto), { panels: 150, subdivide: 0, refineBelow: 30 });
 });
 
 test('a refinement beyond what a browser tab should make is refused by name; an edge length opts in', () => {
@@ -33,11 +40,11 @@ test('a refinement beyond what a browser tab should make is refused by name; an 
 });
 
 test('a new subdivision or edge length prepares again; with an edge length the count does not', () => {
-  assert.deepEqual(preparationNeeded(opened, 7400, 150, { subdivide: 1 }), { panels: 150, subdivide: 1 });
-  assert.deepEqual(preparationNeeded(opened, 7400, 150, { subdivide: 0, edgeLength: 0.5 }), { panels: 150, subdivide: 0, edgeLength: 0.5 });
+  assert.deepEqual(preparationNeeded(opened, 7400, 150, { subdivide: 1 }), { panels: 150, subdivide: 1, refineBelow: 30 });
+  assert.deepEqual(preparationNeeded(opened, 7400, 150, { subdivide: 0, edgeLength: 0.5 }), { panels: 150, subdivide: 0, edgeLength: 0.5, refineBelow: 30 });
   const fixed = { panels: 150, subdivide: 0, edgeLength: 0.5 };
   assert.equal(preparationNeeded(fixed, 7400, 5000, { subdivide: 0, edgeLength: 0.5 }), null, 'the designer\'s resolution stays');
-  assert.deepEqual(preparationNeeded(fixed, 7400, 150, { subdivide: 0 }), { panels: 150, subdivide: 0 }, 'back to automatic');
+  assert.deepEqual(preparationNeeded(fixed, 7400, 150, { subdivide: 0 }), { panels: 150, subdivide: 0, refineBelow: 30 }, 'back to automatic');
   assert.ok(samePrepare(fixed, { ...fixed }));
   assert.ok(!samePrepare(fixed, opened));
   assert.ok(samePrepare(undefined, undefined));
@@ -81,4 +88,28 @@ test('a preparation with an edge length travels in links and is checked strictly
     assert.deepEqual(checkPrepare({ panels: 150, subdivide: 2, edgeLength: 1e-6 }, where).value, { panels: 150, subdivide: 2, edgeLength: 1e-6 });
     assert.match(checkPrepare({ panels: 150, subdivide: 0, edge: 1 }, where).message, /unknown field "edge"/);
   }
+});
+
+// Designs saved before the rule went from 20 to 30 triangles per panel carry no refineBelow:
+// they are prepared with 20 again (worker.ts), so their edits and paint keep naming the
+// triangles and vertices of their mesh; new preparations record 30.
+test('the refinement rule a preparation was made with travels in links and is checked strictly', () => {
+  const where = 'in the link';
+  const made = preparationNeeded(undefined, 4288, 160, { subdivide: 0 });
+  assert.deepEqual(made, { panels: 160, subdivide: 0, refineBelow: REFINE_TRIANGLES_PER_PANEL });
+  const state = { mesh: { kind: 'example', id: 'inspired_mesh', prepare: made }, params: { ...DEFAULT_PARAMS, panels: 160 }, history: [] };
+  const decoded = hashToState(stateToHash(state));
+  assert.ok(decoded.ok, decoded.message);
+  assert.deepEqual(decoded.value.mesh.prepare, made);
+  const older = hashToState(stateToHash({ ...state, mesh: { kind: 'example', id: 'inspired_mesh', prepare: { panels: 160, subdivide: 0 } } }));
+  assert.ok(older.ok, older.message);
+  assert.ok(!('refineBelow' in older.value.mesh.prepare), 'a design saved before keeps no rule, so the worker uses 20');
+  assert.equal(LEGACY_REFINE_BELOW, 20);
+  assert.ok(!samePrepare(older.value.mesh.prepare, made), 'the two rules are different preparations');
+  for (const bad of [19, 51, 25.5, '30', null]) {
+    const checked = checkPrepare({ panels: 150, subdivide: 0, refineBelow: bad }, where);
+    assert.equal(checked.ok, false, `refineBelow ${String(bad)}`);
+    assert.equal(checked.message, "in the link: the mesh's preparation must refine below 20 to 50 triangles per panel");
+  }
+  assert.deepEqual(checkPrepare({ panels: 150, subdivide: 1, edgeLength: 2, refineBelow: 20 }, where).value, { panels: 150, subdivide: 1, edgeLength: 2, refineBelow: 20 });
 });

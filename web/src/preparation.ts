@@ -1,7 +1,7 @@
 // When the page prepares the design's mesh again (issue 7), and how what the designer attached
 // to the mesh before comes along. The mesh is prepared for the panel count it was opened with;
-// a count it cannot serve (core/prepare/prepare.h: fewer than 20 triangles per panel, or a huge
-// mesh with more than 1000 per panel) or a new subdivision / target edge length prepares it
+// a count it cannot serve (core/prepare/prepare.h: fewer than 20 triangles per panel; fewer than
+// 30 where 50 per panel is within reach; or a huge mesh with more than 1000 per panel) or a new subdivision / target edge length prepares it
 // again from the mesh as loaded, recorded in the design (DesignMesh.prepare) so links and
 // reloads make the same mesh. Painted density (per vertex) and panel edits (per triangle) are
 // carried over by the worker (Session.transferField / remapFaces); this module rebuilds the
@@ -13,6 +13,7 @@ import type { MeshPrepare } from './share.ts';
 
 // The core's policy numbers (core/prepare/prepare.h, kPrepare*).
 export const MIN_TRIANGLES_PER_PANEL = 20;
+export const REFINE_TRIANGLES_PER_PANEL = 30;
 export const HUGE_TRIANGLES_PER_PANEL = 1000;
 export const HUGE_TRIANGLES = 400_000;
 
@@ -25,11 +26,12 @@ export interface PrepareChoice {
 
 export function samePrepare(a: MeshPrepare | undefined, b: MeshPrepare | undefined): boolean {
   if (!a || !b) return a === b;
-  return a.panels === b.panels && a.subdivide === b.subdivide && a.edgeLength === b.edgeLength;
+  return a.panels === b.panels && a.subdivide === b.subdivide && a.edgeLength === b.edgeLength && a.refineBelow === b.refineBelow;
 }
 
+// A new preparation records the rule it is made with (share.ts, MeshPrepare.refineBelow).
 export function prepareOf(panels: number, choice: PrepareChoice): MeshPrepare {
-  return { panels, subdivide: choice.subdivide, ...(choice.edgeLength !== undefined ? { edgeLength: choice.edgeLength } : {}) };
+  return { panels, subdivide: choice.subdivide, ...(choice.edgeLength !== undefined ? { edgeLength: choice.edgeLength } : {}), refineBelow: REFINE_TRIANGLES_PER_PANEL };
 }
 
 // The preparation the design's mesh needs to make `panels` panels, or null when the mesh on
@@ -44,6 +46,9 @@ export function preparationNeeded(current: MeshPrepare | undefined, triangles: n
   if (choice.edgeLength !== undefined) return null;
   const perPanel = triangles / panels;
   if (perPanel < MIN_TRIANGLES_PER_PANEL) return next;
+  // From 20 to 30 the mesh serves, but valid panels come far more often on a finer one: refined
+  // when 50 per panel are within the page's cap (the core's own cap, 2 million, is higher).
+  if (perPanel < REFINE_TRIANGLES_PER_PANEL && panels * TARGET_TRIANGLES_PER_PANEL <= MAX_PAGE_REFINE_TRIANGLES) return next;
   if (perPanel > HUGE_TRIANGLES_PER_PANEL && triangles > HUGE_TRIANGLES) return next;
   return null;
 }

@@ -41,7 +41,14 @@ export interface MeshPrepare {
   panels: number;
   subdivide: number;
   edgeLength?: number;
+  // The triangles per panel below which the mesh was refined for `panels` (Session.prepare):
+  // recorded since the core's rule went from 20 to 30. A design without it (saved before)
+  // keeps the rule it was made with, LEGACY_REFINE_BELOW, so its edits and paint still name
+  // the triangles and vertices of its mesh.
+  refineBelow?: number;
 }
+export const LEGACY_REFINE_BELOW = 20;
+export const MAX_REFINE_BELOW = 50;
 export const MAX_SUBDIVIDE = 4;
 // A target edge length, in mesh units: positive, finite, and not absurd (the core refuses one
 // that would make more than its triangle cap with its own message).
@@ -59,13 +66,15 @@ export function isEdgeLength(value: unknown): value is number {
 export function checkPrepare(value: unknown, where: string): Checked<MeshPrepare | undefined> {
   if (value === undefined) return { ok: true, value: undefined };
   if (!isRecord(value)) return failure(`${where}: the mesh's preparation is not an object`);
-  for (const key of Object.keys(value)) if (key !== 'panels' && key !== 'subdivide' && key !== 'edgeLength') return failure(`${where}: the mesh's preparation has an unknown field "${key.slice(0, 40)}"`);
-  const { panels, subdivide, edgeLength } = value;
+  for (const key of Object.keys(value)) if (key !== 'panels' && key !== 'subdivide' && key !== 'edgeLength' && key !== 'refineBelow') return failure(`${where}: the mesh's preparation has an unknown field "${key.slice(0, 40)}"`);
+  const { panels, subdivide, edgeLength, refineBelow } = value;
   if (typeof panels !== 'number' || !Number.isInteger(panels) || panels < LIMITS.panels.min || panels > LIMITS.panels.max) return failure(`${where}: the mesh's preparation names no valid panel count`);
   if (typeof subdivide !== 'number' || !Number.isInteger(subdivide) || subdivide < 0 || subdivide > MAX_SUBDIVIDE) return failure(`${where}: subdivision levels must be 0 to ${MAX_SUBDIVIDE}`);
-  if (edgeLength === undefined) return { ok: true, value: { panels, subdivide } };
-  if (!isEdgeLength(edgeLength)) return failure(`${where}: the target edge length must be a positive number up to ${MAX_EDGE_LENGTH}`);
-  return { ok: true, value: { panels, subdivide, edgeLength } };
+  if (edgeLength !== undefined && !isEdgeLength(edgeLength)) return failure(`${where}: the target edge length must be a positive number up to ${MAX_EDGE_LENGTH}`);
+  if (refineBelow !== undefined && (typeof refineBelow !== 'number' || !Number.isInteger(refineBelow) || refineBelow < LEGACY_REFINE_BELOW || refineBelow > MAX_REFINE_BELOW)) {
+    return failure(`${where}: the mesh's preparation must refine below ${LEGACY_REFINE_BELOW} to ${MAX_REFINE_BELOW} triangles per panel`);
+  }
+  return { ok: true, value: { panels, subdivide, ...(edgeLength !== undefined ? { edgeLength } : {}), ...(refineBelow !== undefined ? { refineBelow } : {}) } };
 }
 
 // The mesh of a link or the stored session with the preparation and repair its record
@@ -82,7 +91,7 @@ export function withMeshOptions(mesh: DesignMesh, meshValue: Record<string, unkn
 export function prepareJson(mesh: DesignMesh): { prepare?: MeshPrepare } {
   const p = mesh.prepare;
   if (!p) return {};
-  return { prepare: { panels: p.panels, subdivide: p.subdivide, ...(p.edgeLength !== undefined ? { edgeLength: p.edgeLength } : {}) } };
+  return { prepare: { panels: p.panels, subdivide: p.subdivide, ...(p.edgeLength !== undefined ? { edgeLength: p.edgeLength } : {}), ...(p.refineBelow !== undefined ? { refineBelow: p.refineBelow } : {}) } };
 }
 
 export interface DesignState {
