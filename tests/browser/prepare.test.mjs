@@ -113,7 +113,7 @@ function fieldKey(field) {
 // A flat 12 x 12 grid of quads (288 triangles) and a link that opens it for 4 panels, painted
 // (level 32, 4x density, where x > 6) with one lock edit.
 const n = 12;
-function gridLink({ edits = [{ op: 'lock', face: 0 }] } = {}) {
+function gridLink({ edits = [{ op: 'lock', face: 0 }], panels = 4 } = {}) {
   const lines = [];
   for (let j = 0; j <= n; j++) for (let i = 0; i <= n; i++) lines.push(`v ${i} ${j} 0`);
   for (let j = 0; j < n; j++) for (let i = 0; i < n; i++) {
@@ -123,9 +123,29 @@ function gridLink({ edits = [{ op: 'lock', face: 0 }] } = {}) {
   const bytes = new TextEncoder().encode(`${lines.join('\n')}\n`);
   const paint = Int8Array.from({ length: (n + 1) * (n + 1) }, (_, k) => (k % (n + 1) > 6 ? 32 : 0));
   const key = fieldKey(paint);
-  const params = { ...quick, panels: 4, paint: key, edits };
-  return { paint, link: linkOf(suite.url, { v: 1, mesh: { file: 'grid.obj', size: bytes.length, prepare: { panels: 4, subdivide: 0 } }, params, history: [], paint: [{ key, vertices: paint.length }] }, bytes, paint) };
+  const params = { ...quick, panels, paint: key, edits };
+  return { paint, link: linkOf(suite.url, { v: 1, mesh: { file: 'grid.obj', size: bytes.length, prepare: { panels, subdivide: 0 } }, params, history: [], paint: [{ key, vertices: paint.length }] }, bytes, paint) };
 }
+
+// A link saved before the rule went from 20 to 30 triangles per panel (its preparation has no
+// refineBelow) at 12 panels: 24 per panel, which the rule now would refine. It opens on its own
+// 288 triangles, so its lock and paint name the triangle and vertices they were made on, and
+// solving again does not prepare it anew.
+test('a design saved before the 30 keeps its mesh between 20 and 30 triangles per panel', () => {
+  const { paint, link } = gridLink({ panels: 12 });
+  return suite.withPage(link, async (page) => {
+    assert.equal(await waitForDone(page), 12);
+    assert.match(await page.locator('#mesh-details').textContent(), /^288 triangles/);
+    assert.equal(await solveAfter(page, () => remesh(page)), 12);
+    assert.match(await page.locator('#mesh-details').textContent(), /^288 triangles/);
+    await page.getByRole('button', { name: 'Copy share link' }).click();
+    await page.waitForFunction(() => location.hash.startsWith('#v1='));
+    const shared = readLink(await page.evaluate(() => location.href));
+    assert.deepEqual(shared.json.mesh.prepare, { panels: 12, subdivide: 0 }, 'still the rule before');
+    assert.deepEqual(shared.json.params.edits, [{ op: 'lock', face: 0 }]);
+    assert.deepEqual([...shared.paint], [...paint]);
+  });
+});
 
 test('preparing again carries the paint (by position) and the panel edits to the new mesh', () => {
   const { paint, link } = gridLink();

@@ -5,7 +5,7 @@
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
 import { DEFAULT_PARAMS } from '../../build/web-tests/params.js';
-import { carriedParams, editFaces, HUGE_TRIANGLES, levelsOf, MAX_PAGE_REFINE_TRIANGLES, MIN_TRIANGLES_PER_PANEL, preparationNeeded, REFINE_TRIANGLES_PER_PANEL, refusedPreparation, remapEdits, samePrepare } from '../../build/web-tests/preparation.js';
+import { carriedParams, editFaces, HUGE_TRIANGLES, levelsOf, MAX_PAGE_REFINE_TRIANGLES, MIN_TRIANGLES_PER_PANEL, preparationNeeded, prepareOf, REFINE_TRIANGLES_PER_PANEL, refusedPreparation, remapEdits, samePrepare } from '../../build/web-tests/preparation.js';
 import { checkPrepare, hashToState, LEGACY_REFINE_BELOW, stateToHash } from '../../build/web-tests/share.js';
 
 const opened = { panels: 150, subdivide: 0 }; // Yas Island as opened: 1,952 triangles refined
@@ -14,8 +14,8 @@ test('raising the panel count past 30 triangles per panel prepares the mesh agai
   const triangles = 7400; // about 50 per panel for 150
   const auto = { subdivide: 0 };
   assert.equal(preparationNeeded(opened, triangles, 150, auto), null, 'the count it was prepared for');
-  assert.equal(preparationNeeded(opened, triangles, Math.floor(triangles / REFINE_TRIANGLES_PER_PANEL), auto), null, 'exactly 30 per panel serves');
-  assert.deepEqual(preparationNeeded(opened, triangles, Math.floor(triangles / REFINE_TRIANGLES_PER_PANEL) + 1, auto), { panels: 247, subdivide: 0, refineBelow: 30 });
+  assert.equal(preparationNeeded(opened, 7500, 7500 / REFINE_TRIANGLES_PER_PANEL, auto), null, 'exactly 30 per panel serves');
+  assert.deepEqual(preparationNeeded(opened, 7500, 7500 / REFINE_TRIANGLES_PER_PANEL + 1, auto), { panels: 251, subdivide: 0, refineBelow: 30 });
   assert.deepEqual(preparationNeeded(opened, triangles, Math.floor(triangles / MIN_TRIANGLES_PER_PANEL) + 1, auto), { panels: 371, subdivide: 0, refineBelow: 30 });
   assert.deepEqual(preparationNeeded(opened, triangles, 1200, auto), { panels: 1200, subdivide: 0, refineBelow: 30 });
   assert.equal(preparationNeeded(opened, triangles, 10, auto), null, 'lowering keeps the finer mesh');
@@ -28,6 +28,17 @@ test('raising the panel count past 30 triangles per panel prepares the mesh agai
   assert.equal(MAX_PAGE_REFINE_TRIANGLES, 400_000);
   assert.equal(preparationNeeded(opened, big, 10_000, auto), null, '20 per panel: 500,000 wanted, past the cap');
   assert.deepEqual(preparationNeeded(opened, big, 8000, auto), { panels: 8000, subdivide: 0, refineBelow: 30 }, '25 per panel: 400,000 wanted');
+  // A design saved before the 30 (no refineBelow) keeps its mesh at the count it was saved
+  // with, and at lower ones (its edits and paint name that mesh); a higher count gets the rule now.
+  const older = { panels: 12, subdivide: 0 };
+  assert.equal(preparationNeeded(older, 288, 12, auto), null, '24 per panel, the count it was saved with');
+  assert.equal(preparationNeeded(older, 288, 10, auto), null);
+  assert.deepEqual(preparationNeeded(older, 288, 13, auto), { panels: 13, subdivide: 0, refineBelow: 30 });
+  // The same preparation again is never needed (the same mesh).
+  const made = { panels: 300, subdivide: 0, refineBelow: 30 };
+  assert.equal(preparationNeeded(made, 7000, 300, auto), null);
+  // A count whose 50 per panel pass the page's cap is prepared with the rule before.
+  assert.equal(preparationNeeded(opened, 1000, 9000, auto).refineBelow, MIN_TRIANGLES_PER_PANEL);
   // A design from a link made before preparations were recorded: the same rule.
   assert.deepEqual(preparationNeeded(undefined, 1952, 150, auto), { panels: 150, subdivide: 0, refineBelow: 30 });
 });
@@ -95,7 +106,7 @@ test('a preparation with an edge length travels in links and is checked strictly
 // triangles and vertices of their mesh; new preparations record 30.
 test('the refinement rule a preparation was made with travels in links and is checked strictly', () => {
   const where = 'in the link';
-  const made = preparationNeeded(undefined, 4288, 160, { subdivide: 0 });
+  const made = prepareOf(160, { subdivide: 0 });
   assert.deepEqual(made, { panels: 160, subdivide: 0, refineBelow: REFINE_TRIANGLES_PER_PANEL });
   const state = { mesh: { kind: 'example', id: 'inspired_mesh', prepare: made }, params: { ...DEFAULT_PARAMS, panels: 160 }, history: [] };
   const decoded = hashToState(stateToHash(state));

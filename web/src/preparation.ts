@@ -29,26 +29,35 @@ export function samePrepare(a: MeshPrepare | undefined, b: MeshPrepare | undefin
   return a.panels === b.panels && a.subdivide === b.subdivide && a.edgeLength === b.edgeLength && a.refineBelow === b.refineBelow;
 }
 
-// A new preparation records the rule it is made with (share.ts, MeshPrepare.refineBelow).
+// A new preparation records the rule it is made with (share.ts, MeshPrepare.refineBelow): 30,
+// or 20 where 50 per panel would pass the page's refinement cap (a mesh that opened as it was
+// in a browser tab before the 30 still does).
 export function prepareOf(panels: number, choice: PrepareChoice): MeshPrepare {
-  return { panels, subdivide: choice.subdivide, ...(choice.edgeLength !== undefined ? { edgeLength: choice.edgeLength } : {}), refineBelow: REFINE_TRIANGLES_PER_PANEL };
+  const refineBelow = panels * TARGET_TRIANGLES_PER_PANEL <= MAX_PAGE_REFINE_TRIANGLES ? REFINE_TRIANGLES_PER_PANEL : MIN_TRIANGLES_PER_PANEL;
+  return { panels, subdivide: choice.subdivide, ...(choice.edgeLength !== undefined ? { edgeLength: choice.edgeLength } : {}), refineBelow };
 }
 
 // The preparation the design's mesh needs to make `panels` panels, or null when the mesh on
 // show serves (so the solve warm-starts and paint and edits stay as they are).
 // current: the design's preparation; triangles: of the mesh on show.
-// Lowering the count never re-prepares unless the mesh becomes huge for it: a finer mesh only
-// costs time, while preparing again loses the warm start and moves paint and edits.
+// A count no higher than the one the mesh was prepared for never re-prepares unless the mesh
+// becomes huge for it: a finer mesh only costs time, while preparing again loses the warm start
+// and moves paint and edits.
 export function preparationNeeded(current: MeshPrepare | undefined, triangles: number, panels: number, choice: PrepareChoice): MeshPrepare | null {
   const next = prepareOf(panels, choice);
   if (choice.subdivide !== (current?.subdivide ?? 0) || choice.edgeLength !== current?.edgeLength) return next;
   // The designer's own resolution: the panel count does not change it.
   if (choice.edgeLength !== undefined) return null;
+  // The same preparation makes the same mesh: never again for nothing.
+  if (current && samePrepare(current, next)) return null;
   const perPanel = triangles / panels;
   if (perPanel < MIN_TRIANGLES_PER_PANEL) return next;
   // From 20 to 30 the mesh serves, but valid panels come far more often on a finer one: refined
-  // when 50 per panel are within the page's cap (the core's own cap, 2 million, is higher).
-  if (perPanel < REFINE_TRIANGLES_PER_PANEL && panels * TARGET_TRIANGLES_PER_PANEL <= MAX_PAGE_REFINE_TRIANGLES) return next;
+  // for a count above the one the mesh was prepared for, when 50 per panel are within the
+  // page's cap (the core's own cap, 2 million, is higher). Not for the count a design was
+  // saved with under the rule before (20): its edits and paint name that mesh.
+  const raised = current !== undefined && panels > current.panels;
+  if (raised && perPanel < REFINE_TRIANGLES_PER_PANEL && panels * TARGET_TRIANGLES_PER_PANEL <= MAX_PAGE_REFINE_TRIANGLES) return next;
   if (perPanel > HUGE_TRIANGLES_PER_PANEL && triangles > HUGE_TRIANGLES) return next;
   return null;
 }
