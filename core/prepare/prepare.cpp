@@ -127,6 +127,11 @@ PreparedSurface prepare_surface(const TriMesh& mesh, int panels, const std::vect
 
   double target = 0.0;
   std::string reason;
+  // From kPrepareMinTrianglesPerPanel up to the refine threshold: refined only where 50 per
+  // panel fit the cap (and with fewer remeshing rounds, below).
+  const bool band = !explicit_length && dense_per_panel >= kPrepareMinTrianglesPerPanel &&
+                    dense_per_panel < options.refine_triangles_per_panel &&
+                    static_cast<double>(panels) * dense * kPrepareTargetTrianglesPerPanel <= kPrepareMaxTriangles;
   if (options.mode == PrepareMode::Off) {
     return keep("preparation off: the " + with_commas(faces) + " triangles are used as they are (" +
                 short_number(per_panel) + " per panel; 30 to 100 work best)");
@@ -141,9 +146,7 @@ PreparedSurface prepare_surface(const TriMesh& mesh, int panels, const std::vect
       throw InputError("an edge length of " + short_number(target) + " gives about " + with_commas(std::llround(estimate)) +
                        " triangles, fewer than the " + panels_text + " asked for");
     reason = " triangles each, at the edge length asked for";
-  } else if (dense_per_panel < kPrepareMinTrianglesPerPanel ||
-             (dense_per_panel < options.refine_triangles_per_panel &&
-              static_cast<double>(panels) * dense * kPrepareTargetTrianglesPerPanel <= kPrepareMaxTriangles)) {
+  } else if (dense_per_panel < kPrepareMinTrianglesPerPanel || band) {
     if (static_cast<double>(panels) * dense * kPrepareMinTrianglesPerPanel > kPrepareMaxTriangles)
       throw InputError(panels_text + " need at least " + with_commas(std::llround(panels * dense * kPrepareMinTrianglesPerPanel)) +
                        " triangles (20 per panel), more than the " + with_commas(kPrepareMaxTriangles) +
@@ -171,10 +174,8 @@ PreparedSurface prepare_surface(const TriMesh& mesh, int panels, const std::vect
   // about as well at half the time (hyperboloid_s4.off to 137k triangles: 2.2 s instead of 4.0,
   // smallest angle at the 1st percentile 36.9 degrees instead of 37.8; every shared mesh at 28
   // and 23 per panel, seeds 1-3: 78 of 78 valid either way, 89 -> 67 s in all, Hausdorff to
-  // the input 0.98 of it; bench/README.md). Below 20 (larger steps, and the meshes designs were prepared on since) it
-  // stays 10.
-  const bool band = !explicit_length && dense_per_panel >= kPrepareMinTrianglesPerPanel &&
-                    dense_per_panel < options.refine_triangles_per_panel;
+  // the input 0.98 of it; bench/README.md). Below 20 it stays 10: larger steps, and the
+  // meshes designs were prepared on since.
   if (band) remesh.iterations = kBandRemeshRounds;
   // The preparation's own limit with room for the splitting's overshoot (the area estimate
   // above keeps a sound mesh well inside it).

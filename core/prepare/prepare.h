@@ -9,8 +9,8 @@
 //   the panel phase works with; refused when even 20 would exceed kPrepareMaxTriangles); from
 //   20 to 30 when 50 per panel fits under that cap, else the mesh stays as it is. Measured
 //   (bench/README.md, "Preparation below 30 triangles per panel"): face.obj (51,712
-//   triangles) as it is ends with invalid panels at 1,846-2,248 panels after all retries,
-//   in 54-76 s; refined, valid at once in 3-5 s;
+//   triangles) as it is ended with invalid panels at 5 of 6 runs at 1,846-2,248 panels
+//   after all retries, in 54-93 s; refined, 6 of 6 valid in 2.5-4.1 s;
 // - more than 1000 triangles per panel AND more than 400,000 triangles: remeshing to about
 //   100 per panel (the paper's upper end: a huge mesh costs time and memory and buys nothing
 //   the panels can show, while keeping twice the refinement target keeps the fidelity);

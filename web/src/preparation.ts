@@ -1,15 +1,15 @@
 // When the page prepares the design's mesh again (issue 7), and how what the designer attached
 // to the mesh before comes along. The mesh is prepared for the panel count it was opened with;
-// a count it cannot serve (core/prepare/prepare.h: fewer than 20 triangles per panel; fewer than
-// 30 where 50 per panel is within reach; or a huge mesh with more than 1000 per panel) or a new subdivision / target edge length prepares it
-// again from the mesh as loaded, recorded in the design (DesignMesh.prepare) so links and
+// a count it cannot serve (core/prepare/prepare.h: fewer than 20 triangles per panel; fewer
+// than 30 where 50 per panel is within reach; or a huge mesh with more than 1000 per panel) or
+// a new subdivision / target edge length prepares it again from the mesh as loaded, recorded in the design (DesignMesh.prepare) so links and
 // reloads make the same mesh. Painted density (per vertex) and panel edits (per triangle) are
 // carried over by the worker (Session.transferField / remapFaces); this module rebuilds the
 // parameters from what it answers. No DOM: unit-tested in Node (tests/web/preparation.test.mjs).
 import { levelOf, STEPS_PER_OCTAVE } from './brush/densityField.ts';
 import type { PanelEdit } from './edits/panelEdits.ts';
 import type { DesignParams } from './params.ts';
-import type { MeshPrepare } from './share.ts';
+import { LEGACY_REFINE_BELOW, type MeshPrepare } from './share.ts';
 
 // The core's policy numbers (core/prepare/prepare.h, kPrepare*).
 export const MIN_TRIANGLES_PER_PANEL = 20;
@@ -33,7 +33,7 @@ export function samePrepare(a: MeshPrepare | undefined, b: MeshPrepare | undefin
 // or 20 where 50 per panel would pass the page's refinement cap (a mesh that opened as it was
 // in a browser tab before the 30 still does).
 export function prepareOf(panels: number, choice: PrepareChoice): MeshPrepare {
-  const refineBelow = panels * TARGET_TRIANGLES_PER_PANEL <= MAX_PAGE_REFINE_TRIANGLES ? REFINE_TRIANGLES_PER_PANEL : MIN_TRIANGLES_PER_PANEL;
+  const refineBelow = panels * TARGET_TRIANGLES_PER_PANEL <= MAX_PAGE_REFINE_TRIANGLES ? REFINE_TRIANGLES_PER_PANEL : LEGACY_REFINE_BELOW;
   return { panels, subdivide: choice.subdivide, ...(choice.edgeLength !== undefined ? { edgeLength: choice.edgeLength } : {}), refineBelow };
 }
 
@@ -53,11 +53,11 @@ export function preparationNeeded(current: MeshPrepare | undefined, triangles: n
   const perPanel = triangles / panels;
   if (perPanel < MIN_TRIANGLES_PER_PANEL) return next;
   // From 20 to 30 the mesh serves, but valid panels come far more often on a finer one: refined
-  // for a count above the one the mesh was prepared for, when 50 per panel are within the
-  // page's cap (the core's own cap, 2 million, is higher). Not for the count a design was
+  // for a count above the one the mesh was prepared for, by the rule `next` records (30 where
+  // 50 per panel are within the page's cap, else 20: prepareOf). Not for the count a design was
   // saved with under the rule before (20): its edits and paint name that mesh.
   const raised = current !== undefined && panels > current.panels;
-  if (raised && perPanel < REFINE_TRIANGLES_PER_PANEL && panels * TARGET_TRIANGLES_PER_PANEL <= MAX_PAGE_REFINE_TRIANGLES) return next;
+  if (raised && perPanel < (next.refineBelow ?? LEGACY_REFINE_BELOW)) return next;
   if (perPanel > HUGE_TRIANGLES_PER_PANEL && triangles > HUGE_TRIANGLES) return next;
   return null;
 }
