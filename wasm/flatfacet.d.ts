@@ -192,9 +192,10 @@ export interface Session {
   // loaded (kept in the session), subdivide `subdivide` levels (0..4; Loop on triangles, else
   // Catmull-Clark on the file's polygons), then refine to the resolution `panels` need (below
   // `refineBelow` triangles per panel, 20..50, 0: the core's 30; below 20 always; else the mesh
-  // stays as loaded), or to `edgeLength` when > 0 (0: automatic). MeshInfo JSON, its
-  // `prepared` saying what was done and why; a Status on failure (the mesh kept).
-  prepare(panels: number, subdivide: number, edgeLength: number, refineBelow: number): string;
+  // stays as loaded), or to `edgeLength` when > 0 (0: automatic). `refineRounds`: the
+  // remeshing rounds of a refinement below 20 per panel (1..10, 0: the core's 5). MeshInfo
+  // JSON, its `prepared` saying what was done and why; a Status on failure (the mesh kept).
+  prepare(panels: number, subdivide: number, edgeLength: number, refineBelow: number, refineRounds: number): string;
   // Carried from the mesh before the last prepare() to the mesh now: values per vertex
   // (closest point, barycentric), triangle ids (nearest centroid). Empty arrays when refused
   // (wrong length, an id out of range, no mesh before). Carry right after prepare(): the next

@@ -50,9 +50,11 @@ class Session {
   // `panels` need (core/prepare/prepare.h: refined below 30 triangles per panel, else
   // untouched bit for bit), or to `edge_length` when > 0 (0: automatic). refine_below: the
   // triangles per panel below which it refines (PrepareOptions::refine_triangles_per_panel, 20
-  // to 50; 0: the core's, 30; 20 for designs saved before the 30). MeshInfo JSON whose
-  // "prepared" lists what was done and why; on failure a Status and the mesh stays as it was.
-  std::string prepare(int panels, int subdivide, double edge_length, int refine_below);
+  // to 50; 0: the core's, 30; 20 for designs saved before the 30). refine_rounds: the
+  // remeshing rounds of a refinement below 20 per panel (PrepareOptions::refine_rounds, 1 to
+  // 10; 0: the core's, 5; 10 for designs saved before the 5). MeshInfo JSON whose "prepared"
+  // lists what was done and why; on failure a Status and the mesh stays as it was.
+  std::string prepare(int panels, int subdivide, double edge_length, int refine_below, int refine_rounds);
   // What was attached to the mesh before the last prepare(), carried to the mesh now
   // (core/prepare/mesh_transfer.h): per-vertex values by closest point, triangle ids by
   // nearest centroid. Empty when refused (wrong length, an id out of range, no mesh before).

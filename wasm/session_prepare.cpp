@@ -32,7 +32,7 @@ constexpr int kMaxPageSubdivision = 4;
 
 }  // namespace
 
-std::string Session::prepare(int panels, int subdivide, double edge_length, int refine_below) {
+std::string Session::prepare(int panels, int subdivide, double edge_length, int refine_below, int refine_rounds) {
   return guarded([&] {
     if (original_.num_faces() == 0) throw InputError("no mesh loaded");
     if (subdivide < 0 || subdivide > kMaxPageSubdivision)
@@ -55,6 +55,7 @@ std::string Session::prepare(int panels, int subdivide, double edge_length, int 
     PrepareOptions options;
     options.edge_length = edge_length;
     if (refine_below != 0) options.refine_triangles_per_panel = refine_below;  // checked by the core
+    if (refine_rounds != 0) options.refine_rounds = refine_rounds;             // checked by the core
     PreparedSurface prepared = prepare_surface(mesh, panels, {}, options);
     const bool as_loaded = subdivide == 0 && !prepared.report.applied;
     if (!as_loaded)

@@ -20,7 +20,9 @@ size_t at(int i) { return static_cast<size_t>(i); }
 double equilateral_area(double L) { return std::sqrt(3.0) / 4.0 * L * L; }
 double edge_for_area(double a) { return std::sqrt(a / (std::sqrt(3.0) / 4.0)); }
 
-constexpr int kBandRemeshRounds = 5;  // see prepare_surface
+// The band's remeshing rounds (see prepare_surface): fixed, not PrepareOptions::refine_rounds,
+// since every design refined in the band was made with 5.
+constexpr int kBandRemeshRounds = 5;
 
 // The triangle count a refinement for `panels` aims at: about kPrepareTargetTrianglesPerPanel
 // each, within kPrepareMaxTriangles (dense: dense_factor, which the count is divided by).
@@ -104,6 +106,9 @@ PreparedSurface prepare_surface(const TriMesh& mesh, int panels, const std::vect
                      std::to_string(kPrepareMinTrianglesPerPanel) + " to " +
                      std::to_string(kPrepareTargetTrianglesPerPanel) + ", not " +
                      std::to_string(options.refine_triangles_per_panel));
+  if (options.refine_rounds < 1 || options.refine_rounds > kPrepareMaxRemeshRounds)
+    throw InputError("the remeshing rounds of a refinement must be 1 to " + std::to_string(kPrepareMaxRemeshRounds) +
+                     ", not " + std::to_string(options.refine_rounds));
 
   PreparedSurface out;
   PrepareReport& r = out.report;
@@ -128,10 +133,11 @@ PreparedSurface prepare_surface(const TriMesh& mesh, int panels, const std::vect
   double target = 0.0;
   std::string reason;
   // From kPrepareMinTrianglesPerPanel up to the refine threshold: refined only where 50 per
-  // panel fit the cap (and with fewer remeshing rounds, below).
+  // panel fit the cap (always with kBandRemeshRounds, below).
   const bool band = !explicit_length && dense_per_panel >= kPrepareMinTrianglesPerPanel &&
                     dense_per_panel < options.refine_triangles_per_panel &&
                     static_cast<double>(panels) * dense * kPrepareTargetTrianglesPerPanel <= kPrepareMaxTriangles;
+  const bool refining = !explicit_length && (dense_per_panel < kPrepareMinTrianglesPerPanel || band);
   if (options.mode == PrepareMode::Off) {
     return keep("preparation off: the " + with_commas(faces) + " triangles are used as they are (" +
                 short_number(per_panel) + " per panel; 30 to 100 work best)");
@@ -146,7 +152,7 @@ PreparedSurface prepare_surface(const TriMesh& mesh, int panels, const std::vect
       throw InputError("an edge length of " + short_number(target) + " gives about " + with_commas(std::llround(estimate)) +
                        " triangles, fewer than the " + panels_text + " asked for");
     reason = " triangles each, at the edge length asked for";
-  } else if (dense_per_panel < kPrepareMinTrianglesPerPanel || band) {
+  } else if (refining) {
     if (static_cast<double>(panels) * dense * kPrepareMinTrianglesPerPanel > kPrepareMaxTriangles)
       throw InputError(panels_text + " need at least " + with_commas(std::llround(panels * dense * kPrepareMinTrianglesPerPanel)) +
                        " triangles (20 per panel), more than the " + with_commas(kPrepareMaxTriangles) +
@@ -169,14 +175,14 @@ PreparedSurface prepare_surface(const TriMesh& mesh, int panels, const std::vect
   remesh.target_edge_length = target;
   remesh.feature_angle_deg = options.feature_angle_deg;
   remesh.vertex_density = sizing;
-  // A mesh already at 20 to 30 per panel (the band kPrepareRefineTrianglesPerPanel adds) is
-  // refined about twofold, each edge split once or twice: 5 remeshing rounds instead of 10 do
-  // about as well at half the time (hyperboloid_s4.off to 137k triangles: 2.2 s instead of 4.0,
-  // smallest angle at the 1st percentile 36.9 degrees instead of 37.8; every shared mesh at 28
-  // and 23 per panel, seeds 1-3: 78 of 78 valid either way, 89 -> 67 s in all, Hausdorff to
-  // the input 0.98 of it; bench/README.md). Below 20 it stays 10: larger steps, and the
-  // meshes designs were prepared on since.
-  if (band) remesh.iterations = kBandRemeshRounds;
+  // A refinement runs 5 remeshing rounds, not 10: the last five only even the triangles out a
+  // little more (bench/README.md, "Preparation below 30 triangles per panel"). In the band
+  // (hyperboloid_s4.off to 137k triangles: 2.2 s instead of 4.0, smallest angle at the 1st
+  // percentile 36.9 degrees instead of 37.8; every shared mesh at 28 and 23 per panel, seeds
+  // 1-3: 78 of 78 valid either way, 89 -> 67 s) and below 20 (every shared mesh at 15 and 10
+  // per panel, seeds 1-2: 52 of 52 valid either way, 185 -> 130 s, Hausdorff to the input 0.99
+  // of it). Below 20 the rounds are an option: designs saved before keep their 10.
+  if (refining) remesh.iterations = band ? kBandRemeshRounds : options.refine_rounds;
   // The preparation's own limit with room for the splitting's overshoot (the area estimate
   // above keeps a sound mesh well inside it).
   remesh.max_triangles = 2LL * kPrepareMaxTriangles;

@@ -10,7 +10,8 @@
 //   20 to 30 when 50 per panel fits under that cap, else the mesh stays as it is. Measured
 //   (bench/README.md, "Preparation below 30 triangles per panel"): face.obj (51,712
 //   triangles) as it is ended with invalid panels at 5 of 6 runs at 1,846-2,248 panels
-//   after all retries, in 54-93 s; refined, 6 of 6 valid in 2.5-4.1 s;
+//   after all retries, in 54-93 s; refined, 6 of 6 valid in 2.5-4.1 s. A refinement runs 5
+//   remeshing rounds (half the time of pmp's 10, as valid and as close: prepare.cpp);
 // - more than 1000 triangles per panel AND more than 400,000 triangles: remeshing to about
 //   100 per panel (the paper's upper end: a huge mesh costs time and memory and buys nothing
 //   the panels can show, while keeping twice the refinement target keeps the fidelity);
@@ -34,6 +35,8 @@ constexpr int kPrepareCoarsenTrianglesPerPanel = 100;
 constexpr int kPrepareHugeTrianglesPerPanel = 1000;
 constexpr int kPrepareHugeTriangles = 400000;  // PrepareOptions::huge_triangles' default
 constexpr int kPrepareMaxTriangles = 2000000;  // the most the preparation makes (time and memory)
+constexpr int kPrepareRefineRounds = 5;        // remeshing rounds of a refinement (PrepareOptions::refine_rounds)
+constexpr int kPrepareMaxRemeshRounds = 10;    // pmp's default, and what every other remeshing runs
 
 enum class PrepareMode { Auto, Off };
 
@@ -51,6 +54,10 @@ struct PrepareOptions {
   // refined when 50 per panel fit the cap. 20 is the rule before the 30 was measured (designs
   // saved then keep their prepared mesh, whose triangles their edits and paint name).
   int refine_triangles_per_panel = kPrepareRefineTrianglesPerPanel;
+  // Isotropic remeshing rounds of a refinement below kPrepareMinTrianglesPerPanel per panel
+  // (1..kPrepareMaxRemeshRounds; from there up to refine_triangles_per_panel it is always 5).
+  // 10 is the rule before 5 was measured (the same as refine_triangles_per_panel's 20).
+  int refine_rounds = kPrepareRefineRounds;
 };
 
 struct PrepareReport {
@@ -78,7 +85,7 @@ struct PreparedSurface {
 // edge length that is not positive or would need more than that, or gives fewer triangles
 // than panels, an edge length with mode Off, a negative distance_samples or huge_triangles, a
 // refine_triangles_per_panel outside kPrepareMinTrianglesPerPanel..kPrepareTargetTrianglesPerPanel,
-// or a density of the wrong size.
+// a refine_rounds outside 1..kPrepareMaxRemeshRounds, or a density of the wrong size.
 PreparedSurface prepare_surface(const TriMesh& mesh, int panels, const std::vector<double>& density,
                                 const PrepareOptions& options = {});
 

@@ -111,9 +111,11 @@ function fieldKey(field) {
 }
 
 // A flat 12 x 12 grid of quads (288 triangles) and a link that opens it for 4 panels, painted
-// (level 32, 4x density, where x > 6) with one lock edit.
+// (level 32, 4x density, where x > 6) with one lock edit. `prepare`: the preparation the link
+// records (default: for `panels`, as before refineBelow), then unpainted (the paint would
+// name the prepared mesh's vertices).
 const n = 12;
-function gridLink({ edits = [{ op: 'lock', face: 0 }], panels = 4 } = {}) {
+function gridLink({ edits = [{ op: 'lock', face: 0 }], panels = 4, prepare } = {}) {
   const lines = [];
   for (let j = 0; j <= n; j++) for (let i = 0; i <= n; i++) lines.push(`v ${i} ${j} 0`);
   for (let j = 0; j < n; j++) for (let i = 0; i < n; i++) {
@@ -121,6 +123,10 @@ function gridLink({ edits = [{ op: 'lock', face: 0 }], panels = 4 } = {}) {
     lines.push(`f ${v(i, j)} ${v(i + 1, j)} ${v(i + 1, j + 1)} ${v(i, j + 1)}`);
   }
   const bytes = new TextEncoder().encode(`${lines.join('\n')}\n`);
+  if (prepare) {
+    const params = { ...quick, panels, edits };
+    return { paint: new Int8Array(0), link: linkOf(suite.url, { v: 1, mesh: { file: 'grid.obj', size: bytes.length, prepare }, params, history: [] }, bytes, new Int8Array(0)) };
+  }
   const paint = Int8Array.from({ length: (n + 1) * (n + 1) }, (_, k) => (k % (n + 1) > 6 ? 32 : 0));
   const key = fieldKey(paint);
   const params = { ...quick, panels, paint: key, edits };
@@ -147,6 +153,39 @@ test('a design saved before the 30 keeps its mesh between 20 and 30 triangles pe
   });
 });
 
+// A link saved before a refinement went from 10 remeshing rounds to 5 (its preparation has no
+// refineRounds) at 30 panels: the grid refined to 2,192 triangles, where 5 rounds make 2,214
+// (Session.prepare(30, 0, 0, 30, 10) and (..., 5) in Node). It opens on its own mesh, so its lock
+// names the triangle it was made on, and keeps it through a solve; a new design at that count
+// gets 5 rounds, and records them.
+test('a design saved before the 5 remeshing rounds keeps its refined mesh', () => {
+  const { link } = gridLink({ panels: 30, prepare: { panels: 30, subdivide: 0, refineBelow: 30 } });
+  return suite.withPage(link, async (page) => {
+    assert.equal(await waitForDone(page), 30);
+    assert.match(await page.locator('#mesh-details').textContent(), /^2,192 triangles/);
+    assert.equal(await solveAfter(page, () => remesh(page)), 30);
+    assert.match(await page.locator('#mesh-details').textContent(), /^2,192 triangles/);
+    await page.getByRole('button', { name: 'Copy share link' }).click();
+    await page.waitForFunction(() => location.hash.startsWith('#v1='));
+    const shared = readLink(await page.evaluate(() => location.href));
+    assert.deepEqual(shared.json.mesh.prepare, { panels: 30, subdivide: 0, refineBelow: 30 }, 'still the rounds before');
+    assert.deepEqual(shared.json.params.edits, [{ op: 'lock', face: 0 }]);
+  });
+});
+
+test('a new design refined below 20 triangles per panel gets 5 remeshing rounds', () => {
+  const { link } = gridLink({ edits: [] });
+  return suite.withPage(link, async (page) => {
+    assert.equal(await waitForDone(page), 4);
+    await setPanels(page, 30);
+    assert.equal(await solveAfter(page, () => remesh(page), 300_000), 30);
+    assert.match(await page.locator('#mesh-details').textContent(), /^2,214 triangles/);
+    await page.getByRole('button', { name: 'Copy share link' }).click();
+    await page.waitForFunction(() => location.hash.startsWith('#v1='));
+    assert.deepEqual(readLink(await page.evaluate(() => location.href)).json.mesh.prepare, { panels: 30, subdivide: 0, refineBelow: 30, refineRounds: 5 });
+  });
+});
+
 test('preparing again carries the paint (by position) and the panel edits to the new mesh', () => {
   const { paint, link } = gridLink();
   return suite.withPage(link, async (page) => {
@@ -161,7 +200,7 @@ test('preparing again carries the paint (by position) and the panel edits to the
     await page.getByRole('button', { name: 'Copy share link' }).click();
     await page.waitForFunction(() => location.hash.startsWith('#v1='));
     const shared = readLink(await page.evaluate(() => location.href));
-    assert.deepEqual(shared.json.mesh.prepare, { panels: 20, subdivide: 0, refineBelow: 30 }, 'the new preparation is recorded, with its rule');
+    assert.deepEqual(shared.json.mesh.prepare, { panels: 20, subdivide: 0, refineBelow: 30, refineRounds: 5 }, 'the new preparation is recorded, with its rule');
     assert.equal(shared.json.history.length, 0, 'solved afresh on the prepared mesh');
     const carried = shared.paint;
     assert.equal(carried.length, vertices, 'one level per vertex of the prepared mesh');
@@ -199,7 +238,7 @@ test('a Target edge length prepares the mesh to it, travels in the link, and a b
     assert.ok(triangles > 1000, `${triangles} triangles at edge 0.5 on a 12 x 12 square`);
     await page.getByRole('button', { name: 'Copy share link' }).click();
     await page.waitForFunction((before) => location.hash.startsWith('#v1=') && location.href !== before, link);
-    assert.deepEqual(readLink(await page.evaluate(() => location.href)).json.mesh.prepare, { panels: 4, subdivide: 0, edgeLength: 0.5, refineBelow: 30 });
+    assert.deepEqual(readLink(await page.evaluate(() => location.href)).json.mesh.prepare, { panels: 4, subdivide: 0, edgeLength: 0.5, refineBelow: 30, refineRounds: 5 });
     // Raising the count keeps the designer's resolution: no new preparation.
     await setPanels(page, 8);
     assert.equal(await solveAfter(page, () => remesh(page)), 8);

@@ -98,6 +98,34 @@ TEST(Prepare, RefinesBelowThirtyTrianglesPerPanelWhenTheCapAllows) {
   }
 }
 
+// A refinement runs kPrepareRefineRounds remeshing rounds. Below 20 per panel the rounds are
+// an option, since designs prepared before keep the 10 their mesh was made with; in the band
+// they are always 5, whatever it says (every design refined there was made with 5).
+TEST(Prepare, RefinementRemeshingRounds) {
+  const TriMesh epcot = test::load_clean("epcot.off");  // 1536 triangles: 3.8 per panel at 400
+  PrepareOptions before;
+  before.refine_rounds = kPrepareMaxRemeshRounds;
+  PrepareOptions five;
+  five.refine_rounds = 5;
+  const PreparedSurface now = prepare_surface(epcot, 400, {});
+  const PreparedSurface old = prepare_surface(epcot, 400, {}, before);
+  EXPECT_EQ(now.mesh.triangles, prepare_surface(epcot, 400, {}, five).mesh.triangles) << "the default is 5";
+  EXPECT_FALSE(now.mesh.positions == old.mesh.positions) << "10 rounds make another mesh";
+  // Both as fine and as close to the input.
+  EXPECT_NEAR(now.mesh.num_faces(), old.mesh.num_faces(), 0.02 * old.mesh.num_faces());
+  EXPECT_LE(now.report.distance_relative, 1e-9);  // epcot is flat-faceted: both lie on it
+  EXPECT_LE(old.report.distance_relative, 1e-9);
+  const TriMesh bunny = test::load_clean("bunny.off");  // 25.1 per panel: the band
+  const PreparedSurface band = prepare_surface(bunny, 6966 / 25, {});
+  ASSERT_TRUE(band.report.applied);
+  EXPECT_EQ(band.mesh.positions, prepare_surface(bunny, 6966 / 25, {}, before).mesh.positions);
+  for (const int bad : {0, 11}) {
+    PrepareOptions o;
+    o.refine_rounds = bad;
+    EXPECT_THROW(prepare_surface(epcot, 400, {}, o), InputError);
+  }
+}
+
 #ifndef FF_TEST_SANITIZED
 TEST(Prepare, KeepsTwentyToThirtyTrianglesPerPanelWhenFiftyWouldPassTheCap) {
   // 45,000 panels at about 24 triangles each: 50 each would be 2.25 million, past the cap.

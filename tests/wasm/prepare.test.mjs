@@ -24,7 +24,7 @@ function loaded(file = 'YasIsland.off', bytes = yas) {
 test('a coarse quad mesh is refined for its panels, says so, and solves to valid planar panels', () => {
   const { s, info } = loaded();
   assert.equal(info.triangles, 1952);
-  const prepared = json(s.prepare(300, 0, 0, 0));
+  const prepared = json(s.prepare(300, 0, 0, 0, 0));
   assert.equal(prepared.ok, true, prepared.message);
   assert.ok(prepared.triangles >= 300 * 20, `${prepared.triangles} triangles for 300 panels`);
   assert.ok(prepared.prepared.some((line) => /^refined 1,952 triangles to [\d,]+ .*300 panels/.test(line)), prepared.prepared.join(' | '));
@@ -46,22 +46,41 @@ test('a coarse quad mesh is refined for its panels, says so, and solves to valid
 test('from 20 to 30 triangles per panel the mesh is refined, unless the design names the rule before', () => {
   const inspired = readFileSync(path.join(meshes, 'inspired_mesh.obj'));
   const { s, info } = loaded('inspired_mesh.obj', inspired);
-  const refined = json(s.prepare(160, 0, 0, 0));
+  const refined = json(s.prepare(160, 0, 0, 0, 0));
   assert.equal(refined.ok, true, refined.message);
   assert.ok(refined.triangles > 160 * 40, `${refined.triangles} triangles for 160 panels`);
   assert.match(refined.prepared.join(' | '), /\(26\.8 before; 30 to 100 work best\)/);
-  assert.deepEqual(json(s.prepare(160, 0, 0, 20)), info, 'the rule before: as loaded');
+  assert.deepEqual(json(s.prepare(160, 0, 0, 20, 0)), info, 'the rule before: as loaded');
   for (const bad of [19, 51]) {
-    const status = json(s.prepare(160, 0, 0, bad));
+    const status = json(s.prepare(160, 0, 0, bad, 0));
     assert.equal(status.ok, false);
     assert.match(status.message, /below which a mesh is refined must be 20 to 50/);
   }
   s.delete();
 });
 
+// YasIsland at 300 panels: 6.5 triangles each, refined. The rounds now (0: the core's 5) make
+// another mesh than the 10 designs saved before them keep, about as fine; 1..10 only.
+test('a refinement below 20 per panel runs 5 remeshing rounds, 10 for a design that names the rounds before', () => {
+  const { s } = loaded();
+  const now = json(s.prepare(300, 0, 0, 0, 0));
+  const nowPositions = Array.from(s.inputPositions());
+  assert.deepEqual(json(s.prepare(300, 0, 0, 0, 5)), now, 'the default is 5');
+  const before = json(s.prepare(300, 0, 0, 0, 10));
+  assert.equal(before.ok, true, before.message);
+  assert.notDeepEqual(Array.from(s.inputPositions()), nowPositions, '10 rounds: another mesh');
+  assert.ok(Math.abs(before.triangles - now.triangles) < 0.02 * before.triangles, `${before.triangles} against ${now.triangles} triangles`);
+  for (const bad of [-1, 11]) {
+    const status = json(s.prepare(300, 0, 0, 0, bad));
+    assert.equal(status.ok, false);
+    assert.match(status.message, /remeshing rounds of a refinement must be 1 to 10/);
+  }
+  s.delete();
+});
+
 test('subdivision levels use the file\'s quads (Catmull-Clark) and name what they did', () => {
   const { s } = loaded();
-  const prepared = json(s.prepare(150, 1, 0, 0));
+  const prepared = json(s.prepare(150, 1, 0, 0, 0));
   assert.equal(prepared.ok, true, prepared.message);
   assert.equal(prepared.triangles, 976 * 4 * 2, 'each quad into 4 quads, each quad into 2 triangles');
   assert.match(prepared.prepared.join(' | '), /subdivided 976 polygons 1 level \(catmull-clark\) into 7,808 triangles/);
@@ -72,7 +91,7 @@ test('a mesh fine enough for its panels stays exactly as loaded', () => {
   const inspired = readFileSync(path.join(meshes, 'inspired_mesh.obj'));
   const { s, info } = loaded('inspired_mesh.obj', inspired);
   const before = s.inputPositions();
-  const prepared = json(s.prepare(42, 0, 0, 0));
+  const prepared = json(s.prepare(42, 0, 0, 0, 0));
   assert.deepEqual(prepared, info, 'the same mesh info, no notes added');
   assert.deepEqual(s.inputPositions(), before);
   s.delete();
@@ -86,21 +105,21 @@ test('bad requests are refused by name and the loaded mesh stays', () => {
     [0, 0, /panel count must be at least 1/],
     [5_000_000, 0, /at most/],
   ]) {
-    const status = json(s.prepare(panels, levels, 0, 0));
+    const status = json(s.prepare(panels, levels, 0, 0, 0));
     assert.equal(status.ok, false, `prepare(${panels}, ${levels})`);
     assert.match(status.message, pattern);
     assert.equal(s.inputIndices().length, info.triangles * 3, 'still the loaded mesh');
   }
   for (const edge of [-1, Number.NaN, Infinity]) {
-    const status = json(s.prepare(150, 0, edge, 0));
+    const status = json(s.prepare(150, 0, edge, 0, 0));
     assert.equal(status.ok, false, `edge length ${edge}`);
     assert.match(status.message, /target edge length must be a positive number/);
   }
-  assert.match(json(s.prepare(150, 0, 1e-6, 0)).message, /.+/, 'an edge length far too small is refused by the core');
-  assert.equal(json(s.prepare(150, 0, 1e-6, 0)).ok, false);
+  assert.match(json(s.prepare(150, 0, 1e-6, 0, 0)).message, /.+/, 'an edge length far too small is refused by the core');
+  assert.equal(json(s.prepare(150, 0, 1e-6, 0, 0)).ok, false);
   assert.equal(s.inputIndices().length, info.triangles * 3, 'still the loaded mesh');
   const empty = new ff.Session();
-  assert.match(json(empty.prepare(10, 0, 0, 0)).message, /no mesh loaded/);
+  assert.match(json(empty.prepare(10, 0, 0, 0, 0)).message, /no mesh loaded/);
   empty.delete();
   s.delete();
 });
@@ -119,7 +138,7 @@ function yasWithVertexAt(y) {
 
 test('a vertex far from the rest is refused by name, not by running out of memory', () => {
   const { s, info } = loaded('stray.off', yasWithVertexAt('100000'));
-  const status = json(s.prepare(200, 0, 0, 0));
+  const status = json(s.prepare(200, 0, 0, 0, 0));
   assert.equal(status.ok, false);
   assert.match(status.message, /^preparing the mesh for 200 panels: remeshing: .* triangles.*a vertex far from the rest of the mesh\?\)$/);
   assert.equal(s.inputIndices().length, info.triangles * 3, 'still the loaded mesh');
@@ -136,29 +155,29 @@ function meshOf(s) {
 
 test('preparing again starts from the mesh as loaded: the same mesh as opening at that count', () => {
   const { s } = loaded();
-  assert.equal(json(s.prepare(150, 0, 0, 0)).ok, true);
+  assert.equal(json(s.prepare(150, 0, 0, 0, 0)).ok, true);
   const at150 = meshOf(s);
-  const again = json(s.prepare(1200, 0, 0, 0));
+  const again = json(s.prepare(1200, 0, 0, 0, 0));
   assert.equal(again.ok, true, again.message);
   assert.ok(again.triangles >= 1200 * 20, `${again.triangles} triangles for 1,200 panels`);
   assert.match(again.prepared.join(' | '), /^refined 1,952 triangles to [\d,]+ .*1,200 panels/);
   const { s: fresh } = loaded();
-  assert.deepEqual(json(fresh.prepare(1200, 0, 0, 0)), again, 'the same mesh info');
+  assert.deepEqual(json(fresh.prepare(1200, 0, 0, 0, 0)), again, 'the same mesh info');
   assert.deepEqual(meshOf(s), meshOf(fresh), 'the very same vertices and triangles');
   // And back: the 150-panel mesh again, bit for bit.
-  assert.equal(json(s.prepare(150, 0, 0, 0)).ok, true);
+  assert.equal(json(s.prepare(150, 0, 0, 0, 0)).ok, true);
   assert.deepEqual(meshOf(s), at150);
   // A count the loaded mesh serves: the mesh as loaded, notes gone.
   const inspired = loaded('inspired_mesh.obj', readFileSync(path.join(meshes, 'inspired_mesh.obj')));
   const before = inspired.s.inputPositions();
-  assert.ok(json(inspired.s.prepare(2000, 0, 0, 0)).prepared.length > 0, 'refined for 2,000 panels');
-  const back = json(inspired.s.prepare(42, 0, 0, 0));
+  assert.ok(json(inspired.s.prepare(2000, 0, 0, 0, 0)).prepared.length > 0, 'refined for 2,000 panels');
+  const back = json(inspired.s.prepare(42, 0, 0, 0, 0));
   assert.deepEqual(back, inspired.info, 'as loaded again');
   assert.deepEqual(inspired.s.inputPositions(), before);
   // A solve on the prepared mesh, then preparing again: the session holds no solve after it.
   assert.equal(json(s.setParams(JSON.stringify({ panels: 150 }))).ok, true);
   assert.equal(solve(s).stage, 'Done');
-  assert.equal(json(s.prepare(1200, 0, 0, 0)).ok, true);
+  assert.equal(json(s.prepare(1200, 0, 0, 0, 0)).ok, true);
   assert.ok(s.clusterIds().every((id) => id === -1), 'no panels of the previous mesh');
   assert.equal(s.objText(), '', 'nothing to export before the next solve');
   inspired.s.delete();
@@ -169,7 +188,7 @@ test('preparing again starts from the mesh as loaded: the same mesh as opening a
 test('a target edge length remeshes to it, whatever the count, and says so', () => {
   const { s, info } = loaded();
   const edge = info.bboxDiagonal / 100;
-  const prepared = json(s.prepare(150, 0, edge, 0));
+  const prepared = json(s.prepare(150, 0, edge, 0, 0));
   assert.equal(prepared.ok, true, prepared.message);
   assert.match(prepared.prepared.join(' | '), /target edge/);
   const positions = s.inputPositions();
@@ -184,7 +203,7 @@ test('a target edge length remeshes to it, whatever the count, and says so', () 
   const mean = sum / indices.length;
   assert.ok(mean > 0.6 * edge && mean < 1.4 * edge, `mean edge ${mean} for a target of ${edge}`);
   const { s: other } = loaded();
-  assert.deepEqual(json(other.prepare(900, 0, edge, 0)).triangles, prepared.triangles, 'the count does not change it');
+  assert.deepEqual(json(other.prepare(900, 0, edge, 0, 0)).triangles, prepared.triangles, 'the count does not change it');
   other.delete();
   s.delete();
 });
@@ -197,12 +216,12 @@ function linear(p) {
 
 test('painted values and edited triangles are carried to the mesh prepared again', () => {
   const { s } = loaded();
-  assert.equal(json(s.prepare(150, 0, 0, 0)).ok, true);
+  assert.equal(json(s.prepare(150, 0, 0, 0, 0)).ok, true);
   const old = s.inputPositions();
   const oldIndices = s.inputIndices();
   const values = new Float64Array(old.length / 3);
   for (let v = 0; v < values.length; v++) values[v] = linear([old[3 * v], old[3 * v + 1], old[3 * v + 2]]);
-  const info = json(s.prepare(1200, 0, 0, 0));
+  const info = json(s.prepare(1200, 0, 0, 0, 0));
   const carried = s.transferField(values);
   assert.equal(carried.length, info.vertices, 'one value per new vertex');
   const now = s.inputPositions();
@@ -234,10 +253,10 @@ test('painted values and edited triangles are carried to the mesh prepared again
 test('the mesh before is dropped once designing on the prepared mesh begins', () => {
   for (const begin of [(s) => s.setParams(JSON.stringify({ panels: 1200 })), (s) => s.setDensity(new Float64Array(0)), (s) => s.step()]) {
     const { s } = loaded();
-    assert.equal(json(s.prepare(150, 0, 0, 0)).ok, true);
+    assert.equal(json(s.prepare(150, 0, 0, 0, 0)).ok, true);
     const before = s.inputPositions().length / 3;
     const faces = Int32Array.from([0, 1]);
-    const info = json(s.prepare(1200, 0, 0, 0));
+    const info = json(s.prepare(1200, 0, 0, 0, 0));
     assert.ok(info.vertices !== before, 'prepared again: another mesh');
     assert.equal(s.transferField(new Float64Array(before).fill(2)).length, info.vertices, 'carried while it is kept');
     assert.equal(s.remapFaces(faces).length, faces.length);

@@ -30,7 +30,7 @@ test('with largestPart the load keeps one closed cube, says what it dropped, and
   assert.equal(info.euler, 2);
   assert.deepEqual(info.repair, { fillHoles: 0, largestPart: true, slivers: 0, holesFilled: 0, holeFaces: 0, nonmanifoldEdgesCut: 1, facesDropped: 12, partsDropped: 1 });
   assert.ok(info.cleanup.some((line) => line.startsWith('kept the largest manifold part (12 of 24 faces)')), info.cleanup.join(' | '));
-  assert.equal(json(s.prepare(6, 0, 0, 0)).ok, true);
+  assert.equal(json(s.prepare(6, 0, 0, 0, 0)).ok, true);
   assert.equal(json(s.setParams(JSON.stringify({ panels: 6 }))).ok, true);
   solve(s);
   const report = json(s.reportJson());

@@ -5,8 +5,8 @@
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
 import { DEFAULT_PARAMS } from '../../build/web-tests/params.js';
-import { carriedParams, editFaces, HUGE_TRIANGLES, levelsOf, MAX_PAGE_REFINE_TRIANGLES, MIN_TRIANGLES_PER_PANEL, preparationNeeded, prepareOf, REFINE_TRIANGLES_PER_PANEL, refusedPreparation, remapEdits, samePrepare } from '../../build/web-tests/preparation.js';
-import { checkPrepare, hashToState, LEGACY_REFINE_BELOW, stateToHash } from '../../build/web-tests/share.js';
+import { carriedParams, editFaces, HUGE_TRIANGLES, levelsOf, MAX_PAGE_REFINE_TRIANGLES, MIN_TRIANGLES_PER_PANEL, preparationNeeded, prepareOf, REFINE_ROUNDS, REFINE_TRIANGLES_PER_PANEL, refusedPreparation, remapEdits, samePrepare } from '../../build/web-tests/preparation.js';
+import { checkPrepare, hashToState, LEGACY_REFINE_BELOW, LEGACY_REFINE_ROUNDS, stateToHash } from '../../build/web-tests/share.js';
 
 const opened = { panels: 150, subdivide: 0 }; // Yas Island as opened: 1,952 triangles refined
 
@@ -15,32 +15,32 @@ test('raising the panel count past 30 triangles per panel prepares the mesh agai
   const auto = { subdivide: 0 };
   assert.equal(preparationNeeded(opened, triangles, 150, auto), null, 'the count it was prepared for');
   assert.equal(preparationNeeded(opened, 7500, 7500 / REFINE_TRIANGLES_PER_PANEL, auto), null, 'exactly 30 per panel serves');
-  assert.deepEqual(preparationNeeded(opened, 7500, 7500 / REFINE_TRIANGLES_PER_PANEL + 1, auto), { panels: 251, subdivide: 0, refineBelow: 30 });
-  assert.deepEqual(preparationNeeded(opened, triangles, Math.floor(triangles / MIN_TRIANGLES_PER_PANEL) + 1, auto), { panels: 371, subdivide: 0, refineBelow: 30 });
-  assert.deepEqual(preparationNeeded(opened, triangles, 1200, auto), { panels: 1200, subdivide: 0, refineBelow: 30 });
+  assert.deepEqual(preparationNeeded(opened, 7500, 7500 / REFINE_TRIANGLES_PER_PANEL + 1, auto), { panels: 251, subdivide: 0, refineBelow: 30, refineRounds: 5 });
+  assert.deepEqual(preparationNeeded(opened, triangles, Math.floor(triangles / MIN_TRIANGLES_PER_PANEL) + 1, auto), { panels: 371, subdivide: 0, refineBelow: 30, refineRounds: 5 });
+  assert.deepEqual(preparationNeeded(opened, triangles, 1200, auto), { panels: 1200, subdivide: 0, refineBelow: 30, refineRounds: 5 });
   assert.equal(preparationNeeded(opened, triangles, 10, auto), null, 'lowering keeps the finer mesh');
   // ...unless the mesh is huge for the count (the core would coarsen it).
   assert.equal(preparationNeeded(opened, HUGE_TRIANGLES, 100, auto), null);
-  assert.deepEqual(preparationNeeded(opened, HUGE_TRIANGLES + 1000, 100, auto), { panels: 100, subdivide: 0, refineBelow: 30 });
+  assert.deepEqual(preparationNeeded(opened, HUGE_TRIANGLES + 1000, 100, auto), { panels: 100, subdivide: 0, refineBelow: 30, refineRounds: 5 });
   // From 20 to 30 per panel only where 50 per panel are within the page's refinement cap:
   // beyond it the mesh serves as it is (below 20 it would be refused by name, next test).
   const big = 200_000;
   assert.equal(MAX_PAGE_REFINE_TRIANGLES, 400_000);
   assert.equal(preparationNeeded(opened, big, 10_000, auto), null, '20 per panel: 500,000 wanted, past the cap');
-  assert.deepEqual(preparationNeeded(opened, big, 8000, auto), { panels: 8000, subdivide: 0, refineBelow: 30 }, '25 per panel: 400,000 wanted');
+  assert.deepEqual(preparationNeeded(opened, big, 8000, auto), { panels: 8000, subdivide: 0, refineBelow: 30, refineRounds: 5 }, '25 per panel: 400,000 wanted');
   // A design saved before the 30 (no refineBelow) keeps its mesh at the count it was saved
   // with, and at lower ones (its edits and paint name that mesh); a higher count gets the rule now.
   const older = { panels: 12, subdivide: 0 };
   assert.equal(preparationNeeded(older, 288, 12, auto), null, '24 per panel, the count it was saved with');
   assert.equal(preparationNeeded(older, 288, 10, auto), null);
-  assert.deepEqual(preparationNeeded(older, 288, 13, auto), { panels: 13, subdivide: 0, refineBelow: 30 });
+  assert.deepEqual(preparationNeeded(older, 288, 13, auto), { panels: 13, subdivide: 0, refineBelow: 30, refineRounds: 5 });
   // The same preparation again is never needed (the same mesh).
-  const made = { panels: 300, subdivide: 0, refineBelow: 30 };
+  const made = { panels: 300, subdivide: 0, refineBelow: 30, refineRounds: 5 };
   assert.equal(preparationNeeded(made, 7000, 300, auto), null);
   // A count whose 50 per panel pass the page's cap is prepared with the rule before.
   assert.equal(preparationNeeded(opened, 1000, 9000, auto).refineBelow, MIN_TRIANGLES_PER_PANEL);
   // A design from a link made before preparations were recorded: the same rule.
-  assert.deepEqual(preparationNeeded(undefined, 1952, 150, auto), { panels: 150, subdivide: 0, refineBelow: 30 });
+  assert.deepEqual(preparationNeeded(undefined, 1952, 150, auto), { panels: 150, subdivide: 0, refineBelow: 30, refineRounds: 5 });
 });
 
 test('a refinement beyond what a browser tab should make is refused by name; an edge length opts in', () => {
@@ -51,11 +51,11 @@ test('a refinement beyond what a browser tab should make is refused by name; an 
 });
 
 test('a new subdivision or edge length prepares again; with an edge length the count does not', () => {
-  assert.deepEqual(preparationNeeded(opened, 7400, 150, { subdivide: 1 }), { panels: 150, subdivide: 1, refineBelow: 30 });
-  assert.deepEqual(preparationNeeded(opened, 7400, 150, { subdivide: 0, edgeLength: 0.5 }), { panels: 150, subdivide: 0, edgeLength: 0.5, refineBelow: 30 });
+  assert.deepEqual(preparationNeeded(opened, 7400, 150, { subdivide: 1 }), { panels: 150, subdivide: 1, refineBelow: 30, refineRounds: 5 });
+  assert.deepEqual(preparationNeeded(opened, 7400, 150, { subdivide: 0, edgeLength: 0.5 }), { panels: 150, subdivide: 0, edgeLength: 0.5, refineBelow: 30, refineRounds: 5 });
   const fixed = { panels: 150, subdivide: 0, edgeLength: 0.5 };
   assert.equal(preparationNeeded(fixed, 7400, 5000, { subdivide: 0, edgeLength: 0.5 }), null, 'the designer\'s resolution stays');
-  assert.deepEqual(preparationNeeded(fixed, 7400, 150, { subdivide: 0 }), { panels: 150, subdivide: 0, refineBelow: 30 }, 'back to automatic');
+  assert.deepEqual(preparationNeeded(fixed, 7400, 150, { subdivide: 0 }), { panels: 150, subdivide: 0, refineBelow: 30, refineRounds: 5 }, 'back to automatic');
   assert.ok(samePrepare(fixed, { ...fixed }));
   assert.ok(!samePrepare(fixed, opened));
   assert.ok(samePrepare(undefined, undefined));
@@ -107,7 +107,7 @@ test('a preparation with an edge length travels in links and is checked strictly
 test('the refinement rule a preparation was made with travels in links and is checked strictly', () => {
   const where = 'in the link';
   const made = prepareOf(160, { subdivide: 0 });
-  assert.deepEqual(made, { panels: 160, subdivide: 0, refineBelow: REFINE_TRIANGLES_PER_PANEL });
+  assert.deepEqual(made, { panels: 160, subdivide: 0, refineBelow: REFINE_TRIANGLES_PER_PANEL, refineRounds: REFINE_ROUNDS });
   const state = { mesh: { kind: 'example', id: 'inspired_mesh', prepare: made }, params: { ...DEFAULT_PARAMS, panels: 160 }, history: [] };
   const decoded = hashToState(stateToHash(state));
   assert.ok(decoded.ok, decoded.message);
@@ -123,4 +123,32 @@ test('the refinement rule a preparation was made with travels in links and is ch
     assert.equal(checked.message, "in the link: the mesh's preparation must refine below 20 to 50 triangles per panel");
   }
   assert.deepEqual(checkPrepare({ panels: 150, subdivide: 1, edgeLength: 2, refineBelow: 20 }, where).value, { panels: 150, subdivide: 1, edgeLength: 2, refineBelow: 20 });
+});
+
+// Designs saved before a refinement went from 10 remeshing rounds to 5 carry no refineRounds:
+// the worker prepares them with 10 again (worker.ts), so their mesh is the one their edits and
+// paint name, at the count they were saved with; a raised count gets the rounds now.
+test('the remeshing rounds a preparation was made with travel in links and are checked strictly', () => {
+  const where = 'in the link';
+  assert.equal(LEGACY_REFINE_ROUNDS, 10);
+  assert.equal(REFINE_ROUNDS, 5);
+  const made = prepareOf(300, { subdivide: 0 });
+  assert.equal(made.refineRounds, REFINE_ROUNDS);
+  const state = { mesh: { kind: 'example', id: 'inspired_mesh', prepare: made }, params: { ...DEFAULT_PARAMS, panels: 300 }, history: [] };
+  assert.deepEqual(hashToState(stateToHash(state)).value.mesh.prepare, made);
+  // Saved with the 30 and 10 rounds (no refineRounds): kept at its count and below.
+  const older = { panels: 300, subdivide: 0, refineBelow: 30 };
+  assert.ok(!samePrepare(older, made), 'the two rounds are different preparations');
+  assert.equal(preparationNeeded(older, 15_000, 300, { subdivide: 0 }), null, 'its own count: its mesh stays');
+  assert.equal(preparationNeeded(older, 15_000, 200, { subdivide: 0 }), null);
+  assert.deepEqual(preparationNeeded(older, 15_000, 1000, { subdivide: 0 }), { panels: 1000, subdivide: 0, refineBelow: 30, refineRounds: 5 });
+  const decodedOlder = hashToState(stateToHash({ ...state, mesh: { kind: 'example', id: 'inspired_mesh', prepare: older } }));
+  assert.ok(decodedOlder.ok, decodedOlder.message);
+  assert.ok(!('refineRounds' in decodedOlder.value.mesh.prepare), 'no rounds recorded: the worker uses 10');
+  for (const bad of [0, 11, 4.5, '5', null]) {
+    const checked = checkPrepare({ panels: 150, subdivide: 0, refineRounds: bad }, where);
+    assert.equal(checked.ok, false, `refineRounds ${String(bad)}`);
+    assert.equal(checked.message, "in the link: the mesh's preparation must refine in 1 to 10 remeshing rounds");
+  }
+  assert.deepEqual(checkPrepare({ refineRounds: 10, edgeLength: 2, panels: 150, subdivide: 1, refineBelow: 20 }, where).value, { panels: 150, subdivide: 1, edgeLength: 2, refineBelow: 20, refineRounds: 10 }, 'keys in one order');
 });

@@ -16,6 +16,7 @@ export const MIN_TRIANGLES_PER_PANEL = 20;
 export const REFINE_TRIANGLES_PER_PANEL = 30;
 export const HUGE_TRIANGLES_PER_PANEL = 1000;
 export const HUGE_TRIANGLES = 400_000;
+export const REFINE_ROUNDS = 5; // kPrepareRefineRounds
 
 // What the Surface section sets (prepareControl.ts): subdivision, and a target edge length
 // (undefined: automatic, from the panel count).
@@ -26,15 +27,15 @@ export interface PrepareChoice {
 
 export function samePrepare(a: MeshPrepare | undefined, b: MeshPrepare | undefined): boolean {
   if (!a || !b) return a === b;
-  return a.panels === b.panels && a.subdivide === b.subdivide && a.edgeLength === b.edgeLength && a.refineBelow === b.refineBelow;
+  return a.panels === b.panels && a.subdivide === b.subdivide && a.edgeLength === b.edgeLength && a.refineBelow === b.refineBelow && a.refineRounds === b.refineRounds;
 }
 
-// A new preparation records the rule it is made with (share.ts, MeshPrepare.refineBelow): 30,
+// A new preparation records the rule it is made with (share.ts, MeshPrepare): refined below 30,
 // or 20 where 50 per panel would pass the page's refinement cap (a mesh that opened as it was
-// in a browser tab before the 30 still does).
+// in a browser tab before the 30 still does), in REFINE_ROUNDS remeshing rounds.
 export function prepareOf(panels: number, choice: PrepareChoice): MeshPrepare {
   const refineBelow = panels * TARGET_TRIANGLES_PER_PANEL <= MAX_PAGE_REFINE_TRIANGLES ? REFINE_TRIANGLES_PER_PANEL : LEGACY_REFINE_BELOW;
-  return { panels, subdivide: choice.subdivide, ...(choice.edgeLength !== undefined ? { edgeLength: choice.edgeLength } : {}), refineBelow };
+  return { panels, subdivide: choice.subdivide, ...(choice.edgeLength !== undefined ? { edgeLength: choice.edgeLength } : {}), refineBelow, refineRounds: REFINE_ROUNDS };
 }
 
 // The preparation the design's mesh needs to make `panels` panels, or null when the mesh on

@@ -46,9 +46,14 @@ export interface MeshPrepare {
   // keeps the rule it was made with, LEGACY_REFINE_BELOW, so its edits and paint still name
   // the triangles and vertices of its mesh.
   refineBelow?: number;
+  // The remeshing rounds of a refinement below 20 per panel (Session.prepare): recorded since
+  // they went from 10 to 5. A design without it keeps LEGACY_REFINE_ROUNDS, for the same reason.
+  refineRounds?: number;
 }
 export const LEGACY_REFINE_BELOW = 20;
 export const MAX_REFINE_BELOW = 50;
+export const LEGACY_REFINE_ROUNDS = 10;
+export const MAX_REFINE_ROUNDS = 10;
 export const MAX_SUBDIVIDE = 4;
 // A target edge length, in mesh units: positive, finite, and not absurd (the core refuses one
 // that would make more than its triangle cap with its own message).
@@ -62,19 +67,35 @@ export function isEdgeLength(value: unknown): value is number {
 }
 
 // A mesh's preparation from a link or the stored session: absent, or exactly {panels,
-// subdivide} with an optional edgeLength.
+// subdivide} with an optional edgeLength, refineBelow and refineRounds.
 export function checkPrepare(value: unknown, where: string): Checked<MeshPrepare | undefined> {
   if (value === undefined) return { ok: true, value: undefined };
   if (!isRecord(value)) return failure(`${where}: the mesh's preparation is not an object`);
-  for (const key of Object.keys(value)) if (key !== 'panels' && key !== 'subdivide' && key !== 'edgeLength' && key !== 'refineBelow') return failure(`${where}: the mesh's preparation has an unknown field "${key.slice(0, 40)}"`);
-  const { panels, subdivide, edgeLength, refineBelow } = value;
+  for (const key of Object.keys(value)) if (!PREPARE_KEYS.includes(key)) return failure(`${where}: the mesh's preparation has an unknown field "${key.slice(0, 40)}"`);
+  const { panels, subdivide, edgeLength, refineBelow, refineRounds } = value;
   if (typeof panels !== 'number' || !Number.isInteger(panels) || panels < LIMITS.panels.min || panels > LIMITS.panels.max) return failure(`${where}: the mesh's preparation names no valid panel count`);
   if (typeof subdivide !== 'number' || !Number.isInteger(subdivide) || subdivide < 0 || subdivide > MAX_SUBDIVIDE) return failure(`${where}: subdivision levels must be 0 to ${MAX_SUBDIVIDE}`);
   if (edgeLength !== undefined && !isEdgeLength(edgeLength)) return failure(`${where}: the target edge length must be a positive number up to ${MAX_EDGE_LENGTH}`);
   if (refineBelow !== undefined && (typeof refineBelow !== 'number' || !Number.isInteger(refineBelow) || refineBelow < LEGACY_REFINE_BELOW || refineBelow > MAX_REFINE_BELOW)) {
     return failure(`${where}: the mesh's preparation must refine below ${LEGACY_REFINE_BELOW} to ${MAX_REFINE_BELOW} triangles per panel`);
   }
-  return { ok: true, value: { panels, subdivide, ...(edgeLength !== undefined ? { edgeLength } : {}), ...(refineBelow !== undefined ? { refineBelow } : {}) } };
+  if (refineRounds !== undefined && (typeof refineRounds !== 'number' || !Number.isInteger(refineRounds) || refineRounds < 1 || refineRounds > MAX_REFINE_ROUNDS)) {
+    return failure(`${where}: the mesh's preparation must refine in 1 to ${MAX_REFINE_ROUNDS} remeshing rounds`);
+  }
+  return { ok: true, value: prepareInOrder({ panels, subdivide, edgeLength, refineBelow, refineRounds }) };
+}
+const PREPARE_KEYS = ['panels', 'subdivide', 'edgeLength', 'refineBelow', 'refineRounds'];
+
+// The preparation with its keys in one order and the absent ones left out (links and the
+// stored session compare as text).
+function prepareInOrder(p: MeshPrepare): MeshPrepare {
+  return {
+    panels: p.panels,
+    subdivide: p.subdivide,
+    ...(p.edgeLength !== undefined ? { edgeLength: p.edgeLength } : {}),
+    ...(p.refineBelow !== undefined ? { refineBelow: p.refineBelow } : {}),
+    ...(p.refineRounds !== undefined ? { refineRounds: p.refineRounds } : {}),
+  };
 }
 
 // The mesh of a link or the stored session with the preparation and repair its record
@@ -91,7 +112,7 @@ export function withMeshOptions(mesh: DesignMesh, meshValue: Record<string, unkn
 export function prepareJson(mesh: DesignMesh): { prepare?: MeshPrepare } {
   const p = mesh.prepare;
   if (!p) return {};
-  return { prepare: { panels: p.panels, subdivide: p.subdivide, ...(p.edgeLength !== undefined ? { edgeLength: p.edgeLength } : {}), ...(p.refineBelow !== undefined ? { refineBelow: p.refineBelow } : {}) } };
+  return { prepare: prepareInOrder(p) };
 }
 
 export interface DesignState {

@@ -10,7 +10,7 @@ import createFlatfacet, { type FlatfacetModule, type MeshInfo, type Problems, ty
 import wasmUrl from '@flatfacet/wasm-binary?url';
 import { decodeField } from './brush/densityField.ts';
 import { levelsOf } from './preparation.ts';
-import { LEGACY_REFINE_BELOW } from './share.ts';
+import { LEGACY_REFINE_BELOW, LEGACY_REFINE_ROUNDS } from './share.ts';
 import { fabricationOf } from './workerFabrication.ts';
 import { transferablesOf, type Carry, type MeshPayload, type MeshPrepare, type QualityReport, type SolveResult, type SolveStep, type WorkerRequest, type WorkerResponse } from './protocol.ts';
 
@@ -88,7 +88,7 @@ function loadInto(target: Session, mesh: MeshPayload): MeshInfo {
 }
 
 function prepareInto(target: Session, prepare: MeshPrepare): MeshInfo {
-  return checked<MeshInfo>(target.prepare(prepare.panels, prepare.subdivide, prepare.edgeLength ?? 0, prepare.refineBelow ?? LEGACY_REFINE_BELOW), 'preparing the mesh');
+  return checked<MeshInfo>(target.prepare(prepare.panels, prepare.subdivide, prepare.edgeLength ?? 0, prepare.refineBelow ?? LEGACY_REFINE_BELOW, prepare.refineRounds ?? LEGACY_REFINE_ROUNDS), 'preparing the mesh');
 }
 
 function loadAsIs(target: Session, mesh: MeshPayload): MeshInfo {
