@@ -5,6 +5,9 @@
 # The tests pin two counts per mesh that pass; this shows what happens in between.
 # Usage: bench/sweep_validity.sh [path/to/flatfacet]   (default build/release/cli/flatfacet)
 # FF_SWEEP_ARGS: extra remesh options for every run, e.g. "--glass --min-angle 10".
+# FF_SWEEP_PER_PANEL: the triangles per panel instead of "120 90 70 55 45", e.g. "28 23" (the
+# preparation's band, bench/README.md) or "15 10" (refined below 20). Each line also gives the
+# run's wall time and the triangles the preparation made (the report's prepare.triangles_out).
 set -u
 here="$(cd "$(dirname "$0")/.." && pwd)"
 flatfacet="${1:-$here/build/release/cli/flatfacet}"
@@ -17,7 +20,7 @@ for entry in "inspired_mesh.obj 4288" "YasIsland.off 1952" "epcot.off 1536" "Moo
   "face.obj 51712" "hyperboloid_s4.off 50454"; do
   set -- $entry
   last=0
-  for per_panel in 120 90 70 55 45; do
+  for per_panel in ${FF_SWEEP_PER_PANEL:-120 90 70 55 45}; do
     n=$(($2 / per_panel))
     [ "$n" -lt 20 ] && n=20
     # Once each: two runs of one case at a time would write the same report (epcot's two
@@ -29,11 +32,15 @@ for entry in "inspired_mesh.obj 4288" "YasIsland.off 1952" "epcot.off 1536" "Moo
 done
 run_one() {
   local file="$1" n="$2"
+  local start
+  start=$(date +%s%N)
   "$flatfacet" remesh "$meshes/$file" --panels "$n" --report "$out/$file.$n.json" ${FF_SWEEP_ARGS:-} > /dev/null 2>&1
   local rc=$?
-  local invalid
-  invalid=$(python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['invalid_panels'])" "$out/$file.$n.json" 2> /dev/null)
-  echo "$file $n exit=$rc invalid=${invalid:-?}"
+  local ms=$((($(date +%s%N) - start) / 1000000))
+  local fields invalid triangles
+  fields=$(python3 -c "import json,sys; r=json.load(open(sys.argv[1])); print(r['invalid_panels'], r['prepare']['triangles_out'])" "$out/$file.$n.json" 2> /dev/null)
+  read -r invalid triangles <<< "${fields:-? ?}"
+  echo "$file $n exit=$rc invalid=$invalid time=${ms}ms triangles=$triangles"
 }
 export -f run_one
 export flatfacet meshes out FF_SWEEP_ARGS
