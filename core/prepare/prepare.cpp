@@ -21,7 +21,8 @@ double equilateral_area(double L) { return std::sqrt(3.0) / 4.0 * L * L; }
 double edge_for_area(double a) { return std::sqrt(a / (std::sqrt(3.0) / 4.0)); }
 
 // The band's remeshing rounds (see prepare_surface): fixed, not PrepareOptions::refine_rounds,
-// since every design refined in the band was made with 5.
+// since every design refined in the band was made with 5 (the band and its 5 rounds landed
+// together).
 constexpr int kBandRemeshRounds = 5;
 
 // The triangle count a refinement for `panels` aims at: about kPrepareTargetTrianglesPerPanel
@@ -182,7 +183,8 @@ PreparedSurface prepare_surface(const TriMesh& mesh, int panels, const std::vect
   // 1-3: 78 of 78 valid either way, 89 -> 67 s) and below 20 (every shared mesh at 15 and 10
   // per panel, seeds 1-2: 52 of 52 valid either way, 185 -> 130 s, Hausdorff to the input 0.99
   // of it). Below 20 the rounds are an option: designs saved before keep their 10.
-  if (refining) remesh.iterations = band ? kBandRemeshRounds : options.refine_rounds;
+  // An explicit edge length and a coarsening run 10, as every design made with them did.
+  remesh.iterations = !refining ? kPrepareMaxRemeshRounds : band ? kBandRemeshRounds : options.refine_rounds;
   // The preparation's own limit with room for the splitting's overshoot (the area estimate
   // above keeps a sound mesh well inside it).
   remesh.max_triangles = 2LL * kPrepareMaxTriangles;

@@ -109,7 +109,9 @@ TEST(Prepare, RefinementRemeshingRounds) {
   five.refine_rounds = 5;
   const PreparedSurface now = prepare_surface(epcot, 400, {});
   const PreparedSurface old = prepare_surface(epcot, 400, {}, before);
-  EXPECT_EQ(now.mesh.triangles, prepare_surface(epcot, 400, {}, five).mesh.triangles) << "the default is 5";
+  const PreparedSurface five_asked = prepare_surface(epcot, 400, {}, five);
+  EXPECT_EQ(now.mesh.triangles, five_asked.mesh.triangles) << "the default is 5";
+  EXPECT_EQ(now.mesh.positions, five_asked.mesh.positions);
   EXPECT_FALSE(now.mesh.positions == old.mesh.positions) << "10 rounds make another mesh";
   // Both as fine and as close to the input.
   EXPECT_NEAR(now.mesh.num_faces(), old.mesh.num_faces(), 0.02 * old.mesh.num_faces());
@@ -119,6 +121,23 @@ TEST(Prepare, RefinementRemeshingRounds) {
   const PreparedSurface band = prepare_surface(bunny, 6966 / 25, {});
   ASSERT_TRUE(band.report.applied);
   EXPECT_EQ(band.mesh.positions, prepare_surface(bunny, 6966 / 25, {}, before).mesh.positions);
+  // An explicit edge length and a coarsening ignore it too (designs made with them keep 10).
+  PrepareOptions length_one;
+  length_one.edge_length = test::edge_length_for(epcot, 6000);
+  length_one.refine_rounds = 1;
+  PrepareOptions length_ten = length_one;
+  length_ten.refine_rounds = kPrepareMaxRemeshRounds;
+  EXPECT_EQ(prepare_surface(epcot, 100, {}, length_one).mesh.positions,
+            prepare_surface(epcot, 100, {}, length_ten).mesh.positions);
+  PrepareOptions coarsen_one;
+  coarsen_one.huge_triangles = 0;  // bunny at 5 panels: 1393 per panel, coarsened
+  coarsen_one.refine_rounds = 1;
+  PrepareOptions coarsen_ten = coarsen_one;
+  coarsen_ten.refine_rounds = kPrepareMaxRemeshRounds;
+  const PreparedSurface coarsened = prepare_surface(bunny, 5, {}, coarsen_one);
+  ASSERT_TRUE(coarsened.report.applied);
+  EXPECT_LT(coarsened.mesh.num_faces(), bunny.num_faces());
+  EXPECT_EQ(coarsened.mesh.positions, prepare_surface(bunny, 5, {}, coarsen_ten).mesh.positions);
   for (const int bad : {0, 11}) {
     PrepareOptions o;
     o.refine_rounds = bad;

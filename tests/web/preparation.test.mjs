@@ -36,7 +36,8 @@ test('raising the panel count past 30 triangles per panel prepares the mesh agai
   assert.deepEqual(preparationNeeded(older, 288, 13, auto), { panels: 13, subdivide: 0, refineBelow: 30, refineRounds: 5 });
   // The same preparation again is never needed (the same mesh).
   const made = { panels: 300, subdivide: 0, refineBelow: 30, refineRounds: 5 };
-  assert.equal(preparationNeeded(made, 7000, 300, auto), null);
+  assert.equal(preparationNeeded(made, 5000, 300, auto), null, 'even below 20 per panel');
+  assert.deepEqual(preparationNeeded({ ...made, refineRounds: 10 }, 5000, 300, auto), made, 'other rounds: another preparation');
   // A count whose 50 per panel pass the page's cap is prepared with the rule before.
   assert.equal(preparationNeeded(opened, 1000, 9000, auto).refineBelow, MIN_TRIANGLES_PER_PANEL);
   // A design from a link made before preparations were recorded: the same rule.
@@ -150,5 +151,6 @@ test('the remeshing rounds a preparation was made with travel in links and are c
     assert.equal(checked.ok, false, `refineRounds ${String(bad)}`);
     assert.equal(checked.message, "in the link: the mesh's preparation must refine in 1 to 10 remeshing rounds");
   }
-  assert.deepEqual(checkPrepare({ refineRounds: 10, edgeLength: 2, panels: 150, subdivide: 1, refineBelow: 20 }, where).value, { panels: 150, subdivide: 1, edgeLength: 2, refineBelow: 20, refineRounds: 10 }, 'keys in one order');
+  const ordered = checkPrepare({ refineRounds: 10, edgeLength: 2, panels: 150, subdivide: 1, refineBelow: 20 }, where).value;
+  assert.equal(JSON.stringify(ordered), '{"panels":150,"subdivide":1,"edgeLength":2,"refineBelow":20,"refineRounds":10}', 'keys in one order');
 });
