@@ -52,6 +52,7 @@ EMSCRIPTEN_BINDINGS(flatfacet) {
       .function("loadShape", &Session::load_shape)
       .function("loadSurfaces", &load_surfaces)
       .function("prepare", &Session::prepare)
+      .function("prepareAsLoaded", &Session::prepare_as_loaded)
       .function("setRepair", &Session::set_repair)
       .function(
           "transferField",

@@ -196,6 +196,9 @@ export interface Session {
   // remeshing rounds of a refinement below 20 per panel (1..10, 0: the core's 5). MeshInfo
   // JSON, its `prepared` saying what was done and why; a Status on failure (the mesh kept).
   prepare(panels: number, subdivide: number, edgeLength: number, refineBelow: number, refineRounds: number): string;
+  // The mesh as loaded again, neither subdivided nor prepared (what a design saved before
+  // preparations were recorded was made on); answered as prepare().
+  prepareAsLoaded(): string;
   // Carried from the mesh before the last prepare() to the mesh now: values per vertex
   // (closest point, barycentric), triangle ids (nearest centroid). Empty arrays when refused
   // (wrong length, an id out of range, no mesh before). Carry right after prepare(): the next

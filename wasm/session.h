@@ -55,6 +55,9 @@ class Session {
   // 10; 0: the core's, 5; 10 for designs saved before the 5). MeshInfo JSON whose "prepared"
   // lists what was done and why; on failure a Status and the mesh stays as it was.
   std::string prepare(int panels, int subdivide, double edge_length, int refine_below, int refine_rounds);
+  // The mesh as loaded again, neither subdivided nor prepared (a design saved before
+  // preparations were recorded was made on it); otherwise as prepare().
+  std::string prepare_as_loaded();
   // What was attached to the mesh before the last prepare(), carried to the mesh now
   // (core/prepare/mesh_transfer.h): per-vertex values by closest point, triangle ids by
   // nearest centroid. Empty when refused (wrong length, an id out of range, no mesh before).
@@ -145,6 +148,8 @@ class Session {
   // Designing on the prepared mesh has begun: the mesh before is no longer carried from
   // (session_prepare.cpp).
   void forget_mesh_before();
+  // prepare()'s and prepare_as_loaded()'s end: `mesh` on show, the mesh before kept to carry from.
+  std::string adopt_mesh(TriMesh mesh, bool as_loaded, std::vector<std::string> notes);
   const QualityReport* quality();
   void forget_result();
   // Edits (session_edits.cpp): what set_params compares to tell an edit from a new solve

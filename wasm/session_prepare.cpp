@@ -60,20 +60,31 @@ std::string Session::prepare(int panels, int subdivide, double edge_length, int 
     const bool as_loaded = subdivide == 0 && !prepared.report.applied;
     if (!as_loaded)
       for (const std::string& m : prepared.report.messages) notes.push_back(m);
-    // Even a mesh left as loaded replaces the current one: the session then holds no solve
-    // (as after a load) and the transfers below carry from the mesh before.
-    MeshTopology topology = build_topology(prepared.mesh);
-    // The mesh before: what transfer_field and remap_faces carry from.
-    previous_ = std::move(mesh_);
-    mesh_ = std::move(prepared.mesh);
-    topology_ = std::move(topology);
-    prepared_ = !as_loaded;
-    prepared_notes_ = std::move(notes);
-    params_.density.clear();
-    remesher_.reset();
-    forget_result();
-    return mesh_info_json();
+    return adopt_mesh(std::move(prepared.mesh), as_loaded, std::move(notes));
   });
+}
+
+std::string Session::prepare_as_loaded() {
+  return guarded([&] {
+    if (original_.num_faces() == 0) throw InputError("no mesh loaded");
+    return adopt_mesh(original_, true, {});
+  });
+}
+
+std::string Session::adopt_mesh(TriMesh mesh, bool as_loaded, std::vector<std::string> notes) {
+  // Even a mesh left as loaded replaces the current one: the session then holds no solve
+  // (as after a load) and the transfers below carry from the mesh before.
+  MeshTopology topology = build_topology(mesh);
+  // The mesh before: what transfer_field and remap_faces carry from.
+  previous_ = std::move(mesh_);
+  mesh_ = std::move(mesh);
+  topology_ = std::move(topology);
+  prepared_ = !as_loaded;
+  prepared_notes_ = std::move(notes);
+  params_.density.clear();
+  remesher_.reset();
+  forget_result();
+  return mesh_info_json();
 }
 
 // Up to three meshes live in a session (as loaded, before, now); the one before is the

@@ -112,7 +112,8 @@ function fieldKey(field) {
 
 // A flat 12 x 12 grid of quads (288 triangles) and a link that opens it for 4 panels, painted
 // (level 32, 4x density, where x > 6) with one lock edit. `prepare`: the preparation the link
-// records (default: for `panels`, as before refineBelow), then unpainted (the paint would
+// records (default: for `panels`, as before refineBelow; null: none, as links made before
+// preparations were recorded); with one of its own the link is unpainted (the paint would
 // name the prepared mesh's vertices).
 const n = 12;
 function gridLink({ edits = [{ op: 'lock', face: 0 }], panels = 4, prepare } = {}) {
@@ -130,7 +131,8 @@ function gridLink({ edits = [{ op: 'lock', face: 0 }], panels = 4, prepare } = {
   const paint = Int8Array.from({ length: (n + 1) * (n + 1) }, (_, k) => (k % (n + 1) > 6 ? 32 : 0));
   const key = fieldKey(paint);
   const params = { ...quick, panels, paint: key, edits };
-  return { paint, link: linkOf(suite.url, { v: 1, mesh: { file: 'grid.obj', size: bytes.length, prepare: { panels, subdivide: 0 } }, params, history: [], paint: [{ key, vertices: paint.length }] }, bytes, paint) };
+  const mesh = { file: 'grid.obj', size: bytes.length, ...(prepare === null ? {} : { prepare: { panels, subdivide: 0 } }) };
+  return { paint, link: linkOf(suite.url, { v: 1, mesh, params, history: [], paint: [{ key, vertices: paint.length }] }, bytes, paint) };
 }
 
 // A link saved before the rule went from 20 to 30 triangles per panel (its preparation has no
@@ -183,6 +185,29 @@ test('a new design refined below 20 triangles per panel gets 5 remeshing rounds'
     await page.getByRole('button', { name: 'Copy share link' }).click();
     await page.waitForFunction(() => location.hash.startsWith('#v1='));
     assert.deepEqual(readLink(await page.evaluate(() => location.href)).json.mesh.prepare, { panels: 30, subdivide: 0, refineBelow: 30, refineRounds: 5 });
+  });
+});
+
+// A link made before preparations were recorded, at 20 panels: 14.4 triangles each, on the
+// mesh as loaded. Remesh prepares it (carrying the lock and paint); Undo brings back the mesh
+// as loaded, which the lock and paint of the step before name, not a preparation by the rule
+// of the time (that would be 1,152 triangles, and the lock replayed on another triangle).
+test('undo to a design saved before preparations were recorded opens the mesh as loaded again', () => {
+  const { paint, link } = gridLink({ panels: 20, prepare: null });
+  return suite.withPage(link, async (page) => {
+    assert.equal(await waitForDone(page), 20);
+    assert.match(await page.locator('#mesh-details').textContent(), /^288 triangles/);
+    assert.equal(await solveAfter(page, () => remesh(page), 300_000), 20);
+    assert.doesNotMatch(await page.locator('#mesh-details').textContent(), /^288 triangles/, 'prepared for 20 panels');
+    assert.equal(await solveAfter(page, () => page.getByRole('button', { name: 'Undo' }).click()), 20);
+    assert.match(await page.locator('#mesh-details').textContent(), /^288 triangles/);
+    await page.getByRole('button', { name: 'Copy share link' }).click();
+    await page.waitForFunction((before) => location.hash.startsWith('#v1=') && location.href !== before, link);
+    const back = readLink(await page.evaluate(() => location.href));
+    assert.ok(!('prepare' in back.json.mesh), 'no preparation, as the link had');
+    assert.deepEqual(back.json.params.edits, [{ op: 'lock', face: 0 }]);
+    assert.deepEqual([...back.paint], [...paint]);
+    await screenshot(page, 'grid-undo-to-as-loaded');
   });
 });
 

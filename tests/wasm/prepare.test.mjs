@@ -78,6 +78,24 @@ test('a refinement below 20 per panel runs 5 remeshing rounds, 10 for a design t
   s.delete();
 });
 
+// Undo to a design saved before preparations were recorded: its edits and paint name the mesh
+// as loaded, which prepareAsLoaded brings back whatever the panel count (prepare() at 300
+// panels would refine it), carrying from the mesh before as prepare() does.
+test('the mesh as loaded comes back after a preparation, bit for bit', () => {
+  const { s, info } = loaded();
+  const positions = Array.from(s.inputPositions());
+  const indices = Array.from(s.inputIndices());
+  assert.ok(json(s.prepare(300, 1, 0, 0, 0)).triangles > info.triangles, 'subdivided and refined');
+  assert.deepEqual(json(s.prepareAsLoaded()), info, 'the mesh info of the load');
+  assert.deepEqual(Array.from(s.inputPositions()), positions);
+  assert.deepEqual(Array.from(s.inputIndices()), indices);
+  assert.equal(s.remapFaces(Int32Array.of(0)).length, 1, 'carried from the mesh before');
+  const empty = new ff.Session();
+  assert.match(json(empty.prepareAsLoaded()).message, /no mesh loaded/);
+  empty.delete();
+  s.delete();
+});
+
 test('subdivision levels use the file\'s quads (Catmull-Clark) and name what they did', () => {
   const { s } = loaded();
   const prepared = json(s.prepare(150, 1, 0, 0, 0));

@@ -74,8 +74,8 @@ export class App {
     remesh: () => this.remesh(),
     replay: (chain) => this.replay(chain),
     prepared: () => this.machine.mesh?.design.prepare,
-    // A design from before preparations were recorded has none: the nearest is no subdivision.
-    reprepare: (prepare, chain) => this.opener.prepareAgain(prepare ?? { panels: chain[chain.length - 1]!.panels, subdivide: 0 }, chain[chain.length - 1]!, chain.slice(0, -1), 'replay'),
+    // A design from before preparations were recorded has none: the mesh as loaded.
+    reprepare: (prepare, chain) => this.opener.prepareAgain(prepare, chain[chain.length - 1]!, chain.slice(0, -1), 'replay'),
   });
   private readonly opener: DesignOpener = new DesignOpener({
     machine: this.machine,

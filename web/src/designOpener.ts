@@ -176,22 +176,25 @@ export class DesignOpener {
 
   // The worker prepares the design's mesh again from the mesh as loaded; answered like a load
   // (onLoaded), with the paint and edited triangles of `params` carried when `how` is 'carry'.
-  prepareAgain(prepare: MeshPrepare, params: DesignParams, history: DesignParams[], how: 'carry' | 'replay'): void {
+  // No preparation (undo to a design saved before preparations were recorded): the mesh as
+  // loaded itself, which its edits and paint name.
+  prepareAgain(prepare: MeshPrepare | undefined, params: DesignParams, history: DesignParams[], how: 'carry' | 'replay'): void {
     const mesh = this.host.machine.mesh;
     if (!mesh || !this.host.machine.canRemesh) return;
-    const design: DesignMesh = { ...mesh.design, prepare };
+    const { prepare: _before, ...unprepared } = mesh.design;
+    const design: DesignMesh = prepare ? { ...unprepared, prepare } : unprepared;
     const token = this.host.machine.beginOpen({ design, label: mesh.label, fileName: mesh.fileName, up: 'guess', params, history, solve: true, reprepare: how });
     this.host.outputs.forgetLink();
     this.host.dropSolve();
     const carry: Carry = how === 'carry' ? { paint: this.host.editor.field(params.paint), faces: editFaces(params.edits) } : { paint: null, faces: new Int32Array(0) };
-    const job = this.host.solver.prepare(prepare, carry);
+    const job = this.host.solver.prepare(prepare ?? null, carry);
     if (job === null) {
       this.host.machine.abandonOpen(token);
       this.failOpen('the solver has lost the mesh: open it again');
       return;
     }
     this.host.machine.openSent(token, job);
-    this.host.status.show(`Preparing the mesh for ${prepare.panels.toLocaleString('en')} panels…`);
+    this.host.status.show(prepare ? `Preparing the mesh for ${prepare.panels.toLocaleString('en')} panels…` : 'Opening the mesh as loaded…');
     this.host.updateButtons();
   }
 

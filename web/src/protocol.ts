@@ -42,9 +42,10 @@ export interface SolveStep {
 export type WorkerRequest =
   // quiet: reload after a worker restart; answer without the display arrays.
   | { type: 'load'; job: number; mesh: MeshPayload; quiet: boolean }
-  // Prepares the loaded mesh again, from the mesh as loaded (Session.prepare), and carries
-  // `carry` over to it; answered like a load (`loaded`, with `carried`).
-  | { type: 'prepare'; job: number; prepare: MeshPrepare; carry: Carry }
+  // Prepares the loaded mesh again, from the mesh as loaded (Session.prepare; null: the mesh
+  // as loaded itself, Session.prepareAsLoaded, for a design saved before preparations were
+  // recorded), and carries `carry` over to it; answered like a load (`loaded`, with `carried`).
+  | { type: 'prepare'; job: number; prepare: MeshPrepare | null; carry: Carry }
   // fresh: start cold from the loaded mesh (Session.resetSolve), else warm-start from what the
   // session holds.
   // chain: parameter sets solved one after the other (a share link replays a warm-start chain).

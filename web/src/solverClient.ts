@@ -119,12 +119,13 @@ export class SolverClient {
     return this.job;
   }
 
-  // The loaded mesh prepared again (answered like a load); a new worker gets the mesh back with
-  // this preparation. Null without a loaded mesh.
-  prepare(prepare: MeshPrepare, carry: Carry): number | null {
+  // The loaded mesh prepared again (answered like a load; null: the mesh as loaded itself); a
+  // new worker gets the mesh back with this preparation. Null without a loaded mesh.
+  prepare(prepare: MeshPrepare | null, carry: Carry): number | null {
     if (!this.loadedMesh) return null;
     this.job += 1;
-    this.pendingMeshes.set(this.job, { ...this.loadedMesh, prepare: { ...prepare } });
+    const { prepare: _before, ...mesh } = this.loadedMesh;
+    this.pendingMeshes.set(this.job, prepare ? { ...mesh, prepare: { ...prepare } } : mesh);
     this.send({ type: 'prepare', job: this.job, prepare, carry });
     return this.job;
   }

@@ -121,10 +121,10 @@ function handleLoad(job: number, mesh: MeshPayload, quiet: boolean): void {
 
 // The mesh prepared again (for a panel count it could not serve, or another subdivision or
 // edge length), and the paint and edited triangles carried to it.
-function handlePrepare(job: number, prepare: MeshPrepare, carry: Carry): void {
+function handlePrepare(job: number, prepare: MeshPrepare | null, carry: Carry): void {
   if (currentRun) currentRun.cancelled = true;
   const target = requireSession();
-  const info = prepareInto(target, prepare);
+  const info = prepare ? prepareInto(target, prepare) : checked<MeshInfo>(target.prepareAsLoaded(), 'opening the mesh as loaded');
   let paint: Int8Array | null = null;
   if (carry.paint) {
     const values = target.transferField(Float64Array.from(carry.paint));
