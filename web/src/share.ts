@@ -66,6 +66,8 @@ export function isEdgeLength(value: unknown): value is number {
   return typeof value === 'number' && Number.isFinite(value) && value > 0 && value <= MAX_EDGE_LENGTH;
 }
 
+const PREPARE_KEYS = ['panels', 'subdivide', 'edgeLength', 'refineBelow', 'refineRounds'];
+
 // A mesh's preparation from a link or the stored session: absent, or exactly {panels,
 // subdivide} with an optional edgeLength, refineBelow and refineRounds.
 export function checkPrepare(value: unknown, where: string): Checked<MeshPrepare | undefined> {
@@ -84,8 +86,6 @@ export function checkPrepare(value: unknown, where: string): Checked<MeshPrepare
   }
   return { ok: true, value: prepareInOrder({ panels, subdivide, edgeLength, refineBelow, refineRounds }) };
 }
-const PREPARE_KEYS = ['panels', 'subdivide', 'edgeLength', 'refineBelow', 'refineRounds'];
-
 // The preparation with its keys in one order and the absent ones left out (links and the
 // stored session compare as text).
 function prepareInOrder(p: MeshPrepare): MeshPrepare {
