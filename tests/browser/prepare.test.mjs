@@ -208,6 +208,13 @@ test('undo to a design saved before preparations were recorded opens the mesh as
     assert.deepEqual(back.json.params.edits, [{ op: 'lock', face: 0 }]);
     assert.deepEqual([...back.paint], [...paint]);
     await screenshot(page, 'grid-undo-to-as-loaded');
+    // Redo: the prepared mesh and its record again.
+    assert.equal(await solveAfter(page, () => page.getByRole('button', { name: 'Redo' }).click(), 300_000), 20);
+    assert.doesNotMatch(await page.locator('#mesh-details').textContent(), /^288 triangles/);
+    const undone = page.url();
+    await page.getByRole('button', { name: 'Copy share link' }).click();
+    await page.waitForFunction((before) => location.hash.startsWith('#v1=') && location.href !== before, undone);
+    assert.deepEqual(readLink(await page.evaluate(() => location.href)).json.mesh.prepare, { panels: 20, subdivide: 0, refineBelow: 30, refineRounds: 5 });
   });
 });
 

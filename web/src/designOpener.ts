@@ -178,6 +178,8 @@ export class DesignOpener {
   // (onLoaded), with the paint and edited triangles of `params` carried when `how` is 'carry'.
   // No preparation (undo to a design saved before preparations were recorded): the mesh as
   // loaded itself, which its edits and paint name.
+  prepareAgain(prepare: MeshPrepare, params: DesignParams, history: DesignParams[], how: 'carry' | 'replay'): void;
+  prepareAgain(prepare: MeshPrepare | undefined, params: DesignParams, history: DesignParams[], how: 'replay'): void; // nothing to carry to
   prepareAgain(prepare: MeshPrepare | undefined, params: DesignParams, history: DesignParams[], how: 'carry' | 'replay'): void {
     const mesh = this.host.machine.mesh;
     if (!mesh || !this.host.machine.canRemesh) return;
@@ -290,7 +292,7 @@ export class DesignOpener {
     if (opening.reprepare === 'carry' && carried) {
       const paint = carried.paint && !isUniform(carried.paint) ? carried.paint : null;
       const { params, dropped } = carriedParams(opening.params, paint ? fieldKey(paint) : '', carried.faces);
-      this.host.editor.reprepared(opening.params, params, opening.design.prepare!, paint);
+      this.host.editor.reprepared(opening.params, params, opening.design.prepare!, paint); // 'carry' comes with one (prepareAgain)
       if (dropped > 0) this.solveNotice = `${dropped === 1 ? '1 merge edit was' : `${dropped} merge edits were`} dropped: on the prepared mesh both of its panels' triangles are one.`;
       chain = [params];
     } else {
