@@ -124,15 +124,14 @@ function gridLink({ edits = [{ op: 'lock', face: 0 }], panels = 4, prepare } = {
     lines.push(`f ${v(i, j)} ${v(i + 1, j)} ${v(i + 1, j + 1)} ${v(i, j + 1)}`);
   }
   const bytes = new TextEncoder().encode(`${lines.join('\n')}\n`);
-  if (prepare) {
-    const params = { ...quick, panels, edits };
-    return { paint: new Int8Array(0), link: linkOf(suite.url, { v: 1, mesh: { file: 'grid.obj', size: bytes.length, prepare }, params, history: [] }, bytes, new Int8Array(0)) };
-  }
-  const paint = Int8Array.from({ length: (n + 1) * (n + 1) }, (_, k) => (k % (n + 1) > 6 ? 32 : 0));
+  const painted = !prepare;
+  const paint = painted ? Int8Array.from({ length: (n + 1) * (n + 1) }, (_, k) => (k % (n + 1) > 6 ? 32 : 0)) : new Int8Array(0);
   const key = fieldKey(paint);
-  const params = { ...quick, panels, paint: key, edits };
-  const mesh = { file: 'grid.obj', size: bytes.length, ...(prepare === null ? {} : { prepare: { panels, subdivide: 0 } }) };
-  return { paint, link: linkOf(suite.url, { v: 1, mesh, params, history: [], paint: [{ key, vertices: paint.length }] }, bytes, paint) };
+  const recorded = prepare === undefined ? { panels, subdivide: 0 } : prepare;
+  const mesh = { file: 'grid.obj', size: bytes.length, ...(recorded ? { prepare: recorded } : {}) };
+  const params = { ...quick, panels, edits, ...(painted ? { paint: key } : {}) };
+  const json = { v: 1, mesh, params, history: [], ...(painted ? { paint: [{ key, vertices: paint.length }] } : {}) };
+  return { paint, link: linkOf(suite.url, json, bytes, paint) };
 }
 
 // A link saved before the rule went from 20 to 30 triangles per panel (its preparation has no

@@ -183,8 +183,7 @@ export class DesignOpener {
   prepareAgain(prepare: MeshPrepare | undefined, params: DesignParams, history: DesignParams[], how: 'carry' | 'replay'): void {
     const mesh = this.host.machine.mesh;
     if (!mesh || !this.host.machine.canRemesh) return;
-    const { prepare: _before, ...unprepared } = mesh.design;
-    const design: DesignMesh = prepare ? { ...unprepared, prepare } : unprepared;
+    const design = withPrepare(mesh.design, prepare);
     const token = this.host.machine.beginOpen({ design, label: mesh.label, fileName: mesh.fileName, up: 'guess', params, history, solve: true, reprepare: how });
     this.host.outputs.forgetLink();
     this.host.dropSolve();
@@ -312,4 +311,9 @@ export class DesignOpener {
 function withRepair(design: DesignMesh, repair: MeshRepair | undefined): DesignMesh {
   const { repair: _old, ...rest } = design;
   return repair ? { ...rest, repair } : rest;
+}
+
+function withPrepare(design: DesignMesh, prepare: MeshPrepare | undefined): DesignMesh {
+  const { prepare: _old, ...rest } = design;
+  return prepare ? { ...rest, prepare } : rest;
 }

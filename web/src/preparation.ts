@@ -2,8 +2,8 @@
 // to the mesh before comes along. The mesh is prepared for the panel count it was opened with;
 // a count it cannot serve (core/prepare/prepare.h: fewer than 20 triangles per panel; fewer
 // than 30 where 50 per panel is within reach; or a huge mesh with more than 1000 per panel) or
-// a new subdivision / target edge length prepares it again from the mesh as loaded, recorded in the design (DesignMesh.prepare) so links and
-// reloads make the same mesh. Painted density (per vertex) and panel edits (per triangle) are
+// a new subdivision / target edge length prepares it again from the mesh as loaded, recorded
+// in the design (DesignMesh.prepare) so links and reloads make the same mesh. Painted density (per vertex) and panel edits (per triangle) are
 // carried over by the worker (Session.transferField / remapFaces); this module rebuilds the
 // parameters from what it answers. No DOM: unit-tested in Node (tests/web/preparation.test.mjs).
 import { levelOf, STEPS_PER_OCTAVE } from './brush/densityField.ts';
