@@ -308,6 +308,8 @@ export class App {
     }
     if (what === 'open') {
       if (this.machine.mesh) this.preparation.show(this.machine.mesh.design); // a preparation refused
+      const takenBack = this.editor.repreparationLost();
+      if (takenBack) reason = `${reason}; ${takenBackNote(takenBack)}`;
       if (this.machine.opening) this.status.error(reason); // a later open goes on
       else this.opener.failOpen(reason);
       return;
@@ -337,7 +339,9 @@ export class App {
     this.opener.syncExampleSelect();
     this.status.resetProgress();
     const parts = [crash.meshKept ? CRASH_MESSAGE : `${CRASH_MESSAGE}, but without the mesh: open it again`];
-    if (lost.lostOpening) parts.push(`${lost.lostOpening.label} was not opened`);
+    const takenBack = this.editor.repreparationLost();
+    if (takenBack) parts.push(takenBackNote(takenBack));
+    else if (lost.lostOpening) parts.push(`${lost.lostOpening.label} was not opened`);
     this.status.error(`${parts.join('; ')}.`);
     this.updateButtons();
   }
@@ -397,4 +401,9 @@ export class App {
     document.body.dataset.opening = opening === null ? 'false' : opening.job === null ? 'reading' : 'loading';
     this.editor.updateButtons();
   }
+}
+
+// Said when an Undo or Redo was taken back because its mesh could not be prepared again.
+function takenBackNote(move: 'Undo' | 'Redo'): string {
+  return `${move} was taken back: the mesh could not be prepared again for that step, so the design on show stays`;
 }

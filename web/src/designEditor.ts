@@ -47,8 +47,9 @@ export interface EditorHost {
   remesh(): void; // what Remesh does with the form's parameters
   replay(chain: DesignParams[]): void; // solve `chain` afresh from the loaded mesh
   prepared(): MeshPrepare | undefined; // the preparation of the mesh on show
-  // Prepare the mesh as `prepare` says (from the mesh as loaded), then solve `chain` on it.
-  reprepare(prepare: MeshPrepare | undefined, chain: DesignParams[]): void;
+  // Prepare the mesh as `prepare` says (from the mesh as loaded), then solve `chain` on it;
+  // false when it could not even be asked (the solver lost the mesh).
+  reprepare(prepare: MeshPrepare | undefined, chain: DesignParams[]): boolean;
 }
 
 const HISTORY_LIMIT = 100;
@@ -63,6 +64,9 @@ export class DesignEditor {
   private readonly redoButton = element('redo', HTMLButtonElement);
   private readonly density: DensityPanel;
   private readonly panelEdits: EditPanel;
+  // Undo or Redo moved to a step on another preparation of the mesh, which is being prepared
+  // back: until it is on show, the form and history are the step's but the mesh is not.
+  private repreparing: 'Undo' | 'Redo' | null = null;
 
   constructor(private readonly host: EditorHost) {
     this.density = new DensityPanel({
@@ -128,6 +132,7 @@ export class DesignEditor {
 
   // The mesh was prepared again (undo or redo across a re-preparation): the history stays.
   surfaceChanged(): void {
+    this.repreparing = null;
     this.density.surfaceChanged();
     this.panelEdits.surfaceChanged();
     this.updateButtons();
@@ -254,25 +259,43 @@ export class DesignEditor {
   undo(): void {
     if (!this.host.canEdit() || this.density.painting) return;
     const step = this.history.undo();
-    if (step) this.restore(step);
+    if (step) this.restore(step, 'Undo');
   }
 
   redo(): void {
     if (!this.host.canEdit() || this.density.painting) return;
     const step = this.history.redo();
-    if (step) this.restore(step);
+    if (step) this.restore(step, 'Redo');
+  }
+
+  // The preparation an Undo or Redo asked for failed, or its worker crashed: the mesh on show
+  // is still the step's it left, so the history and the form go back to that step (else the
+  // next Remesh would solve the other step's edits and paint on this mesh's triangles).
+  // Returns which move was taken back, or null when none was under way.
+  repreparationLost(): 'Undo' | 'Redo' | null {
+    const move = this.repreparing;
+    if (!move) return null;
+    this.repreparing = null;
+    const back = move === 'Undo' ? this.history.redo() : this.history.undo();
+    if (back) {
+      this.host.form.write(back.params, back.count ?? undefined);
+      this.density.show();
+    }
+    this.updateButtons();
+    return move;
   }
 
   // The step's parameters and paint back in the form and the view, and its panels replayed
   // when its chain is known. A step never solved (parameters typed, no Remesh) only goes back
   // in the form, as typing it would: the panels on show stay until Remesh.
-  private restore(step: DesignStep): void {
+  private restore(step: DesignStep, move: 'Undo' | 'Redo'): void {
     this.host.form.write(step.params, step.count ?? undefined);
     this.density.show();
     this.updateButtons();
     // A step on another preparation of the mesh: the mesh is prepared back, then solved.
     if (!samePrepare(step.prepare, this.host.prepared())) {
-      this.host.reprepare(step.prepare, step.chain ?? [step.params]);
+      this.repreparing = move;
+      if (!this.host.reprepare(step.prepare, step.chain ?? [step.params])) this.repreparationLost();
       return;
     }
     const shown = this.host.solvedChain();

@@ -177,12 +177,12 @@ export class DesignOpener {
   // The worker prepares the design's mesh again from the mesh as loaded; answered like a load
   // (onLoaded), with the paint and edited triangles of `params` carried when `how` is 'carry'.
   // No preparation (undo to a design saved before preparations were recorded): the mesh as
-  // loaded itself, which its edits and paint name.
-  prepareAgain(prepare: MeshPrepare, params: DesignParams, history: DesignParams[], how: 'carry' | 'replay'): void;
-  prepareAgain(prepare: MeshPrepare | undefined, params: DesignParams, history: DesignParams[], how: 'replay'): void; // nothing to carry to
-  prepareAgain(prepare: MeshPrepare | undefined, params: DesignParams, history: DesignParams[], how: 'carry' | 'replay'): void {
+  // loaded itself, which its edits and paint name. False when nothing was sent.
+  prepareAgain(prepare: MeshPrepare, params: DesignParams, history: DesignParams[], how: 'carry' | 'replay'): boolean;
+  prepareAgain(prepare: MeshPrepare | undefined, params: DesignParams, history: DesignParams[], how: 'replay'): boolean; // nothing to carry to
+  prepareAgain(prepare: MeshPrepare | undefined, params: DesignParams, history: DesignParams[], how: 'carry' | 'replay'): boolean {
     const mesh = this.host.machine.mesh;
-    if (!mesh || !this.host.machine.canRemesh) return;
+    if (!mesh || !this.host.machine.canRemesh) return false;
     const design = withPrepare(mesh.design, prepare);
     const token = this.host.machine.beginOpen({ design, label: mesh.label, fileName: mesh.fileName, up: 'guess', params, history, solve: true, reprepare: how });
     this.host.outputs.forgetLink();
@@ -192,11 +192,12 @@ export class DesignOpener {
     if (job === null) {
       this.host.machine.abandonOpen(token);
       this.failOpen('the solver has lost the mesh: open it again');
-      return;
+      return false;
     }
     this.host.machine.openSent(token, job);
     this.host.status.show(prepare ? `Preparing the mesh for ${prepare.panels.toLocaleString('en')} panels…` : 'Opening the mesh as loaded…');
     this.host.updateButtons();
+    return true;
   }
 
   async openState(state: DesignState, note: string, fromLink: boolean): Promise<void> {

@@ -59,9 +59,10 @@ export type WorkerRequest =
   // A density expression's values per vertex of the loaded mesh (the Density colour map shows
   // expression x paint). Its own job numbers too (SolverClient.expressionDensity).
   | { type: 'expressionDensity'; job: number; expression: string }
-  // Test hook (?crashAfterSteps=N): N steps into its second solve the worker makes a wasm call
-  // that throws a non-Status error, as running out of memory would.
-  | { type: 'test'; job: 0; crashAfterSteps: number };
+  // Test hooks: the worker makes a wasm call that throws a non-Status error, as running out of
+  // memory would, N steps into its second solve (?crashAfterSteps=N) or at its Nth preparation
+  // (?crashOnPrepare=N).
+  | { type: 'test'; job: 0; crashAfterSteps?: number; crashOnPrepare?: number };
 
 // The report's keys as DESIGN.md 4 names them; read defensively (the core may add keys).
 export type QualityReport = Record<string, unknown>;

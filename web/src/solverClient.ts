@@ -12,8 +12,10 @@ export interface SolverOptions {
   // How long a cancel waits for the worker before replacing it (tests set 0 to exercise the
   // replacement path deterministically).
   cancelGraceMs?: number;
-  // Test hook: the first worker crashes this many steps into its second solve.
+  // Test hooks: the first worker crashes this many steps into its second solve, or at its
+  // preparation of this number (1: the first).
   crashAfterSteps?: number;
+  crashOnPrepare?: number;
 }
 
 export interface Crash {
@@ -49,7 +51,8 @@ export class SolverClient {
   constructor(private readonly events: SolverEvents, options: SolverOptions = {}) {
     this.cancelGraceMs = options.cancelGraceMs ?? CANCEL_GRACE_MS;
     this.worker = this.startWorker();
-    if (options.crashAfterSteps !== undefined) this.worker.postMessage({ type: 'test', job: 0, crashAfterSteps: options.crashAfterSteps } satisfies WorkerRequest);
+    const { crashAfterSteps, crashOnPrepare } = options;
+    if (crashAfterSteps !== undefined || crashOnPrepare !== undefined) this.worker.postMessage({ type: 'test', job: 0, crashAfterSteps, crashOnPrepare } satisfies WorkerRequest);
   }
 
   private startWorker(): Worker {
@@ -212,7 +215,7 @@ export class SolverClient {
 
 // Test hooks from the page's address: ?cancelGrace=0 makes every cancel replace the worker
 // (the path a long step takes); ?crashAfterSteps=N makes the first worker crash N steps into
-// its second solve.
+// its second solve, ?crashOnPrepare=N at its Nth preparation.
 export function solverTestHooks(): SolverOptions {
   const numberFromUrl = (name: string, max: number): number | undefined => {
     const value = new URLSearchParams(location.search).get(name);
@@ -223,6 +226,8 @@ export function solverTestHooks(): SolverOptions {
   const cancelGraceMs = numberFromUrl('cancelGrace', 10_000);
   const crashAfterSteps = numberFromUrl('crashAfterSteps', 1_000_000);
   if (cancelGraceMs !== undefined) options.cancelGraceMs = cancelGraceMs;
+  const crashOnPrepare = numberFromUrl('crashOnPrepare', 1_000);
   if (crashAfterSteps !== undefined) options.crashAfterSteps = crashAfterSteps;
+  if (crashOnPrepare !== undefined && crashOnPrepare > 0) options.crashOnPrepare = crashOnPrepare;
   return options;
 }

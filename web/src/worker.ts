@@ -33,6 +33,7 @@ let session: Session | null = null;
 let currentRun: Run | null = null;
 let crashed = false;
 let crashAfterSteps: number | null = null; // test hook: counts down in the second solve
+let crashOnPrepare: number | null = null; // test hook: counts down the preparations
 let solvesFinished = 0;
 
 // A Status with ok false: the request failed, the session kept its mesh and result. A load
@@ -123,6 +124,7 @@ function handleLoad(job: number, mesh: MeshPayload, quiet: boolean): void {
 // edge length), and the paint and edited triangles carried to it.
 function handlePrepare(job: number, prepare: MeshPrepare | null, carry: Carry): void {
   if (currentRun) currentRun.cancelled = true;
+  maybeCrashOnPrepareForTest();
   const target = requireSession();
   const info = prepare ? prepareInto(target, prepare) : checked<MeshInfo>(target.prepareAsLoaded(), 'opening the mesh as loaded');
   let paint: Int8Array | null = null;
@@ -160,14 +162,27 @@ function collectResult(target: Session, solveSeconds: number, steps: number): So
   };
 }
 
-// The test hook (?crashAfterSteps=N): N steps into the worker's second solve (so that a
-// result exists to keep), a wasm getter on a deleted Session throws Embind's BindingError, a
-// real non-Status exception out of the module.
+// The test hooks (?crashAfterSteps=N: N steps into the worker's second solve, so that a result
+// exists to keep; ?crashOnPrepare=N: at its Nth preparation): a wasm getter on a deleted
+// Session throws Embind's BindingError, a real non-Status exception out of the module.
 function maybeCrashForTest(): void {
-  if (crashAfterSteps === null || !flatfacet || solvesFinished === 0) return;
+  if (crashAfterSteps === null || solvesFinished === 0) return;
   crashAfterSteps -= 1;
   if (crashAfterSteps > 0) return;
   crashAfterSteps = null;
+  crashForTest();
+}
+
+function maybeCrashOnPrepareForTest(): void {
+  if (crashOnPrepare === null) return;
+  crashOnPrepare -= 1;
+  if (crashOnPrepare > 0) return;
+  crashOnPrepare = null;
+  crashForTest();
+}
+
+function crashForTest(): void {
+  if (!flatfacet) return;
   const doomed = new flatfacet.Session();
   doomed.delete();
   doomed.clusterIds();
@@ -265,7 +280,8 @@ function handle(request: WorkerRequest): void {
       post({ type: 'expressionDensity', job: request.job, expression: request.expression, values: requireSession().expressionDensity(request.expression) });
       return;
     case 'test':
-      crashAfterSteps = request.crashAfterSteps;
+      crashAfterSteps = request.crashAfterSteps ?? null;
+      crashOnPrepare = request.crashOnPrepare ?? null;
       return;
   }
 }
