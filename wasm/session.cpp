@@ -79,7 +79,6 @@ std::string Session::load(const std::string& name, TriMesh raw, int input_triang
   topology_ = std::move(topology);
   face_polygon_ = std::move(face_polygon);
   input_triangles_ = input_triangles;
-  prepared_ = false;
   prepared_notes_.clear();
   cleanup_ = clean.report.messages();
   clean_report_ = clean.report;

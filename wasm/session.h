@@ -149,7 +149,7 @@ class Session {
   // (session_prepare.cpp).
   void forget_mesh_before();
   // prepare()'s and prepare_as_loaded()'s end: `mesh` on show, the mesh before kept to carry from.
-  std::string adopt_mesh(TriMesh mesh, bool as_loaded, std::vector<std::string> notes);
+  std::string adopt_mesh(TriMesh mesh, std::vector<std::string> notes);
   const QualityReport* quality();
   void forget_result();
   // Edits (session_edits.cpp): what set_params compares to tell an edit from a new solve
@@ -170,7 +170,6 @@ class Session {
   std::vector<std::string> prepared_notes_;  // what prepare() did and why
   std::vector<int> face_polygon_;     // per triangle of original_: its polygon in the file
   int input_triangles_ = 0;
-  bool prepared_ = false;  // mesh_ is not original_ (prepare() changed it)
   RemeshParams params_;
   FabricationSettings fabrication_;
   // The last cut-sheet packing and what it was packed from (session_fabrication.cpp): one

@@ -57,21 +57,20 @@ std::string Session::prepare(int panels, int subdivide, double edge_length, int 
     if (refine_below != 0) options.refine_triangles_per_panel = refine_below;  // checked by the core
     if (refine_rounds != 0) options.refine_rounds = refine_rounds;             // checked by the core
     PreparedSurface prepared = prepare_surface(mesh, panels, {}, options);
-    const bool as_loaded = subdivide == 0 && !prepared.report.applied;
-    if (!as_loaded)
+    if (subdivide != 0 || prepared.report.applied)
       for (const std::string& m : prepared.report.messages) notes.push_back(m);
-    return adopt_mesh(std::move(prepared.mesh), as_loaded, std::move(notes));
+    return adopt_mesh(std::move(prepared.mesh), std::move(notes));
   });
 }
 
 std::string Session::prepare_as_loaded() {
   return guarded([&] {
     if (original_.num_faces() == 0) throw InputError("no mesh loaded");
-    return adopt_mesh(original_, true, {});
+    return adopt_mesh(original_, {});
   });
 }
 
-std::string Session::adopt_mesh(TriMesh mesh, bool as_loaded, std::vector<std::string> notes) {
+std::string Session::adopt_mesh(TriMesh mesh, std::vector<std::string> notes) {
   // Even a mesh left as loaded replaces the current one: the session then holds no solve
   // (as after a load) and the transfers below carry from the mesh before.
   MeshTopology topology = build_topology(mesh);
@@ -79,7 +78,6 @@ std::string Session::adopt_mesh(TriMesh mesh, bool as_loaded, std::vector<std::s
   previous_ = std::move(mesh_);
   mesh_ = std::move(mesh);
   topology_ = std::move(topology);
-  prepared_ = !as_loaded;
   prepared_notes_ = std::move(notes);
   params_.density.clear();
   remesher_.reset();
