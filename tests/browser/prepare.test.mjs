@@ -217,43 +217,50 @@ test('undo to a design saved before preparations were recorded opens the mesh as
   });
 });
 
-// The same design, with a worker that crashes at its second preparation (as running out of
-// memory would): the Undo's. The mesh on show is still the prepared one, so the Undo is taken
-// back: the form, the buttons and the link are the prepared step's again (not the step before,
-// whose lock names a triangle of the mesh as loaded), Remesh solves it on its own mesh, and the
-// new worker then undoes as before.
-test('an Undo whose preparation crashes is taken back: the design on show stays whole', () => {
-  const { link } = gridLink({ panels: 20, prepare: null });
-  return suite.withPage(link.replace('#v1=', '?crashOnPrepare=2#v1='), async (page) => {
-    const shared = async () => {
-      const before = page.url();
-      await page.getByRole('button', { name: 'Copy share link' }).click();
-      await page.waitForFunction((before) => location.hash.startsWith('#v1=') && location.href !== before, before);
-      return readLink(await page.evaluate(() => location.href)).json;
-    };
-    assert.equal(await waitForDone(page), 20);
-    assert.equal(await solveAfter(page, () => remesh(page), 300_000), 20);
-    const preparedDetails = await page.locator('#mesh-details').textContent();
-    assert.doesNotMatch(preparedDetails, /^288 triangles/, 'prepared for 20 panels');
-    const design = await shared();
-    assert.deepEqual(design.mesh.prepare, { panels: 20, subdivide: 0, refineBelow: 30, refineRounds: 5 });
+// The same design, with a worker whose second preparation (the Undo's) crashes, as running out
+// of memory would, or is refused. The mesh on show is still the prepared one, so the Undo is
+// taken back: the form, the buttons and the link are the prepared step's again (not the step
+// before, whose lock names a triangle of the mesh as loaded), Remesh solves it on its own mesh,
+// and Undo then works (the fault comes once).
+const faults = [
+  { kind: 'crash', said: /crashed and was restarted; the last result is kept; Undo was taken back: / },
+  { kind: 'refuse', said: /^Error: the preparation was refused \(test hook \?refuseOnPrepare\); Undo was taken back: / },
+];
+for (const { kind, said } of faults) {
+  test(`an Undo whose preparation ${kind === 'crash' ? 'crashes' : 'is refused'} is taken back: the design on show stays whole`, () => {
+    const { link } = gridLink({ panels: 20, prepare: null });
+    return suite.withPage(link.replace('#v1=', `?${kind}OnPrepare=2#v1=`), async (page) => {
+      const shared = async () => {
+        const before = page.url();
+        await page.getByRole('button', { name: 'Copy share link' }).click();
+        await page.waitForFunction((before) => location.hash.startsWith('#v1=') && location.href !== before, before);
+        return readLink(await page.evaluate(() => location.href)).json;
+      };
+      assert.equal(await waitForDone(page), 20);
+      assert.equal(await solveAfter(page, () => remesh(page), 300_000), 20);
+      const preparedDetails = await page.locator('#mesh-details').textContent();
+      assert.doesNotMatch(preparedDetails, /^288 triangles/, 'prepared for 20 panels');
+      const design = await shared();
+      assert.deepEqual(design.mesh.prepare, { panels: 20, subdivide: 0, refineBelow: 30, refineRounds: 5 });
 
-    const message = await errorAfter(page, () => page.getByRole('button', { name: 'Undo' }).click(), 60_000);
-    assert.match(message, /crashed and was restarted; the last result is kept; Undo was taken back: the mesh could not be prepared again for that step, so the design on show stays/);
-    assert.equal(await page.locator('#mesh-details').textContent(), preparedDetails, 'the prepared mesh is still on show');
-    assert.equal(await page.getByRole('button', { name: 'Undo' }).isEnabled(), true);
-    assert.equal(await page.getByRole('button', { name: 'Redo' }).isEnabled(), false, 'nothing to redo: the Undo did not happen');
-    const after = await shared();
-    assert.deepEqual(after.mesh, design.mesh);
-    assert.deepEqual(after.params, design.params, "the prepared step's parameters and edits, not the step before's");
-    await screenshot(page, 'grid-undo-crash-taken-back');
+      const message = await errorAfter(page, () => page.getByRole('button', { name: 'Undo' }).click(), 60_000);
+      assert.match(message, said);
+      assert.match(message, /Undo was taken back: the mesh could not be prepared again for that step, so the design on show stays\.?$/);
+      assert.equal(await page.locator('#mesh-details').textContent(), preparedDetails, 'the prepared mesh is still on show');
+      assert.equal(await page.getByRole('button', { name: 'Undo' }).isEnabled(), true);
+      assert.equal(await page.getByRole('button', { name: 'Redo' }).isEnabled(), false, 'nothing to redo: the Undo did not happen');
+      const after = await shared();
+      assert.deepEqual(after.mesh, design.mesh);
+      assert.deepEqual(after.params, design.params, "the prepared step's parameters and edits, not the step before's");
+      if (kind === 'crash') await screenshot(page, 'grid-undo-crash-taken-back');
 
-    assert.equal(await solveAfter(page, () => remesh(page), 300_000), 20);
-    assert.equal(await page.locator('#mesh-details').textContent(), preparedDetails, 'solved on its own mesh, not prepared again');
-    assert.equal(await solveAfter(page, () => page.getByRole('button', { name: 'Undo' }).click(), 300_000), 20);
-    assert.match(await page.locator('#mesh-details').textContent(), /^288 triangles/, 'the new worker undoes to the mesh as loaded');
+      assert.equal(await solveAfter(page, () => remesh(page), 300_000), 20);
+      assert.equal(await page.locator('#mesh-details').textContent(), preparedDetails, 'solved on its own mesh, not prepared again');
+      assert.equal(await solveAfter(page, () => page.getByRole('button', { name: 'Undo' }).click(), 300_000), 20);
+      assert.match(await page.locator('#mesh-details').textContent(), /^288 triangles/, 'Undo to the mesh as loaded works again');
+    });
   });
-});
+}
 
 test('preparing again carries the paint (by position) and the panel edits to the new mesh', () => {
   const { paint, link } = gridLink();

@@ -60,9 +60,14 @@ export type WorkerRequest =
   // expression x paint). Its own job numbers too (SolverClient.expressionDensity).
   | { type: 'expressionDensity'; job: number; expression: string }
   // Test hooks: the worker makes a wasm call that throws a non-Status error, as running out of
-  // memory would, N steps into its second solve (?crashAfterSteps=N) or at its Nth preparation
-  // (?crashOnPrepare=N).
-  | { type: 'test'; job: 0; crashAfterSteps?: number; crashOnPrepare?: number };
+  // memory would, N steps into its second solve (?crashAfterSteps=N); its Nth preparation of the
+  // mesh crashes so (?crashOnPrepare=N) or is refused as the core refuses (?refuseOnPrepare=N).
+  | { type: 'test'; job: 0; crashAfterSteps?: number; prepareFault?: PrepareFault };
+
+export interface PrepareFault {
+  at: number; // 1: the first preparation
+  kind: 'crash' | 'refuse';
+}
 
 // The report's keys as DESIGN.md 4 names them; read defensively (the core may add keys).
 export type QualityReport = Record<string, unknown>;

@@ -4,7 +4,7 @@
 // worker that crashed (an error event, or a wasm call that threw something other than a
 // Status) is replaced the same way, and the page is told so.
 import type { FabricationParams } from '@flatfacet/wasm';
-import type { Carry, MeshPayload, MeshPrepare, SolveStep, WorkerRequest, WorkerResponse } from './protocol.ts';
+import type { Carry, MeshPayload, MeshPrepare, PrepareFault, SolveStep, WorkerRequest, WorkerResponse } from './protocol.ts';
 
 const CANCEL_GRACE_MS = 250;
 
@@ -12,10 +12,10 @@ export interface SolverOptions {
   // How long a cancel waits for the worker before replacing it (tests set 0 to exercise the
   // replacement path deterministically).
   cancelGraceMs?: number;
-  // Test hooks: the first worker crashes this many steps into its second solve, or at its
-  // preparation of this number (1: the first).
+  // Test hooks: the first worker crashes this many steps into its second solve; its
+  // preparation of this number crashes or is refused.
   crashAfterSteps?: number;
-  crashOnPrepare?: number;
+  prepareFault?: PrepareFault;
 }
 
 export interface Crash {
@@ -51,8 +51,8 @@ export class SolverClient {
   constructor(private readonly events: SolverEvents, options: SolverOptions = {}) {
     this.cancelGraceMs = options.cancelGraceMs ?? CANCEL_GRACE_MS;
     this.worker = this.startWorker();
-    const { crashAfterSteps, crashOnPrepare } = options;
-    if (crashAfterSteps !== undefined || crashOnPrepare !== undefined) this.worker.postMessage({ type: 'test', job: 0, crashAfterSteps, crashOnPrepare } satisfies WorkerRequest);
+    const { crashAfterSteps, prepareFault } = options;
+    if (crashAfterSteps !== undefined || prepareFault !== undefined) this.worker.postMessage({ type: 'test', job: 0, crashAfterSteps, prepareFault } satisfies WorkerRequest);
   }
 
   private startWorker(): Worker {
@@ -215,7 +215,8 @@ export class SolverClient {
 
 // Test hooks from the page's address: ?cancelGrace=0 makes every cancel replace the worker
 // (the path a long step takes); ?crashAfterSteps=N makes the first worker crash N steps into
-// its second solve, ?crashOnPrepare=N at its Nth preparation.
+// its second solve; ?crashOnPrepare=N and ?refuseOnPrepare=N make its Nth preparation crash or
+// be refused.
 export function solverTestHooks(): SolverOptions {
   const numberFromUrl = (name: string, max: number): number | undefined => {
     const value = new URLSearchParams(location.search).get(name);
@@ -226,8 +227,10 @@ export function solverTestHooks(): SolverOptions {
   const cancelGraceMs = numberFromUrl('cancelGrace', 10_000);
   const crashAfterSteps = numberFromUrl('crashAfterSteps', 1_000_000);
   if (cancelGraceMs !== undefined) options.cancelGraceMs = cancelGraceMs;
-  const crashOnPrepare = numberFromUrl('crashOnPrepare', 1_000);
   if (crashAfterSteps !== undefined) options.crashAfterSteps = crashAfterSteps;
-  if (crashOnPrepare !== undefined && crashOnPrepare > 0) options.crashOnPrepare = crashOnPrepare;
+  for (const kind of ['crash', 'refuse'] as const) {
+    const at = numberFromUrl(`${kind}OnPrepare`, 1_000);
+    if (at !== undefined && at > 0) options.prepareFault = { at, kind };
+  }
   return options;
 }

@@ -12,7 +12,7 @@ import { decodeField } from './brush/densityField.ts';
 import { levelsOf } from './preparation.ts';
 import { LEGACY_REFINE_BELOW, LEGACY_REFINE_ROUNDS } from './share.ts';
 import { fabricationOf } from './workerFabrication.ts';
-import { transferablesOf, type Carry, type MeshPayload, type MeshPrepare, type QualityReport, type SolveResult, type SolveStep, type WorkerRequest, type WorkerResponse } from './protocol.ts';
+import { transferablesOf, type Carry, type MeshPayload, type MeshPrepare, type PrepareFault, type QualityReport, type SolveResult, type SolveStep, type WorkerRequest, type WorkerResponse } from './protocol.ts';
 
 // The DOM lib types `self` as a Window; in a dedicated worker postMessage takes a transfer list.
 const scope = self as unknown as {
@@ -33,7 +33,7 @@ let session: Session | null = null;
 let currentRun: Run | null = null;
 let crashed = false;
 let crashAfterSteps: number | null = null; // test hook: counts down in the second solve
-let crashOnPrepare: number | null = null; // test hook: counts down the preparations
+let prepareFault: PrepareFault | null = null; // test hook: `at` counts down the preparations
 let solvesFinished = 0;
 
 // A Status with ok false: the request failed, the session kept its mesh and result. A load
@@ -124,7 +124,7 @@ function handleLoad(job: number, mesh: MeshPayload, quiet: boolean): void {
 // edge length), and the paint and edited triangles carried to it.
 function handlePrepare(job: number, prepare: MeshPrepare | null, carry: Carry): void {
   if (currentRun) currentRun.cancelled = true;
-  maybeCrashOnPrepareForTest();
+  maybePrepareFaultForTest();
   const target = requireSession();
   const info = prepare ? prepareInto(target, prepare) : checked<MeshInfo>(target.prepareAsLoaded(), 'opening the mesh as loaded');
   let paint: Int8Array | null = null;
@@ -162,8 +162,8 @@ function collectResult(target: Session, solveSeconds: number, steps: number): So
   };
 }
 
-// The test hooks (?crashAfterSteps=N: N steps into the worker's second solve, so that a result
-// exists to keep; ?crashOnPrepare=N: at its Nth preparation): a wasm getter on a deleted
+// The crash test hooks (?crashAfterSteps=N: N steps into the worker's second solve, so that a
+// result exists to keep; ?crashOnPrepare=N: at its Nth preparation): a wasm getter on a deleted
 // Session throws Embind's BindingError, a real non-Status exception out of the module.
 function maybeCrashForTest(): void {
   if (crashAfterSteps === null || solvesFinished === 0) return;
@@ -173,11 +173,13 @@ function maybeCrashForTest(): void {
   crashForTest();
 }
 
-function maybeCrashOnPrepareForTest(): void {
-  if (crashOnPrepare === null) return;
-  crashOnPrepare -= 1;
-  if (crashOnPrepare > 0) return;
-  crashOnPrepare = null;
+function maybePrepareFaultForTest(): void {
+  if (prepareFault === null) return;
+  prepareFault.at -= 1;
+  if (prepareFault.at > 0) return;
+  const { kind } = prepareFault;
+  prepareFault = null;
+  if (kind === 'refuse') throw new StatusError('the preparation was refused (test hook ?refuseOnPrepare)');
   crashForTest();
 }
 
@@ -281,7 +283,7 @@ function handle(request: WorkerRequest): void {
       return;
     case 'test':
       crashAfterSteps = request.crashAfterSteps ?? null;
-      crashOnPrepare = request.crashOnPrepare ?? null;
+      prepareFault = request.prepareFault ? { ...request.prepareFault } : null;
       return;
   }
 }
