@@ -217,50 +217,79 @@ test('undo to a design saved before preparations were recorded opens the mesh as
   });
 });
 
-// The same design, with a worker whose second preparation (the Undo's) crashes, as running out
-// of memory would, or is refused. The mesh on show is still the prepared one, so the Undo is
-// taken back: the form, the buttons and the link are the prepared step's again (not the step
-// before, whose lock names a triangle of the mesh as loaded), Remesh solves it on its own mesh,
-// and Undo then works (the fault comes once).
+// The same design, with a worker whose preparation of an Undo or a Redo crashes (as running out
+// of memory would) or is refused. The mesh on show is still the step's the move left, so the
+// move is taken back: the history and the form are that step's again (not the other step's,
+// whose lock and paint name the other mesh: Remesh would then be refused or lock another
+// triangle), Remesh solves it on its own mesh, and the move works next time (the fault comes
+// once). The Redo case prepares three times: the Remesh, the Undo, the Redo.
+const history = (page) => page.evaluate(() => [Number(document.body.dataset.historyIndex), Number(document.body.dataset.historySize)]);
 const faults = [
-  { kind: 'crash', said: /crashed and was restarted; the last result is kept; Undo was taken back: / },
-  { kind: 'refuse', said: /^Error: the preparation was refused \(test hook \?refuseOnPrepare\); Undo was taken back: / },
+  { kind: 'crash', move: 'Undo', at: 2, said: /crashed and was restarted; the last result is kept; Undo was taken back: / },
+  { kind: 'refuse', move: 'Redo', at: 3, said: /^Error: the preparation was refused \(test hook \?refuseOnPrepare\); Redo was taken back: / },
 ];
-for (const { kind, said } of faults) {
-  test(`an Undo whose preparation ${kind === 'crash' ? 'crashes' : 'is refused'} is taken back: the design on show stays whole`, () => {
+for (const { kind, move, at, said } of faults) {
+  test(`${move === 'Undo' ? 'an' : 'a'} ${move} whose preparation ${kind === 'crash' ? 'crashes' : 'is refused'} is taken back: the design on show stays whole`, () => {
     const { link } = gridLink({ panels: 20, prepare: null });
-    return suite.withPage(link.replace('#v1=', `?${kind}OnPrepare=2#v1=`), async (page) => {
-      const shared = async () => {
-        const before = page.url();
-        await page.getByRole('button', { name: 'Copy share link' }).click();
-        await page.waitForFunction((before) => location.hash.startsWith('#v1=') && location.href !== before, before);
-        return readLink(await page.evaluate(() => location.href)).json;
-      };
+    return suite.withPage(link.replace('#v1=', `?${kind}OnPrepare=${at}#v1=`), async (page) => {
       assert.equal(await waitForDone(page), 20);
       assert.equal(await solveAfter(page, () => remesh(page), 300_000), 20);
-      const preparedDetails = await page.locator('#mesh-details').textContent();
-      assert.doesNotMatch(preparedDetails, /^288 triangles/, 'prepared for 20 panels');
-      const design = await shared();
-      assert.deepEqual(design.mesh.prepare, { panels: 20, subdivide: 0, refineBelow: 30, refineRounds: 5 });
+      assert.doesNotMatch(await page.locator('#mesh-details').textContent(), /^288 triangles/, 'prepared for 20 panels');
+      if (move === 'Redo') {
+        assert.equal(await solveAfter(page, () => page.getByRole('button', { name: 'Undo' }).click(), 300_000), 20);
+        assert.match(await page.locator('#mesh-details').textContent(), /^288 triangles/);
+      }
+      const details = await page.locator('#mesh-details').textContent();
+      const before = await history(page);
+      assert.deepEqual(before, move === 'Undo' ? [1, 2] : [0, 2]);
 
-      const message = await errorAfter(page, () => page.getByRole('button', { name: 'Undo' }).click(), 60_000);
+      const message = await errorAfter(page, () => page.getByRole('button', { name: move }).click(), 60_000);
       assert.match(message, said);
-      assert.match(message, /Undo was taken back: the mesh could not be prepared again for that step, so the design on show stays\.?$/);
-      assert.equal(await page.locator('#mesh-details').textContent(), preparedDetails, 'the prepared mesh is still on show');
-      assert.equal(await page.getByRole('button', { name: 'Undo' }).isEnabled(), true);
-      assert.equal(await page.getByRole('button', { name: 'Redo' }).isEnabled(), false, 'nothing to redo: the Undo did not happen');
-      const after = await shared();
-      assert.deepEqual(after.mesh, design.mesh);
-      assert.deepEqual(after.params, design.params, "the prepared step's parameters and edits, not the step before's");
+      assert.match(message, new RegExp(`${move} was taken back: the mesh could not be prepared again for that step, so the design on show stays\\.?$`));
+      assert.equal(await page.locator('#mesh-details').textContent(), details, 'the mesh is still the one on show');
+      assert.deepEqual(await history(page), before, 'the history is back at the step on show');
+      assert.equal(await page.getByRole('button', { name: 'Undo' }).isEnabled(), move === 'Undo');
+      assert.equal(await page.getByRole('button', { name: 'Redo' }).isEnabled(), move === 'Redo');
       if (kind === 'crash') await screenshot(page, 'grid-undo-crash-taken-back');
 
+      // The form is the step's on show: Remesh solves it (another step's paint would be refused
+      // for its vertex count, on this mesh or carried from it). On the prepared mesh it is solved
+      // there; on the mesh as loaded, 14.4 triangles per panel, Remesh prepares it as at first.
       assert.equal(await solveAfter(page, () => remesh(page), 300_000), 20);
-      assert.equal(await page.locator('#mesh-details').textContent(), preparedDetails, 'solved on its own mesh, not prepared again');
-      assert.equal(await solveAfter(page, () => page.getByRole('button', { name: 'Undo' }).click(), 300_000), 20);
-      assert.match(await page.locator('#mesh-details').textContent(), /^288 triangles/, 'Undo to the mesh as loaded works again');
+      if (move === 'Undo') {
+        assert.equal(await page.locator('#mesh-details').textContent(), details, 'solved on its own mesh, not prepared again');
+        assert.equal(await solveAfter(page, () => page.getByRole('button', { name: 'Undo' }).click(), 300_000), 20);
+        assert.match(await page.locator('#mesh-details').textContent(), /^288 triangles/, 'Undo to the mesh as loaded works now');
+      } else {
+        assert.doesNotMatch(await page.locator('#mesh-details').textContent(), /^288 triangles/, 'prepared, with the paint carried');
+      }
     });
   });
 }
+
+// A parameter committed while the Undo prepares the mesh back (in the same task as the click, so
+// before the worker can answer) is not recorded against the mesh on show: the crash takes the
+// Undo back with the form, and the history has no step for it.
+test('a parameter typed while an Undo prepares the mesh back goes with the Undo when it is taken back', () => {
+  const { link } = gridLink({ panels: 20, prepare: null });
+  return suite.withPage(link.replace('#v1=', '?crashOnPrepare=2#v1='), async (page) => {
+    assert.equal(await waitForDone(page), 20);
+    assert.equal(await solveAfter(page, () => remesh(page), 300_000), 20);
+    const message = await errorAfter(page, () =>
+      page.evaluate(() => {
+        document.getElementById('undo').click();
+        const seed = document.getElementById('seed');
+        seed.value = '7';
+        seed.dispatchEvent(new Event('change'));
+      }),
+    );
+    assert.match(message, /Undo was taken back/);
+    assert.deepEqual(await history(page), [1, 2], 'no step for the seed typed meanwhile');
+    assert.equal(await page.getByLabel('Seed', { exact: true }).inputValue(), '1');
+    assert.equal(await page.getByRole('button', { name: 'Redo' }).isEnabled(), false);
+    assert.equal(await solveAfter(page, () => remesh(page), 300_000), 20);
+  });
+});
 
 test('preparing again carries the paint (by position) and the panel edits to the new mesh', () => {
   const { paint, link } = gridLink();

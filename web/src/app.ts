@@ -308,8 +308,13 @@ export class App {
     }
     if (what === 'open') {
       if (this.machine.mesh) this.preparation.show(this.machine.mesh.design); // a preparation refused
-      const takenBack = this.editor.repreparationLost();
-      if (takenBack) reason = `${reason}; ${takenBackNote(takenBack)}`;
+      // Another open going on has written the form for its design.
+      const takenBack = this.editor.repreparationLost(this.machine.opening === null);
+      if (takenBack) {
+        reason = `${reason}; ${takenBackNote(takenBack)}`;
+        const solved = this.machine.solved; // the preparation dropped a solve under way
+        if (solved) this.viewer.setClusters(solved.result.clusterIds);
+      }
       if (this.machine.opening) this.status.error(reason); // a later open goes on
       else this.opener.failOpen(reason);
       return;
@@ -339,9 +344,11 @@ export class App {
     this.opener.syncExampleSelect();
     this.status.resetProgress();
     const parts = [crash.meshKept ? CRASH_MESSAGE : `${CRASH_MESSAGE}, but without the mesh: open it again`];
-    const takenBack = this.editor.repreparationLost();
-    if (takenBack) parts.push(takenBackNote(takenBack));
-    else if (lost.lostOpening) parts.push(`${lost.lostOpening.label} was not opened`);
+    const takenBack = this.editor.repreparationLost(this.machine.opening === null);
+    if (takenBack && crash.meshKept) parts.push(takenBackNote(takenBack));
+    const lostOpen = lost.lostOpening;
+    if (lostOpen && !lostOpen.reprepare) parts.push(`${lostOpen.label} was not opened`);
+    else if (lostOpen?.reprepare === 'carry') parts.push('the mesh was not prepared again');
     this.status.error(`${parts.join('; ')}.`);
     this.updateButtons();
   }

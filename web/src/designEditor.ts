@@ -54,6 +54,13 @@ export interface EditorHost {
 
 const HISTORY_LIMIT = 100;
 
+// An Undo or Redo: the step it left and the one it reached.
+interface HistoryMove {
+  move: 'Undo' | 'Redo';
+  left: DesignStep;
+  reached: DesignStep;
+}
+
 export class DesignEditor {
   private readonly history = new History<DesignStep>(HISTORY_LIMIT);
   private readonly fields = new Map<string, Int8Array>();
@@ -64,9 +71,10 @@ export class DesignEditor {
   private readonly redoButton = element('redo', HTMLButtonElement);
   private readonly density: DensityPanel;
   private readonly panelEdits: EditPanel;
-  // Undo or Redo moved to a step on another preparation of the mesh, which is being prepared
-  // back: until it is on show, the form and history are the step's but the mesh is not.
-  private repreparing: 'Undo' | 'Redo' | null = null;
+  // Undo or Redo moved from `left` to `reached`, a step on another preparation of the mesh,
+  // which is being prepared back: until it is on show, the form and history are the step's but
+  // the mesh is not.
+  private repreparing: HistoryMove | null = null;
 
   constructor(private readonly host: EditorHost) {
     this.density = new DensityPanel({
@@ -132,10 +140,12 @@ export class DesignEditor {
 
   // The mesh was prepared again (undo or redo across a re-preparation): the history stays.
   surfaceChanged(): void {
+    const settled = this.repreparing !== null;
     this.repreparing = null;
     this.density.surfaceChanged();
     this.panelEdits.surfaceChanged();
     this.updateButtons();
+    if (settled) this.formChanged(); // a change committed while the mesh was prepared back
   }
 
   // The mesh was prepared again for `after` (preparation.ts), with `before`'s paint and edits
@@ -250,6 +260,9 @@ export class DesignEditor {
     const read = this.host.form.read();
     const current = this.history.current;
     this.density.show(); // the expression may have changed
+    // Not while an Undo or Redo prepares the mesh back: the step would be tagged with the mesh
+    // on show, not the one its parameters name; surfaceChanged records it once that is settled.
+    if (this.repreparing) return;
     if (!read.ok || !current || sameParams(current.params, read.value)) return;
     this.history.push({ kind: 'params', params: read.value, chain: null, count: null, prepare: this.host.prepared() });
     this.prune();
@@ -258,44 +271,52 @@ export class DesignEditor {
 
   undo(): void {
     if (!this.host.canEdit() || this.density.painting) return;
+    const left = this.history.current;
     const step = this.history.undo();
-    if (step) this.restore(step, 'Undo');
+    if (step && left) this.restore(step, { move: 'Undo', left, reached: step });
   }
 
   redo(): void {
     if (!this.host.canEdit() || this.density.painting) return;
+    const left = this.history.current;
     const step = this.history.redo();
-    if (step) this.restore(step, 'Redo');
+    if (step && left) this.restore(step, { move: 'Redo', left, reached: step });
   }
 
   // The preparation an Undo or Redo asked for failed, or its worker crashed: the mesh on show
   // is still the step's it left, so the history and the form go back to that step (else the
-  // next Remesh would solve the other step's edits and paint on this mesh's triangles).
-  // Returns which move was taken back, or null when none was under way.
-  repreparationLost(): 'Undo' | 'Redo' | null {
-    const move = this.repreparing;
-    if (!move) return null;
+  // next Remesh would solve the other step's edits and paint on this mesh's triangles). Not
+  // the form when `writeForm` is false: another design opening now has written it. Returns
+  // which move was taken back, or null when none was under way.
+  repreparationLost(writeForm: boolean): 'Undo' | 'Redo' | null {
+    const lost = this.repreparing;
+    if (!lost) return null;
     this.repreparing = null;
-    const back = move === 'Undo' ? this.history.redo() : this.history.undo();
-    if (back) {
-      this.host.form.write(back.params, back.count ?? undefined);
+    // Nothing records a step while the mesh is opening (formChanged waits, the rest needs
+    // canEdit), so the history is where the move left it; checked all the same.
+    if (this.history.current === lost.reached) {
+      if (lost.move === 'Undo') this.history.redo();
+      else this.history.undo();
+    }
+    if (writeForm && this.history.current === lost.left) {
+      this.host.form.write(lost.left.params, lost.left.count ?? undefined);
       this.density.show();
     }
     this.updateButtons();
-    return move;
+    return lost.move;
   }
 
   // The step's parameters and paint back in the form and the view, and its panels replayed
   // when its chain is known. A step never solved (parameters typed, no Remesh) only goes back
   // in the form, as typing it would: the panels on show stay until Remesh.
-  private restore(step: DesignStep, move: 'Undo' | 'Redo'): void {
+  private restore(step: DesignStep, move: HistoryMove): void {
     this.host.form.write(step.params, step.count ?? undefined);
     this.density.show();
     this.updateButtons();
     // A step on another preparation of the mesh: the mesh is prepared back, then solved.
     if (!samePrepare(step.prepare, this.host.prepared())) {
       this.repreparing = move;
-      if (!this.host.reprepare(step.prepare, step.chain ?? [step.params])) this.repreparationLost();
+      if (!this.host.reprepare(step.prepare, step.chain ?? [step.params])) this.repreparationLost(true);
       return;
     }
     const shown = this.host.solvedChain();
