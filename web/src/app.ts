@@ -412,5 +412,5 @@ export class App {
 
 // Said when an Undo or Redo was taken back because its mesh could not be prepared again.
 function takenBackNote(move: 'Undo' | 'Redo'): string {
-  return `${move} was taken back: the mesh could not be prepared again for that step, so the design on show stays`;
+  return `${move} was taken back (its mesh could not be prepared again)`;
 }
