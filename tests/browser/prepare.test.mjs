@@ -288,6 +288,10 @@ test('a parameter typed while an Undo prepares the mesh back goes with the Undo 
     assert.equal(await page.getByLabel('Seed', { exact: true }).inputValue(), '1');
     assert.equal(await page.getByRole('button', { name: 'Redo' }).isEnabled(), false);
     assert.equal(await solveAfter(page, () => remesh(page), 300_000), 20);
+    // The step before is the design as loaded, nothing in between.
+    assert.equal(await solveAfter(page, () => page.getByRole('button', { name: 'Undo' }).click(), 300_000), 20);
+    assert.deepEqual(await history(page), [0, 2]);
+    assert.match(await page.locator('#mesh-details').textContent(), /^288 triangles/);
   });
 });
 

@@ -262,6 +262,7 @@ export class App {
         return;
       case 'fatal':
         this.machine.crashed(false);
+        this.editor.repreparationLost(true); // no answer will come
         this.viewer.setSolving(false);
         this.status.error(message.message);
         this.updateButtons();
@@ -310,11 +311,9 @@ export class App {
       if (this.machine.mesh) this.preparation.show(this.machine.mesh.design); // a preparation refused
       // Another open going on has written the form for its design.
       const takenBack = this.editor.repreparationLost(this.machine.opening === null);
-      if (takenBack) {
-        reason = `${reason}; ${takenBackNote(takenBack)}`;
-        const solved = this.machine.solved; // the preparation dropped a solve under way
-        if (solved) this.viewer.setClusters(solved.result.clusterIds);
-      }
+      if (takenBack) reason = `${reason}; ${takenBackNote(takenBack)}`;
+      const solved = this.machine.solved; // the open dropped a solve under way: its clusters go
+      if (solved) this.viewer.setClusters(solved.result.clusterIds);
       if (this.machine.opening) this.status.error(reason); // a later open goes on
       else this.opener.failOpen(reason);
       return;

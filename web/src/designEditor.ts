@@ -145,7 +145,9 @@ export class DesignEditor {
     this.density.surfaceChanged();
     this.panelEdits.surfaceChanged();
     this.updateButtons();
-    if (settled) this.formChanged(); // a change committed while the mesh was prepared back
+    // A change committed while the mesh was prepared back, unless another open has written the
+    // form since (it starts its own history).
+    if (settled && this.host.canEdit()) this.formChanged();
   }
 
   // The mesh was prepared again for `after` (preparation.ts), with `before`'s paint and edits
