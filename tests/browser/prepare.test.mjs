@@ -5,7 +5,7 @@
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
 import { unzlibSync, zlibSync } from 'fflate';
-import { browserSuite, download, errorAfter, exampleLink, maxPlanarity, parseObj, remesh, screenshot, selectExample, setPanels, solveAfter, waitForDone } from './harness.mjs';
+import { browserSuite, download, errorAfter, exampleLink, maxPlanarity, parseObj, remesh, screenshot, selectExample, setPanels, solveAfter, statusText, waitForDone } from './harness.mjs';
 
 const suite = browserSuite();
 // A quick start (the default example is a 50k-triangle tower, slow to solve here).
@@ -114,12 +114,14 @@ function fieldKey(field) {
 // (level 32, 4x density, where x > 6) with one lock edit. `prepare`: the preparation the link
 // records (default: for `panels`, as before refineBelow; null: none, as links made before
 // preparations were recorded); with one of its own the link is unpainted (the paint would
-// name the prepared mesh's vertices).
+// name the prepared mesh's vertices). `hole`: without one quad (286 triangles, a hole of 4
+// edges).
 const n = 12;
-function gridLink({ edits = [{ op: 'lock', face: 0 }], panels = 4, prepare } = {}) {
+function gridLink({ edits = [{ op: 'lock', face: 0 }], panels = 4, prepare, hole = false } = {}) {
   const lines = [];
   for (let j = 0; j <= n; j++) for (let i = 0; i <= n; i++) lines.push(`v ${i} ${j} 0`);
   for (let j = 0; j < n; j++) for (let i = 0; i < n; i++) {
+    if (hole && i === 5 && j === 5) continue; // a hole of 4 edges
     const v = (a, b) => b * (n + 1) + a + 1;
     lines.push(`f ${v(i, j)} ${v(i + 1, j)} ${v(i + 1, j + 1)} ${v(i, j + 1)}`);
   }
@@ -355,5 +357,41 @@ test('a Target edge length prepares the mesh to it, travels in the link, and a b
     const message = await errorAfter(page, () => edge.fill('-1').then(() => edge.blur()));
     assert.match(message, /Target edge length must be a positive number/);
     assert.equal(await edge.getAttribute('aria-invalid'), 'true');
+  });
+});
+
+// Filling holes appends triangles and adds no vertex: on the mesh as loaded the paint and the
+// lock still name what they named, so they stay, in the solve and in the form (a second Remesh
+// gives the same panels; before, the form had lost them while the solve still used them). On
+// a prepared mesh, which is made again from the filled one, they are dropped, and said to be.
+test('filling holes keeps the paint and edits on the mesh as loaded, and drops them, said, on a prepared one', async () => {
+  const hole = gridLink({ hole: true, panels: 8 });
+  await suite.withPage(hole.link, async (page) => {
+    assert.equal(await waitForDone(page), 8);
+    assert.match(await page.locator('#mesh-details').textContent(), /^286 triangles/);
+    const fill = page.getByLabel('Fill holes up to (edges)');
+    assert.equal(await solveAfter(page, () => fill.fill('10').then(() => fill.blur())), 8);
+    assert.match(await page.locator('#mesh-details').textContent(), /^288 triangles/, 'the hole filled');
+    assert.match(await statusText(page), /^Done: 8 panels/);
+    const filled = (await download(page, 'Export OBJ')).text;
+    assert.equal(await solveAfter(page, () => remesh(page)), 8);
+    assert.equal((await download(page, 'Export OBJ')).text, filled, 'the form kept the paint and the lock the solve used');
+    await page.getByRole('button', { name: 'Copy share link' }).click();
+    await page.waitForFunction((before) => location.hash.startsWith('#v1=') && location.href !== before, hole.link);
+    const shared = readLink(await page.evaluate(() => location.href));
+    assert.deepEqual(shared.json.params.edits, [{ op: 'lock', face: 0 }]);
+    assert.deepEqual([...shared.paint], [...hole.paint]);
+  });
+
+  const prepared = gridLink({ hole: true, panels: 20, prepare: { panels: 20, subdivide: 0, refineBelow: 30, refineRounds: 5 } });
+  await suite.withPage(prepared.link, async (page) => {
+    assert.equal(await waitForDone(page, undefined, 300_000), 20);
+    assert.doesNotMatch(await page.locator('#mesh-details').textContent(), /^286 triangles/, 'prepared for 20 panels');
+    const fill = page.getByLabel('Fill holes up to (edges)');
+    assert.equal(await solveAfter(page, () => fill.fill('10').then(() => fill.blur()), 300_000), 20);
+    assert.match(await statusText(page), /^1 panel edit was dropped: it named the prepared mesh before the holes changed\. Done: 20 panels/);
+    const done = (await download(page, 'Export OBJ')).text;
+    assert.equal(await solveAfter(page, () => remesh(page), 300_000), 20);
+    assert.equal((await download(page, 'Export OBJ')).text, done, 'the form has no lock either');
   });
 });

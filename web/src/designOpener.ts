@@ -125,17 +125,31 @@ export class DesignOpener {
   }
 
   // New holes to fill: the design's mesh opened again with them (its largest-part choice kept).
+  // Filling appends triangles and adds no vertex, so on the mesh as loaded the paint (per
+  // vertex) and the panel edits (per triangle) still name what they named and stay; a lock on
+  // a filled triangle that unfilling removes is refused by name (checkEditsFit). A prepared
+  // mesh is made again from the repaired one, so there they no longer fit: they are dropped,
+  // and the status says so.
   async repairChanged(): Promise<void> {
-    const design = this.host.machine.mesh?.design;
-    const params = this.host.form.read();
-    if (!design || !params.ok) return;
-    const repair = this.host.repair.read(design.repair?.largestPart ?? false);
+    const mesh = this.host.machine.mesh;
+    if (!mesh) return;
+    const repair = this.host.repair.read(mesh.design.repair?.largestPart ?? false);
     if (!repair.ok) {
       this.host.status.error(repair.message);
       return;
     }
-    this.host.editor.forgetPaint(); // painted on the previous mesh
-    await this.open(withRepair(design, repair.value), params.value, [], { solve: true, note: '' });
+    const before = this.host.form.read();
+    if (!before.ok) {
+      this.host.status.error(before.message);
+      return;
+    }
+    if (mesh.info.prepared.length > 0) {
+      this.solveNotice = droppedWithMesh(before.value);
+      this.host.editor.forgetPaint();
+    }
+    const params = this.host.form.read();
+    if (!params.ok) return; // read just above, less its paint and edits
+    await this.open(withRepair(mesh.design, repair.value), params.value, [], { solve: true, note: '' });
   }
 
   // "Use largest manifold part": the refused open again, keeping that part.
@@ -235,6 +249,7 @@ export class DesignOpener {
   failOpen(reason: string): void {
     const notice = this.pendingNotice;
     this.pendingNotice = null;
+    this.solveNotice = null; // said of the open that failed
     this.syncExampleSelect();
     this.host.status.resetProgress();
     this.host.status.error(notice ? `${notice} ${reason}` : reason);
@@ -306,6 +321,17 @@ export class DesignOpener {
     this.host.examples.sync(this.host.machine.mesh?.design);
   }
 
+}
+
+// Said when the paint and panel edits of `params` are dropped with the prepared mesh they
+// name (null: it had none).
+function droppedWithMesh(params: DesignParams): string | null {
+  const edits = params.edits.length;
+  const parts = [params.paint !== '' ? 'the painted density' : '', edits === 1 ? '1 panel edit' : edits > 1 ? `${edits} panel edits` : ''].filter((p) => p !== '');
+  if (parts.length === 0) return null;
+  const plural = parts.length > 1 || edits > 1;
+  const text = parts.join(' and ');
+  return `${text[0]!.toUpperCase()}${text.slice(1)} ${plural ? 'were dropped: they' : 'was dropped: it'} named the prepared mesh before the holes changed.`;
 }
 
 // The design's mesh with this repair (none: the field left out, as links before it had).
