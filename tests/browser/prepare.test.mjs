@@ -5,7 +5,7 @@
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
 import { unzlibSync, zlibSync } from 'fflate';
-import { browserSuite, download, errorAfter, exampleLink, maxPlanarity, parseObj, remesh, screenshot, selectExample, setPanels, solveAfter, statusText, waitForDone } from './harness.mjs';
+import { browserSuite, download, errorAfter, exampleLink, maxPlanarity, parseObj, remesh, screenshot, selectExample, setPanels, solveAfter, statusText, waitForDone, waitForStatus } from './harness.mjs';
 
 const suite = browserSuite();
 // A quick start (the default example is a 50k-triangle tower, slow to solve here).
@@ -393,5 +393,18 @@ test('filling holes keeps the paint and edits on the mesh as loaded, and drops t
     const done = (await download(page, 'Export OBJ')).text;
     assert.equal(await solveAfter(page, () => remesh(page), 300_000), 20);
     assert.equal((await download(page, 'Export OBJ')).text, done, 'the form has no lock either');
+  });
+});
+
+// Edits that do not fit the mesh on show (a link's lock on triangle 5,000 of 288) are refused
+// before the mesh is prepared again: the worker carries them only after it has taken the
+// prepared mesh, where a refusal would leave it on another mesh than the page.
+test('a preparation is refused, by name, before it starts when the edits to carry do not fit', () => {
+  const { link } = gridLink({ panels: 20, prepare: null, edits: [{ op: 'lock', face: 5000 }] });
+  return suite.withPage(link, async (page) => {
+    await waitForStatus(page, /Panel edit 1 names triangle 5000, but the mesh has 288 triangles; not solved/);
+    const message = await errorAfter(page, () => remesh(page));
+    assert.equal(message, 'Error: Panel edit 1 names triangle 5000, but the mesh has 288 triangles; the mesh was not prepared again.');
+    assert.match(await page.locator('#mesh-details').textContent(), /^288 triangles/);
   });
 });

@@ -197,11 +197,18 @@ export class DesignOpener {
   prepareAgain(prepare: MeshPrepare | undefined, params: DesignParams, history: DesignParams[], how: 'carry' | 'replay'): boolean {
     const mesh = this.host.machine.mesh;
     if (!mesh || !this.host.machine.canRemesh) return false;
+    const carry: Carry = how === 'carry' ? { paint: this.host.editor.field(params.paint), faces: editFaces(params.edits) } : { paint: null, faces: new Int32Array(0) };
+    // What is carried must fit the mesh on show: the worker carries it after it has taken the
+    // prepared mesh, too late to refuse and keep this one (the solve would refuse the same).
+    const misfit = carryMisfit(carry, params, mesh.info);
+    if (misfit) {
+      this.host.status.error(`${misfit}; the mesh was not prepared again.`);
+      return false;
+    }
     const design = withPrepare(mesh.design, prepare);
     const token = this.host.machine.beginOpen({ design, label: mesh.label, fileName: mesh.fileName, up: 'guess', params, history, solve: true, reprepare: how });
     this.host.outputs.forgetLink();
     this.host.dropSolve();
-    const carry: Carry = how === 'carry' ? { paint: this.host.editor.field(params.paint), faces: editFaces(params.edits) } : { paint: null, faces: new Int32Array(0) };
     const job = this.host.solver.prepare(prepare ?? null, carry);
     if (job === null) {
       this.host.machine.abandonOpen(token);
@@ -321,6 +328,13 @@ export class DesignOpener {
     this.host.examples.sync(this.host.machine.mesh?.design);
   }
 
+}
+
+// Why the paint or the edits to carry do not fit the mesh they are carried from (null: they do).
+function carryMisfit(carry: Carry, params: DesignParams, info: MeshInfo): string | null {
+  if (carry.paint && carry.paint.length !== info.vertices) return `The painted density has ${carry.paint.length} values, but the mesh has ${info.vertices} vertices (painted on another mesh? clear the paint)`;
+  const edits = checkEditsFit(params.edits, info.triangles);
+  return edits.ok ? null : edits.message;
 }
 
 // Said when the paint and panel edits of `params` are dropped with the prepared mesh they

@@ -130,11 +130,13 @@ function handlePrepare(job: number, prepare: MeshPrepare | null, carry: Carry): 
   let paint: Int8Array | null = null;
   if (carry.paint) {
     const values = target.transferField(Float64Array.from(carry.paint));
-    if (values.length !== info.vertices) throw new StatusError('the painted density could not be carried to the prepared mesh');
+    // Not a refusal: the session holds the prepared mesh now, so only a new worker (reloading
+    // the page's mesh) agrees with the page again. The page checks what it carries first.
+    if (values.length !== info.vertices) throw new Error('the painted density could not be carried to the prepared mesh');
     paint = levelsOf(values);
   }
   const faces = carry.faces.length > 0 ? target.remapFaces(carry.faces) : new Int32Array(0);
-  if (faces.length !== carry.faces.length) throw new StatusError('the panel edits could not be carried to the prepared mesh');
+  if (faces.length !== carry.faces.length) throw new Error('the panel edits could not be carried to the prepared mesh');
   post({ type: 'loaded', job, info, positions: target.inputPositions(), indices: target.inputIndices(), carried: { paint, faces } });
 }
 
