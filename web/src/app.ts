@@ -338,6 +338,10 @@ export class App {
     const solved = this.machine.solved;
     if (solved) this.viewer.setClusters(solved.result.clusterIds);
     this.opener.pendingNotice = null;
+    this.opener.solveNotice = null;
+    // The Surface section shows what the mesh on show was prepared with (a value typed while
+    // a preparation was under way was never applied).
+    if (this.machine.mesh && !this.machine.opening) this.preparation.show(this.machine.mesh.design);
     this.fabrication.workerLost();
     this.editor.workerReplaced();
     this.opener.syncExampleSelect();
