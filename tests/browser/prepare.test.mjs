@@ -115,9 +115,9 @@ function fieldKey(field) {
 // records (default: for `panels`, as before refineBelow; null: none, as links made before
 // preparations were recorded); with one of its own the link is unpainted (the paint would
 // name the prepared mesh's vertices). `hole`: without one quad (286 triangles, a hole of 4
-// edges).
+// edges); `repair`: the repair the link records.
 const n = 12;
-function gridLink({ edits = [{ op: 'lock', face: 0 }], panels = 4, prepare, hole = false } = {}) {
+function gridLink({ edits = [{ op: 'lock', face: 0 }], panels = 4, prepare, hole = false, repair } = {}) {
   const lines = [];
   for (let j = 0; j <= n; j++) for (let i = 0; i <= n; i++) lines.push(`v ${i} ${j} 0`);
   for (let j = 0; j < n; j++) for (let i = 0; i < n; i++) {
@@ -130,7 +130,7 @@ function gridLink({ edits = [{ op: 'lock', face: 0 }], panels = 4, prepare, hole
   const paint = painted ? Int8Array.from({ length: (n + 1) * (n + 1) }, (_, k) => (k % (n + 1) > 6 ? 32 : 0)) : new Int8Array(0);
   const key = fieldKey(paint);
   const recorded = prepare === undefined ? { panels, subdivide: 0 } : prepare;
-  const mesh = { file: 'grid.obj', size: bytes.length, ...(recorded ? { prepare: recorded } : {}) };
+  const mesh = { file: 'grid.obj', size: bytes.length, ...(recorded ? { prepare: recorded } : {}), ...(repair ? { repair } : {}) };
   const params = { ...quick, panels, edits, ...(painted ? { paint: key } : {}) };
   const json = { v: 1, mesh, params, history: [], ...(painted ? { paint: [{ key, vertices: paint.length }] } : {}) };
   return { paint, link: linkOf(suite.url, json, bytes, paint) };
@@ -406,5 +406,40 @@ test('a preparation is refused, by name, before it starts when the edits to carr
     const message = await errorAfter(page, () => remesh(page));
     assert.equal(message, 'Error: Panel edit 1 names triangle 5000, but the mesh has 288 triangles; the mesh was not prepared again.');
     assert.match(await page.locator('#mesh-details').textContent(), /^288 triangles/);
+  });
+});
+
+// Undo and Redo carry nothing: their step's edits name the mesh they prepare, not the one on
+// show. A lock on triangle 287 of the mesh as loaded lands on 575 of the prepared one; Undo
+// goes back to the 288 triangles, and Redo prepares the finer mesh again for its lock on 575.
+test('Redo to a prepared step prepares it whatever its edits name on the mesh on show', () => {
+  const { link } = gridLink({ panels: 20, prepare: null, edits: [{ op: 'lock', face: 287 }] });
+  return suite.withPage(link, async (page) => {
+    assert.equal(await waitForDone(page), 20);
+    assert.equal(await solveAfter(page, () => remesh(page), 300_000), 20);
+    await page.getByRole('button', { name: 'Copy share link' }).click();
+    await page.waitForFunction((before) => location.hash.startsWith('#v1=') && location.href !== before, link);
+    assert.deepEqual(readLink(await page.evaluate(() => location.href)).json.params.edits, [{ op: 'lock', face: 575 }], 'the lock carried past triangle 287');
+    assert.equal(await solveAfter(page, () => page.getByRole('button', { name: 'Undo' }).click(), 300_000), 20);
+    assert.match(await page.locator('#mesh-details').textContent(), /^288 triangles/);
+    assert.equal(await solveAfter(page, () => page.getByRole('button', { name: 'Redo' }).click(), 300_000), 20);
+    assert.doesNotMatch(await page.locator('#mesh-details').textContent(), /^288 triangles/, 'prepared again');
+  });
+});
+
+// Which holes are filled renumbers the filled triangles: an edit on one is dropped (said) when
+// the holes change, while an edit on a triangle of the mesh as it came stays.
+test('changing the holes filled drops the edits of filled triangles, said, and keeps the rest', () => {
+  const { link } = gridLink({ hole: true, panels: 8, repair: { fillHoles: 10, largestPart: false }, edits: [{ op: 'lock', face: 0 }, { op: 'lock', face: 287 }] });
+  return suite.withPage(link, async (page) => {
+    assert.equal(await waitForDone(page), 8);
+    assert.match(await page.locator('#mesh-details').textContent(), /^288 triangles/, 'the hole filled: triangles 286 and 287');
+    const fill = page.getByLabel('Fill holes up to (edges)');
+    assert.equal(await solveAfter(page, () => fill.fill('0').then(() => fill.blur())), 8);
+    assert.match(await page.locator('#mesh-details').textContent(), /^286 triangles/);
+    assert.match(await statusText(page), /^1 panel edit was dropped: it named filled triangles, which filling numbers anew\. Done: 8 panels/);
+    await page.getByRole('button', { name: 'Copy share link' }).click();
+    await page.waitForFunction((before) => location.hash.startsWith('#v1=') && location.href !== before, link);
+    assert.deepEqual(readLink(await page.evaluate(() => location.href)).json.params.edits, [{ op: 'lock', face: 0 }]);
   });
 });

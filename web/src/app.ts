@@ -32,6 +32,8 @@ export const CRASH_MESSAGE = 'the solver ran out of memory or crashed and was re
 
 export class App {
   private readonly machine = new DesignMachine<LoadedMesh, OpenInfo, SolveResult>(MAX_HISTORY);
+  // Said with the summary of solve `job` (DesignOpener: what an open or re-preparation dropped).
+  private solveNotice: { job: number; text: string } | null = null;
   private readonly solver = new SolverClient(
     { onMessage: (message) => this.onWorkerMessage(message), onCrash: (crash) => this.onCrash(crash) },
     solverTestHooks(),
@@ -91,7 +93,7 @@ export class App {
     fabrication: this.fabrication,
     statsBox: this.statsBox,
     dropSolve: () => this.dropSolve(),
-    startSolve: (run, fresh, chain) => this.startSolve(run, fresh, chain),
+    startSolve: (run, fresh, chain, notice) => this.startSolve(run, fresh, chain, null, notice),
     save: (state) => this.save(state),
     updateButtons: () => this.updateButtons(),
   });
@@ -184,9 +186,11 @@ export class App {
   }
 
   // `run` is solved in order; `chain` is what reproduces the result from the loaded mesh.
-  private startSolve(run: DesignParams[], fresh: boolean, chain: DesignParams[] | null, lost: ChainLoss | null = null): void {
+  // `notice`: said with this solve's summary (what an open or a re-preparation dropped).
+  private startSolve(run: DesignParams[], fresh: boolean, chain: DesignParams[] | null, lost: ChainLoss | null = null, notice: string | null = null): void {
     const params = run[run.length - 1]!;
     const job = this.solver.solve(fresh, run.map((p) => this.editor.solveStep(p)));
+    this.solveNotice = notice ? { job, text: notice } : null;
     this.machine.startSolve(job, params, chain, lost);
     this.viewer.setSolving(true);
     this.status.show(`Solving ${params.panels} panels…`);
@@ -245,8 +249,8 @@ export class App {
     renderQuality(this.statsBox, result);
     this.status.finishProgress();
     const summary = solvedSummary(result);
-    const notice = this.opener.solveNotice;
-    this.opener.solveNotice = null;
+    const notice = this.solveNotice?.job === job ? this.solveNotice.text : null;
+    this.solveNotice = null;
     if (notice) this.status.show(`${notice} ${summary.text}`, 'info'); // it still ends "Done: N panels"
     else this.status.show(summary.text, summary.warning ? 'info' : 'done');
     this.fabrication.panelsChanged(result.panelTriangles.length > 0);
@@ -262,7 +266,7 @@ export class App {
         return;
       case 'fatal':
         this.machine.crashed(false);
-        this.editor.repreparationLost(true); // no answer will come
+        this.editor.repreparationLost(this.machine.opening === null); // no answer will come
         this.viewer.setSolving(false);
         this.status.error(message.message);
         this.updateButtons();
@@ -338,10 +342,12 @@ export class App {
     const solved = this.machine.solved;
     if (solved) this.viewer.setClusters(solved.result.clusterIds);
     this.opener.pendingNotice = null;
-    this.opener.solveNotice = null;
-    // The Surface section shows what the mesh on show was prepared with (a value typed while
-    // a preparation was under way was never applied).
-    if (this.machine.mesh && !this.machine.opening) this.preparation.show(this.machine.mesh.design);
+    // The Surface section shows what the mesh on show was prepared and repaired with (a value
+    // typed while an open was under way was never applied).
+    if (this.machine.mesh && !this.machine.opening) {
+      this.preparation.show(this.machine.mesh.design);
+      this.repair.show(this.machine.mesh.design);
+    }
     this.fabrication.workerLost();
     this.editor.workerReplaced();
     this.opener.syncExampleSelect();
@@ -351,7 +357,7 @@ export class App {
     if (takenBack && crash.meshKept) parts.push(takenBackNote(takenBack));
     const lostOpen = lost.lostOpening;
     if (lostOpen && !lostOpen.reprepare) parts.push(`${lostOpen.label} was not opened`);
-    else if (lostOpen?.reprepare === 'carry') parts.push('the mesh was not prepared again');
+    else if (lostOpen?.reprepare === 'carry' && crash.meshKept) parts.push('the mesh was not prepared again');
     this.status.error(`${parts.join('; ')}.`);
     this.updateButtons();
   }

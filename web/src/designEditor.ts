@@ -48,7 +48,7 @@ export interface EditorHost {
   replay(chain: DesignParams[]): void; // solve `chain` afresh from the loaded mesh
   prepared(): MeshPrepare | undefined; // the preparation of the mesh on show
   // Prepare the mesh as `prepare` says (from the mesh as loaded), then solve `chain` on it;
-  // false when it could not even be asked (the solver lost the mesh).
+  // false when it could not even be asked (the solver lost the mesh: the status says so).
   reprepare(prepare: MeshPrepare | undefined, chain: DesignParams[]): boolean;
 }
 
@@ -140,14 +140,14 @@ export class DesignEditor {
 
   // The mesh was prepared again (undo or redo across a re-preparation): the history stays.
   surfaceChanged(): void {
-    const settled = this.repreparing !== null;
+    const wasRepreparing = this.repreparing !== null;
     this.repreparing = null;
     this.density.surfaceChanged();
     this.panelEdits.surfaceChanged();
     this.updateButtons();
     // A change committed while the mesh was prepared back, unless another open has written the
     // form since (it starts its own history).
-    if (settled && this.host.canEdit()) this.formChanged();
+    if (wasRepreparing && this.host.canEdit()) this.formChanged();
   }
 
   // The mesh was prepared again for `after` (preparation.ts), with `before`'s paint and edits

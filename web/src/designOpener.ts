@@ -9,7 +9,7 @@ import type { DesignEditor } from './designEditor.ts';
 import type { DesignMachine } from './designMachine.ts';
 import { showMeshInfo, type ExamplePicker } from './examplePicker.ts';
 import { describeDesign, findExample } from './examples.ts';
-import { checkEditsFit } from './edits/panelEdits.ts';
+import { checkEditsFit, type PanelEdit } from './edits/panelEdits.ts';
 import type { FabricationPanel } from './fabricationPanel.ts';
 import type { MeshRepair } from './meshRepair.ts';
 import { payloadFromExample, payloadFromFile } from './meshFiles.ts';
@@ -46,12 +46,18 @@ export interface OpenInfo {
   // The design's mesh prepared again (not a new mesh: the history goes on): 'carry' brings
   // the paint and edits of `params` along; 'replay' solves `history` + `params`, made for it.
   reprepare?: 'carry' | 'replay';
+  // Once loaded: the paint and edits of `params` put in the form (it may have held more, e.g.
+  // what a repair dropped), and `solveNotice` said with the solve's summary.
+  formEdits?: boolean;
+  solveNotice?: string | null;
 }
 
 export interface OpenOptions {
   solve: boolean;
   note: string; // said in the status while loading, e.g. "Opening the shared design"
   fromLink?: boolean; // keeps the link in the address bar (it describes this design)
+  formEdits?: boolean; // OpenInfo.formEdits
+  solveNotice?: string | null; // OpenInfo.solveNotice
 }
 
 // What the opener uses of the controller.
@@ -69,7 +75,7 @@ export interface OpenerHost {
   fabrication: FabricationPanel;
   statsBox: HTMLDivElement;
   dropSolve(): boolean;
-  startSolve(run: DesignParams[], fresh: boolean, chain: DesignParams[] | null): void;
+  startSolve(run: DesignParams[], fresh: boolean, chain: DesignParams[] | null, notice?: string | null): void;
   save(state: DesignState): void;
   updateButtons(): void;
 }
@@ -77,8 +83,6 @@ export interface OpenerHost {
 export class DesignOpener {
   // A message to show once the mesh being opened has loaded (set only while opening).
   pendingNotice: string | null = null;
-  // Said with the next solve's summary (edits a re-preparation could not carry).
-  solveNotice: string | null = null;
   // The last open sent to the worker: what "Use largest manifold part" opens again.
   private lastOpen: { design: DesignMesh; params: DesignParams; history: DesignParams[]; options: OpenOptions } | null = null;
 
@@ -124,32 +128,25 @@ export class DesignOpener {
     return { params: params.value, prepare: prepare.value, repair: repair.value };
   }
 
-  // New holes to fill: the design's mesh opened again with them (its largest-part choice kept).
-  // Filling appends triangles and adds no vertex, so on the mesh as loaded the paint (per
-  // vertex) and the panel edits (per triangle) still name what they named and stay; a lock on
-  // a filled triangle that unfilling removes is refused by name (checkEditsFit). A prepared
-  // mesh is made again from the repaired one, so there they no longer fit: they are dropped,
-  // and the status says so.
+  // New holes to fill: the design's mesh opened again with them (its largest-part choice kept),
+  // not while another open is under way (as preparationChanged). What the paint and edits
+  // name is kept where the repair keeps it (keptThroughRepair); the form follows once the
+  // repaired mesh is on show, so a refused open leaves the design as it was.
   async repairChanged(): Promise<void> {
     const mesh = this.host.machine.mesh;
-    if (!mesh) return;
+    if (!mesh || !this.host.machine.canRemesh) return;
     const repair = this.host.repair.read(mesh.design.repair?.largestPart ?? false);
     if (!repair.ok) {
       this.host.status.error(repair.message);
       return;
     }
-    const before = this.host.form.read();
-    if (!before.ok) {
-      this.host.status.error(before.message);
+    const params = this.host.form.read();
+    if (!params.ok) {
+      this.host.status.error(params.message);
       return;
     }
-    if (mesh.info.prepared.length > 0) {
-      this.solveNotice = droppedWithMesh(before.value);
-      this.host.editor.forgetPaint();
-    }
-    const params = this.host.form.read();
-    if (!params.ok) return; // read just above, less its paint and edits
-    await this.open(withRepair(mesh.design, repair.value), params.value, [], { solve: true, note: '' });
+    const kept = keptThroughRepair(params.value, mesh.info);
+    await this.open(withRepair(mesh.design, repair.value), kept.params, [], { solve: true, note: '', formEdits: true, solveNotice: kept.notice });
   }
 
   // "Use largest manifold part": the refused open again, keeping that part.
@@ -191,7 +188,9 @@ export class DesignOpener {
   // The worker prepares the design's mesh again from the mesh as loaded; answered like a load
   // (onLoaded), with the paint and edited triangles of `params` carried when `how` is 'carry'.
   // No preparation (undo to a design saved before preparations were recorded): the mesh as
-  // loaded itself, which its edits and paint name. False when nothing was sent.
+  // loaded itself, which its edits and paint name. False when nothing was sent: no mesh or an
+  // open under way (silent), paint or edits to carry that do not fit (said), or a solver that
+  // lost the mesh (said).
   prepareAgain(prepare: MeshPrepare, params: DesignParams, history: DesignParams[], how: 'carry' | 'replay'): boolean;
   prepareAgain(prepare: MeshPrepare | undefined, params: DesignParams, history: DesignParams[], how: 'replay'): boolean; // nothing to carry to
   prepareAgain(prepare: MeshPrepare | undefined, params: DesignParams, history: DesignParams[], how: 'carry' | 'replay'): boolean {
@@ -199,8 +198,9 @@ export class DesignOpener {
     if (!mesh || !this.host.machine.canRemesh) return false;
     const carry: Carry = how === 'carry' ? { paint: this.host.editor.field(params.paint), faces: editFaces(params.edits) } : { paint: null, faces: new Int32Array(0) };
     // What is carried must fit the mesh on show: the worker carries it after it has taken the
-    // prepared mesh, too late to refuse and keep this one (the solve would refuse the same).
-    const misfit = carryMisfit(carry, params, mesh.info);
+    // prepared mesh, too late to refuse and keep this one. ('replay' carries nothing: its
+    // parameters name the mesh it prepares.)
+    const misfit = how === 'carry' ? carryMisfit(carry, params, mesh.info) : null;
     if (misfit) {
       this.host.status.error(`${misfit}; the mesh was not prepared again.`);
       return false;
@@ -232,7 +232,7 @@ export class DesignOpener {
 
   private async open(design: DesignMesh, params: DesignParams, history: DesignParams[], options: OpenOptions): Promise<void> {
     const { example, label, fileName, up } = describeDesign(design);
-    const token = this.host.machine.beginOpen({ design, label, fileName, up, params, history, solve: options.solve });
+    const token = this.host.machine.beginOpen({ design, label, fileName, up, params, history, solve: options.solve, formEdits: options.formEdits ?? false, solveNotice: options.solveNotice ?? null });
     this.lastOpen = { design, params, history, options };
     this.host.repair.hideOffer();
     if (!options.fromLink) this.host.outputs.forgetLink();
@@ -256,7 +256,6 @@ export class DesignOpener {
   failOpen(reason: string): void {
     const notice = this.pendingNotice;
     this.pendingNotice = null;
-    this.solveNotice = null; // said of the open that failed
     this.syncExampleSelect();
     this.host.status.resetProgress();
     this.host.status.error(notice ? `${notice} ${reason}` : reason);
@@ -273,6 +272,10 @@ export class DesignOpener {
     if (opening.reprepare) {
       this.preparedAgain(opening, loaded.newest, carried);
       return;
+    }
+    if (opening.formEdits && loaded.newest) {
+      this.host.form.setPaint(opening.params.paint);
+      this.host.form.setEdits(opening.params.edits);
     }
     this.host.editor.meshLoaded(opening.params, opening.design.prepare);
     this.host.preparation.show(opening.design); // what this mesh was prepared with
@@ -291,7 +294,7 @@ export class DesignOpener {
       this.host.status.error(`${misfit.message}; not solved.`);
     } else if (opening.solve) {
       const chain = [...opening.history, opening.params];
-      this.host.startSolve(chain, false, chain);
+      this.host.startSolve(chain, false, chain, opening.solveNotice);
     } else {
       this.host.status.show(`${opening.label} is loaded. Remesh to make panels.`);
     }
@@ -311,16 +314,17 @@ export class DesignOpener {
     renderQuality(this.host.statsBox, null);
     this.host.fabrication.panelsChanged(false);
     let chain = [...opening.history, opening.params];
+    let notice: string | null = null;
     if (opening.reprepare === 'carry' && carried) {
       const paint = carried.paint && !isUniform(carried.paint) ? carried.paint : null;
       const { params, dropped } = carriedParams(opening.params, paint ? fieldKey(paint) : '', carried.faces);
       this.host.editor.reprepared(opening.params, params, opening.design.prepare!, paint); // 'carry' comes with one (prepareAgain)
-      if (dropped > 0) this.solveNotice = `${dropped === 1 ? '1 merge edit was' : `${dropped} merge edits were`} dropped: on the prepared mesh both of its panels' triangles are one.`;
+      if (dropped > 0) notice = `${dropped === 1 ? '1 merge edit was' : `${dropped} merge edits were`} dropped: on the prepared mesh both of its panels' triangles are one.`;
       chain = [params];
     } else {
       this.host.editor.surfaceChanged();
     }
-    if (newest) this.host.startSolve(chain, false, chain);
+    if (newest) this.host.startSolve(chain, false, chain, notice);
     this.host.updateButtons();
   }
 
@@ -337,15 +341,24 @@ function carryMisfit(carry: Carry, params: DesignParams, info: MeshInfo): string
   return edits.ok ? null : edits.message;
 }
 
-// Said when the paint and panel edits of `params` are dropped with the prepared mesh they
-// name (null: it had none).
-function droppedWithMesh(params: DesignParams): string | null {
-  const edits = params.edits.length;
-  const parts = [params.paint !== '' ? 'the painted density' : '', edits === 1 ? '1 panel edit' : edits > 1 ? `${edits} panel edits` : ''].filter((p) => p !== '');
-  if (parts.length === 0) return null;
-  const plural = parts.length > 1 || edits > 1;
+// What of a design's paint and panel edits a change of the holes filled keeps, and what it
+// says of the rest (null: all kept). Filling appends triangles hole by hole and adds no vertex:
+// on the mesh as loaded the paint (per vertex) and the edits of the triangles it had before
+// filling still name what they named, while filled triangles are numbered anew (which holes
+// are filled changes). A prepared mesh is made again from the repaired one: nothing fits.
+function keptThroughRepair(params: DesignParams, info: MeshInfo): { params: DesignParams; notice: string | null } {
+  const prepared = info.prepared.length > 0;
+  const unfilled = info.triangles - info.repair.holeFaces;
+  const onFilled = (edit: PanelEdit): boolean => edit.face >= unfilled || (edit.op === 'merge' && edit.with >= unfilled);
+  const edits = prepared ? [] : params.edits.filter((edit) => !onFilled(edit));
+  const paint = prepared ? '' : params.paint;
+  const droppedEdits = params.edits.length - edits.length;
+  const parts = [paint !== params.paint ? 'the painted density' : '', droppedEdits === 1 ? '1 panel edit' : droppedEdits > 1 ? `${droppedEdits} panel edits` : ''].filter((p) => p !== '');
+  if (parts.length === 0) return { params, notice: null };
+  const plural = parts.length > 1 || droppedEdits > 1;
   const text = parts.join(' and ');
-  return `${text[0]!.toUpperCase()}${text.slice(1)} ${plural ? 'were dropped: they' : 'was dropped: it'} named the prepared mesh before the holes changed.`;
+  const why = prepared ? 'named the prepared mesh before the holes changed' : 'named filled triangles, which filling numbers anew';
+  return { params: { ...params, paint, edits }, notice: `${text[0]!.toUpperCase()}${text.slice(1)} ${plural ? 'were dropped: they' : 'was dropped: it'} ${why}.` };
 }
 
 // The design's mesh with this repair (none: the field left out, as links before it had).

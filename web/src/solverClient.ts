@@ -13,7 +13,7 @@ export interface SolverOptions {
   // replacement path deterministically).
   cancelGraceMs?: number;
   // Test hooks: the first worker crashes this many steps into its second solve; its
-  // preparation of this number crashes or is refused.
+  // prepareFault.at-th 'prepare' request (1: the first) crashes or is refused.
   crashAfterSteps?: number;
   prepareFault?: PrepareFault;
 }
@@ -215,8 +215,8 @@ export class SolverClient {
 
 // Test hooks from the page's address: ?cancelGrace=0 makes every cancel replace the worker
 // (the path a long step takes); ?crashAfterSteps=N makes the first worker crash N steps into
-// its second solve; ?crashOnPrepare=N and ?refuseOnPrepare=N make its Nth preparation crash or
-// be refused.
+// its second solve; ?crashOnPrepare=N or ?refuseOnPrepare=N (the latter wins when both are
+// given) makes its Nth 'prepare' request crash or be refused.
 export function solverTestHooks(): SolverOptions {
   const numberFromUrl = (name: string, max: number): number | undefined => {
     const value = new URLSearchParams(location.search).get(name);

@@ -164,9 +164,8 @@ function collectResult(target: Session, solveSeconds: number, steps: number): So
   };
 }
 
-// The crash test hooks (?crashAfterSteps=N: N steps into the worker's second solve, so that a
-// result exists to keep; ?crashOnPrepare=N: at its Nth preparation): a wasm getter on a deleted
-// Session throws Embind's BindingError, a real non-Status exception out of the module.
+// The test hook ?crashAfterSteps=N: N steps into the worker's second solve (so that a result
+// exists to keep), a crash.
 function maybeCrashForTest(): void {
   if (crashAfterSteps === null || solvesFinished === 0) return;
   crashAfterSteps -= 1;
@@ -175,6 +174,9 @@ function maybeCrashForTest(): void {
   crashForTest();
 }
 
+// The test hooks ?crashOnPrepare=N and ?refuseOnPrepare=N: the worker's Nth 'prepare' request
+// (a Remesh that prepares the mesh again, Undo or Redo across preparations, a Surface change;
+// not a load) crashes, or is refused as the core refuses.
 function maybePrepareFaultForTest(): void {
   if (prepareFault === null) return;
   prepareFault.at -= 1;
@@ -185,6 +187,8 @@ function maybePrepareFaultForTest(): void {
   crashForTest();
 }
 
+// A wasm getter on a deleted Session throws Embind's BindingError: a real non-Status exception
+// out of the module, as running out of memory gives.
 function crashForTest(): void {
   if (!flatfacet) return;
   const doomed = new flatfacet.Session();
