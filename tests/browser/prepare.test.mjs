@@ -114,14 +114,16 @@ function fieldKey(field) {
 // (level 32, 4x density, where x > 6) with one lock edit. `prepare`: the preparation the link
 // records (default: for `panels`, as before refineBelow; null: none, as links made before
 // preparations were recorded); with one of its own the link is unpainted (the paint would
-// name the prepared mesh's vertices). `hole`: without one quad (286 triangles, a hole of 4
-// edges); `repair`: the repair the link records.
+// name the prepared mesh's vertices). `hole`: without a square of hole x hole quads (1: 286
+// triangles, a hole of 4 edges; 4: 256 triangles, 16 edges, and the 9 vertices inside unused,
+// so the link must not be painted); `repair`: the repair the link records.
 const n = 12;
-function gridLink({ edits = [{ op: 'lock', face: 0 }], panels = 4, prepare, hole = false, repair } = {}) {
+function gridLink({ edits = [{ op: 'lock', face: 0 }], panels = 4, prepare, hole = 0, repair } = {}) {
   const lines = [];
   for (let j = 0; j <= n; j++) for (let i = 0; i <= n; i++) lines.push(`v ${i} ${j} 0`);
   for (let j = 0; j < n; j++) for (let i = 0; i < n; i++) {
-    if (hole && i === 5 && j === 5) continue; // a hole of 4 edges
+    const lo = hole === 1 ? 5 : 4;
+    if (i >= lo && i < lo + hole && j >= lo && j < lo + hole) continue; // a hole of 4 * hole edges
     const v = (a, b) => b * (n + 1) + a + 1;
     lines.push(`f ${v(i, j)} ${v(i + 1, j)} ${v(i + 1, j + 1)} ${v(i, j + 1)}`);
   }
@@ -365,7 +367,7 @@ test('a Target edge length prepares the mesh to it, travels in the link, and a b
 // gives the same panels; before, the form had lost them while the solve still used them). On
 // a prepared mesh, which is made again from the filled one, they are dropped, and said to be.
 test('filling holes keeps the paint and edits on the mesh as loaded, and drops them, said, on a prepared one', async () => {
-  const hole = gridLink({ hole: true, panels: 8 });
+  const hole = gridLink({ hole: 1, panels: 8 });
   await suite.withPage(hole.link, async (page) => {
     assert.equal(await waitForDone(page), 8);
     assert.match(await page.locator('#mesh-details').textContent(), /^286 triangles/);
@@ -383,13 +385,13 @@ test('filling holes keeps the paint and edits on the mesh as loaded, and drops t
     assert.deepEqual([...shared.paint], [...hole.paint]);
   });
 
-  const prepared = gridLink({ hole: true, panels: 20, prepare: { panels: 20, subdivide: 0, refineBelow: 30, refineRounds: 5 } });
+  const prepared = gridLink({ hole: 1, panels: 20, prepare: { panels: 20, subdivide: 0, refineBelow: 30, refineRounds: 5 } });
   await suite.withPage(prepared.link, async (page) => {
     assert.equal(await waitForDone(page, undefined, 300_000), 20);
     assert.doesNotMatch(await page.locator('#mesh-details').textContent(), /^286 triangles/, 'prepared for 20 panels');
     const fill = page.getByLabel('Fill holes up to (edges)');
     assert.equal(await solveAfter(page, () => fill.fill('10').then(() => fill.blur()), 300_000), 20);
-    assert.match(await statusText(page), /^1 panel edit was dropped: it named the prepared mesh before the holes changed\. Done: 20 panels/);
+    assert.match(await statusText(page), /^1 panel edit was dropped: it named the mesh before the holes changed\. Done: 20 panels/);
     const done = (await download(page, 'Export OBJ')).text;
     assert.equal(await solveAfter(page, () => remesh(page), 300_000), 20);
     assert.equal((await download(page, 'Export OBJ')).text, done, 'the form has no lock either');
@@ -419,7 +421,8 @@ test('Redo to a prepared step prepares it whatever its edits name on the mesh on
     assert.equal(await solveAfter(page, () => remesh(page), 300_000), 20);
     await page.getByRole('button', { name: 'Copy share link' }).click();
     await page.waitForFunction((before) => location.hash.startsWith('#v1=') && location.href !== before, link);
-    assert.deepEqual(readLink(await page.evaluate(() => location.href)).json.params.edits, [{ op: 'lock', face: 575 }], 'the lock carried past triangle 287');
+    const [lock] = readLink(await page.evaluate(() => location.href)).json.params.edits;
+    assert.ok(lock.face >= 288, `the lock carried past the 288 triangles as loaded (to ${lock.face})`);
     assert.equal(await solveAfter(page, () => page.getByRole('button', { name: 'Undo' }).click(), 300_000), 20);
     assert.match(await page.locator('#mesh-details').textContent(), /^288 triangles/);
     assert.equal(await solveAfter(page, () => page.getByRole('button', { name: 'Redo' }).click(), 300_000), 20);
@@ -427,19 +430,40 @@ test('Redo to a prepared step prepares it whatever its edits name on the mesh on
   });
 });
 
-// Which holes are filled renumbers the filled triangles: an edit on one is dropped (said) when
-// the holes change, while an edit on a triangle of the mesh as it came stays.
-test('changing the holes filled drops the edits of filled triangles, said, and keeps the rest', () => {
-  const { link } = gridLink({ hole: true, panels: 8, repair: { fillHoles: 10, largestPart: false }, edits: [{ op: 'lock', face: 0 }, { op: 'lock', face: 287 }] });
+// Which holes are filled renumbers the filled triangles: when the holes change, edits are
+// dropped (said) if one names a filled triangle (all of them: an edit dropped alone could leave
+// an earlier one that it undid), while the paint stays.
+test('changing the holes filled drops the edits when one names a filled triangle, said, and keeps the paint', () => {
+  const { paint, link } = gridLink({ hole: 1, panels: 8, repair: { fillHoles: 10, largestPart: false }, edits: [{ op: 'lock', face: 0 }, { op: 'lock', face: 287 }] });
   return suite.withPage(link, async (page) => {
     assert.equal(await waitForDone(page), 8);
     assert.match(await page.locator('#mesh-details').textContent(), /^288 triangles/, 'the hole filled: triangles 286 and 287');
     const fill = page.getByLabel('Fill holes up to (edges)');
     assert.equal(await solveAfter(page, () => fill.fill('0').then(() => fill.blur())), 8);
     assert.match(await page.locator('#mesh-details').textContent(), /^286 triangles/);
-    assert.match(await statusText(page), /^1 panel edit was dropped: it named filled triangles, which filling numbers anew\. Done: 8 panels/);
+    assert.match(await statusText(page), /^2 panel edits were dropped: one named a filled triangle, which filling numbers anew\. Done: 8 panels/);
     await page.getByRole('button', { name: 'Copy share link' }).click();
     await page.waitForFunction((before) => location.hash.startsWith('#v1=') && location.href !== before, link);
-    assert.deepEqual(readLink(await page.evaluate(() => location.href)).json.params.edits, [{ op: 'lock', face: 0 }]);
+    const shared = readLink(await page.evaluate(() => location.href));
+    assert.deepEqual(shared.json.params.edits, []);
+    assert.deepEqual([...shared.paint], [...paint], 'the paint stays: filling adds no vertex');
+  });
+});
+
+// Preparation follows the triangle count, which filling changes: filled, 270 triangles serve 9
+// panels as loaded (30 each); unfilled, 256 are refined. The lock named the mesh as loaded, so
+// it is dropped (said), not replayed on another triangle of the refined one.
+test('a hole change that makes the mesh prepared drops the edits of the mesh as loaded, said', () => {
+  const { link } = gridLink({ hole: 4, panels: 9, prepare: { panels: 9, subdivide: 0, refineBelow: 30, refineRounds: 5 }, repair: { fillHoles: 16, largestPart: false } });
+  return suite.withPage(link, async (page) => {
+    assert.equal(await waitForDone(page), 9);
+    assert.match(await page.locator('#mesh-details').textContent(), /^270 triangles/, 'filled, as loaded');
+    const fill = page.getByLabel('Fill holes up to (edges)');
+    assert.equal(await solveAfter(page, () => fill.fill('0').then(() => fill.blur()), 300_000), 9);
+    assert.doesNotMatch(await page.locator('#mesh-details').textContent(), /^(256|270) triangles/, 'unfilled and refined');
+    assert.match(await statusText(page), /^1 panel edit was dropped: it named the mesh before the holes changed\. Done: 9 panels/);
+    await page.getByRole('button', { name: 'Copy share link' }).click();
+    await page.waitForFunction((before) => location.hash.startsWith('#v1=') && location.href !== before, link);
+    assert.deepEqual(readLink(await page.evaluate(() => location.href)).json.params.edits, []);
   });
 });

@@ -312,7 +312,11 @@ export class App {
       reason = `${reason}. Use the largest manifold part (${largestPart.faces.toLocaleString('en-US')} of ${largestPart.of.toLocaleString('en-US')} faces)?`;
     }
     if (what === 'open') {
-      if (this.machine.mesh) this.preparation.show(this.machine.mesh.design); // a preparation refused
+      if (this.machine.mesh) {
+        // A preparation or repair refused: the Surface section shows the mesh on show's again.
+        this.preparation.show(this.machine.mesh.design);
+        this.repair.show(this.machine.mesh.design);
+      }
       // Another open going on has written the form for its design.
       const takenBack = this.editor.repreparationLost(this.machine.opening === null);
       if (takenBack) reason = `${reason}; ${takenBackNote(takenBack)}`;

@@ -9,7 +9,7 @@ import type { DesignEditor } from './designEditor.ts';
 import type { DesignMachine } from './designMachine.ts';
 import { showMeshInfo, type ExamplePicker } from './examplePicker.ts';
 import { describeDesign, findExample } from './examples.ts';
-import { checkEditsFit, type PanelEdit } from './edits/panelEdits.ts';
+import { checkEditsFit } from './edits/panelEdits.ts';
 import type { FabricationPanel } from './fabricationPanel.ts';
 import type { MeshRepair } from './meshRepair.ts';
 import { payloadFromExample, payloadFromFile } from './meshFiles.ts';
@@ -46,18 +46,22 @@ export interface OpenInfo {
   // The design's mesh prepared again (not a new mesh: the history goes on): 'carry' brings
   // the paint and edits of `params` along; 'replay' solves `history` + `params`, made for it.
   reprepare?: 'carry' | 'replay';
-  // Once loaded: the paint and edits of `params` put in the form (it may have held more, e.g.
-  // what a repair dropped), and `solveNotice` said with the solve's summary.
-  formEdits?: boolean;
-  solveNotice?: string | null;
+  // A change of the holes filled: the mesh on show before it (keptThroughRepair decides, once
+  // the repaired mesh is loaded, what of the paint and edits still fits).
+  repairOf?: MeshBeforeRepair;
+}
+
+export interface MeshBeforeRepair {
+  prepared: boolean; // not the mesh as loaded
+  unfilled: number; // its triangles before the filled ones
+  facesDropped: number; // cut away as not the largest part
 }
 
 export interface OpenOptions {
   solve: boolean;
   note: string; // said in the status while loading, e.g. "Opening the shared design"
   fromLink?: boolean; // keeps the link in the address bar (it describes this design)
-  formEdits?: boolean; // OpenInfo.formEdits
-  solveNotice?: string | null; // OpenInfo.solveNotice
+  repairOf?: MeshBeforeRepair; // OpenInfo.repairOf
 }
 
 // What the opener uses of the controller.
@@ -129,9 +133,10 @@ export class DesignOpener {
   }
 
   // New holes to fill: the design's mesh opened again with them (its largest-part choice kept),
-  // not while another open is under way (as preparationChanged). What the paint and edits
-  // name is kept where the repair keeps it (keptThroughRepair); the form follows once the
-  // repaired mesh is on show, so a refused open leaves the design as it was.
+  // not while another open is under way (as preparationChanged; the field shows the mesh's
+  // own value again once that open ends). What the paint and edits name is kept where the
+  // repaired mesh keeps it, decided once it is loaded (keptThroughRepair), so a refused open
+  // leaves the design as it was.
   async repairChanged(): Promise<void> {
     const mesh = this.host.machine.mesh;
     if (!mesh || !this.host.machine.canRemesh) return;
@@ -145,8 +150,8 @@ export class DesignOpener {
       this.host.status.error(params.message);
       return;
     }
-    const kept = keptThroughRepair(params.value, mesh.info);
-    await this.open(withRepair(mesh.design, repair.value), kept.params, [], { solve: true, note: '', formEdits: true, solveNotice: kept.notice });
+    const repairOf = { prepared: mesh.info.prepared.length > 0, unfilled: mesh.info.triangles - mesh.info.repair.holeFaces, facesDropped: mesh.info.repair.facesDropped };
+    await this.open(withRepair(mesh.design, repair.value), params.value, [], { solve: true, note: '', repairOf });
   }
 
   // "Use largest manifold part": the refused open again, keeping that part.
@@ -232,7 +237,7 @@ export class DesignOpener {
 
   private async open(design: DesignMesh, params: DesignParams, history: DesignParams[], options: OpenOptions): Promise<void> {
     const { example, label, fileName, up } = describeDesign(design);
-    const token = this.host.machine.beginOpen({ design, label, fileName, up, params, history, solve: options.solve, formEdits: options.formEdits ?? false, solveNotice: options.solveNotice ?? null });
+    const token = this.host.machine.beginOpen({ design, label, fileName, up, params, history, solve: options.solve, ...(options.repairOf ? { repairOf: options.repairOf } : {}) });
     this.lastOpen = { design, params, history, options };
     this.host.repair.hideOffer();
     if (!options.fromLink) this.host.outputs.forgetLink();
@@ -273,12 +278,14 @@ export class DesignOpener {
       this.preparedAgain(opening, loaded.newest, carried);
       return;
     }
-    if (opening.formEdits && loaded.newest) {
-      this.host.form.setPaint(opening.params.paint);
-      this.host.form.setEdits(opening.params.edits);
+    const { params, notice } = opening.repairOf ? keptThroughRepair(opening.params, opening.repairOf, info) : { params: opening.params, notice: null };
+    if (opening.repairOf && loaded.newest) {
+      this.host.form.setPaint(params.paint);
+      this.host.form.setEdits(params.edits);
     }
-    this.host.editor.meshLoaded(opening.params, opening.design.prepare);
-    this.host.preparation.show(opening.design); // what this mesh was prepared with
+    this.host.editor.meshLoaded(params, opening.design.prepare);
+    this.host.preparation.show(opening.design); // what this mesh was prepared and repaired with
+    this.host.repair.show(opening.design);
     showMeshInfo(loaded.mesh.label, loaded.mesh.info);
     rhinoLoaded(loaded.mesh.fileName, loaded.mesh.info);
     renderQuality(this.host.statsBox, null);
@@ -287,14 +294,14 @@ export class DesignOpener {
     // Overtaken by a later open: shown, since the worker holds it now, but that open goes on.
     if (!loaded.newest) return;
     this.syncExampleSelect();
-    this.host.save({ mesh: opening.design, params: opening.params, history: [], fabrication: this.host.fabrication.current });
+    this.host.save({ mesh: opening.design, params, history: [], fabrication: this.host.fabrication.current });
     // Panel edits name triangles: a link's must exist in the mesh it opened.
-    const misfit = [...opening.history, opening.params].map((p) => checkEditsFit(p.edits, info.triangles)).find((c) => !c.ok);
+    const misfit = [...opening.history, params].map((p) => checkEditsFit(p.edits, info.triangles)).find((c) => !c.ok);
     if (opening.solve && misfit && !misfit.ok) {
       this.host.status.error(`${misfit.message}; not solved.`);
     } else if (opening.solve) {
-      const chain = [...opening.history, opening.params];
-      this.host.startSolve(chain, false, chain, opening.solveNotice);
+      const chain = [...opening.history, params];
+      this.host.startSolve(chain, false, chain, notice);
     } else {
       this.host.status.show(`${opening.label} is loaded. Remesh to make panels.`);
     }
@@ -311,6 +318,7 @@ export class DesignOpener {
     const mesh = this.host.machine.mesh!;
     showMeshInfo(mesh.label, mesh.info);
     this.host.preparation.show(opening.design);
+    this.host.repair.show(opening.design);
     renderQuality(this.host.statsBox, null);
     this.host.fabrication.panelsChanged(false);
     let chain = [...opening.history, opening.params];
@@ -341,24 +349,26 @@ function carryMisfit(carry: Carry, params: DesignParams, info: MeshInfo): string
   return edits.ok ? null : edits.message;
 }
 
-// What of a design's paint and panel edits a change of the holes filled keeps, and what it
-// says of the rest (null: all kept). Filling appends triangles hole by hole and adds no vertex:
-// on the mesh as loaded the paint (per vertex) and the edits of the triangles it had before
-// filling still name what they named, while filled triangles are numbered anew (which holes
-// are filled changes). A prepared mesh is made again from the repaired one: nothing fits.
-function keptThroughRepair(params: DesignParams, info: MeshInfo): { params: DesignParams; notice: string | null } {
-  const prepared = info.prepared.length > 0;
-  const unfilled = info.triangles - info.repair.holeFaces;
-  const onFilled = (edit: PanelEdit): boolean => edit.face >= unfilled || (edit.op === 'merge' && edit.with >= unfilled);
-  const edits = prepared ? [] : params.edits.filter((edit) => !onFilled(edit));
-  const paint = prepared ? '' : params.paint;
+// What of a design's paint and panel edits still fits after a change of the holes filled, from
+// the mesh on show `before` to the one loaded now (`after`), and what it says of the rest (null:
+// all kept). Filling appends triangles hole by hole and adds no vertex, so between two meshes
+// as loaded, cut alike, the paint (per vertex) and the edits of unfilled triangles name what
+// they named; filled triangles are numbered anew, so edits naming one go, all of them (an
+// unlock dropped alone would leave its lock). A prepared mesh on either side (preparation
+// follows the triangle count, which filling changes) or another cut renumbers everything.
+function keptThroughRepair(params: DesignParams, before: MeshBeforeRepair, after: MeshInfo): { params: DesignParams; notice: string | null } {
+  const renumbered = before.prepared || after.prepared.length > 0 || before.facesDropped !== after.repair.facesDropped;
+  const unfilled = Math.min(before.unfilled, after.triangles - after.repair.holeFaces);
+  const onFilled = params.edits.some((edit) => edit.face >= unfilled || (edit.op === 'merge' && edit.with >= unfilled));
+  const paint = renumbered ? '' : params.paint;
+  const edits = renumbered || onFilled ? [] : params.edits;
   const droppedEdits = params.edits.length - edits.length;
   const parts = [paint !== params.paint ? 'the painted density' : '', droppedEdits === 1 ? '1 panel edit' : droppedEdits > 1 ? `${droppedEdits} panel edits` : ''].filter((p) => p !== '');
   if (parts.length === 0) return { params, notice: null };
   const plural = parts.length > 1 || droppedEdits > 1;
   const text = parts.join(' and ');
-  const why = prepared ? 'named the prepared mesh before the holes changed' : 'named filled triangles, which filling numbers anew';
-  return { params: { ...params, paint, edits }, notice: `${text[0]!.toUpperCase()}${text.slice(1)} ${plural ? 'were dropped: they' : 'was dropped: it'} ${why}.` };
+  const why = renumbered ? `${plural ? 'they' : 'it'} named the mesh before the holes changed` : `${plural ? 'one' : 'it'} named a filled triangle, which filling numbers anew`;
+  return { params: { ...params, paint, edits }, notice: `${text[0]!.toUpperCase()}${text.slice(1)} ${plural ? 'were' : 'was'} dropped: ${why}.` };
 }
 
 // The design's mesh with this repair (none: the field left out, as links before it had).
