@@ -451,12 +451,13 @@ test('changing the holes filled drops the edits when one names a filled triangle
 });
 
 // Preparation follows the triangle count, which filling changes: filled, 270 triangles serve 9
-// panels as loaded (30 each); unfilled, 256 are refined. The lock named the mesh as loaded, so
-// it is dropped (said), not replayed on another triangle of the refined one.
+// panels as loaded (30 each); unfilled, 256 are refined. The split named the mesh as loaded, so
+// it is dropped (said), not replayed on another triangle of the refined one, and "Panels" no
+// longer counts it: Remesh then solves 9, not the 10 the split made.
 test('a hole change that makes the mesh prepared drops the edits of the mesh as loaded, said', () => {
-  const { link } = gridLink({ hole: 4, panels: 9, prepare: { panels: 9, subdivide: 0, refineBelow: 30, refineRounds: 5 }, repair: { fillHoles: 16, largestPart: false } });
+  const { link } = gridLink({ hole: 4, panels: 9, prepare: { panels: 9, subdivide: 0, refineBelow: 30, refineRounds: 5 }, repair: { fillHoles: 16, largestPart: false }, edits: [{ op: 'split', face: 0 }] });
   return suite.withPage(link, async (page) => {
-    assert.equal(await waitForDone(page), 9);
+    assert.equal(await waitForDone(page), 10, 'the split makes 10');
     assert.match(await page.locator('#mesh-details').textContent(), /^270 triangles/, 'filled, as loaded');
     const fill = page.getByLabel('Fill holes up to (edges)');
     assert.equal(await solveAfter(page, () => fill.fill('0').then(() => fill.blur()), 300_000), 9);
@@ -465,5 +466,31 @@ test('a hole change that makes the mesh prepared drops the edits of the mesh as 
     await page.getByRole('button', { name: 'Copy share link' }).click();
     await page.waitForFunction((before) => location.hash.startsWith('#v1=') && location.href !== before, link);
     assert.deepEqual(readLink(await page.evaluate(() => location.href)).json.params.edits, []);
+    assert.equal(await page.getByLabel('Panels', { exact: true }).inputValue(), '9');
+    assert.equal(await solveAfter(page, () => remesh(page), 300_000), 9);
+  });
+});
+
+// A link whose recorded preparation the core refuses (an edge length that needs 53 million
+// triangles) is refused after the worker has read its mesh: the worker then loads the design on
+// show again, so Remesh solves the 12 x 12 grid, not the refused 24 x 24 one.
+test('a link refused while preparing its mesh leaves the worker on the design on show', () => {
+  const { link } = gridLink();
+  const lines = [];
+  for (let j = 0; j <= n; j++) for (let i = 0; i <= n; i++) lines.push(`v ${2 * i} ${2 * j} 0`);
+  for (let j = 0; j < n; j++) for (let i = 0; i < n; i++) {
+    const v = (a, b) => b * (n + 1) + a + 1;
+    lines.push(`f ${v(i, j)} ${v(i + 1, j)} ${v(i + 1, j + 1)} ${v(i, j + 1)}`);
+  }
+  const bytes = new TextEncoder().encode(`${lines.join('\n')}\n`);
+  const refused = linkOf(suite.url, { v: 1, mesh: { file: 'big.obj', size: bytes.length, prepare: { panels: 4, subdivide: 0, edgeLength: 0.005 } }, params: { ...quick, panels: 4, edits: [] }, history: [] }, bytes, new Int8Array(0));
+  return suite.withPage(link, async (page) => {
+    assert.equal(await waitForDone(page), 4);
+    const message = await errorAfter(page, () => page.goto(refused));
+    assert.match(message, /an edge length of 0\.005 needs about [\d,]+ triangles, more than the 2,000,000 the preparation makes/);
+    assert.match(await page.locator('#mesh-details').textContent(), /^288 triangles/);
+    assert.equal(await solveAfter(page, () => remesh(page)), 4);
+    const after = parseObj((await download(page, 'Export OBJ')).text);
+    assert.ok(after.vertices.every((v) => v.every((x) => x <= 12 + 1e-9)), 'panels of the 12 x 12 grid on show');
   });
 });

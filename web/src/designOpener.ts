@@ -9,7 +9,7 @@ import type { DesignEditor } from './designEditor.ts';
 import type { DesignMachine } from './designMachine.ts';
 import { showMeshInfo, type ExamplePicker } from './examplePicker.ts';
 import { describeDesign, findExample } from './examples.ts';
-import { checkEditsFit } from './edits/panelEdits.ts';
+import { checkEditsFit, countAfterEdits } from './edits/panelEdits.ts';
 import type { FabricationPanel } from './fabricationPanel.ts';
 import type { MeshRepair } from './meshRepair.ts';
 import { payloadFromExample, payloadFromFile } from './meshFiles.ts';
@@ -279,9 +279,10 @@ export class DesignOpener {
       return;
     }
     const { params, notice } = opening.repairOf ? keptThroughRepair(opening.params, opening.repairOf, info) : { params: opening.params, notice: null };
-    if (opening.repairOf && loaded.newest) {
+    if (opening.repairOf && loaded.newest && params !== opening.params) {
       this.host.form.setPaint(params.paint);
       this.host.form.setEdits(params.edits);
+      this.host.form.showCount(params.panels, countAfterEdits(params.panels, params.edits)); // "Panels" counted the dropped splits and merges
     }
     this.host.editor.meshLoaded(params, opening.design.prepare);
     this.host.preparation.show(opening.design); // what this mesh was prepared and repaired with

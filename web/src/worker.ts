@@ -30,6 +30,9 @@ interface Run {
 
 let flatfacet: FlatfacetModule | null = null;
 let session: Session | null = null;
+// The mesh the session holds as the page shows it (the last load, with the preparation of the
+// last 'prepare' since): what a load refused half-way puts back.
+let shown: MeshPayload | null = null;
 let currentRun: Run | null = null;
 let crashed = false;
 let crashAfterSteps: number | null = null; // test hook: counts down in the second solve
@@ -78,14 +81,31 @@ function checkedText(text: string, what: string): string {
   return text;
 }
 
-function loadInto(target: Session, mesh: MeshPayload): MeshInfo {
+// `restore`: after a refusal half-way, put the mesh on show back (not when that is the load).
+function loadInto(target: Session, mesh: MeshPayload, restore = true): MeshInfo {
   // Every load sets the repair, so a previous design's never carries over.
   checked<Status>(target.setRepair(mesh.repair?.fillHoles ?? 0, mesh.repair?.largestPart ?? false), 'the repair options');
   const loaded = loadAsIs(target, mesh);
   if (!mesh.prepare) return loaded;
-  // What the load said (a Rhino file's surfaces, say) stays; the counts and notes are now the
-  // prepared mesh's.
-  return { ...loaded, ...prepareInto(target, mesh.prepare) };
+  try {
+    // What the load said (a Rhino file's surfaces, say) stays; the counts and notes are now the
+    // prepared mesh's.
+    return { ...loaded, ...prepareInto(target, mesh.prepare) };
+  } catch (error) {
+    // Refused after the session took the new mesh: the page keeps the one before, so the
+    // session gets it back (else the next Remesh would solve the refused mesh).
+    if (error instanceof StatusError && restore && shown) restoreShown(target, shown);
+    throw error;
+  }
+}
+
+function restoreShown(target: Session, mesh: MeshPayload): void {
+  try {
+    loadInto(target, mesh, false);
+  } catch (error) {
+    // Not a refusal: only a new worker, reloading the page's mesh, agrees with the page now.
+    throw new Error(`the mesh on show could not be loaded again: ${error instanceof Error ? error.message : String(error)}`);
+  }
 }
 
 function prepareInto(target: Session, prepare: MeshPrepare): MeshInfo {
@@ -114,6 +134,7 @@ function handleLoad(job: number, mesh: MeshPayload, quiet: boolean): void {
   if (currentRun) currentRun.cancelled = true;
   const target = requireSession();
   const info = loadInto(target, mesh);
+  shown = mesh;
   // Embind's getters return fresh arrays (wasm/bindings.cpp), transferred as they are.
   const positions = quiet ? new Float32Array(0) : target.inputPositions();
   const indices = quiet ? new Uint32Array(0) : target.inputIndices();
@@ -137,6 +158,10 @@ function handlePrepare(job: number, prepare: MeshPrepare | null, carry: Carry): 
   }
   const faces = carry.faces.length > 0 ? target.remapFaces(carry.faces) : new Int32Array(0);
   if (faces.length !== carry.faces.length) throw new Error('the panel edits could not be carried to the prepared mesh');
+  if (shown) {
+    const { prepare: _before, ...asLoaded } = shown;
+    shown = prepare ? { ...asLoaded, prepare: { ...prepare } } : asLoaded;
+  }
   post({ type: 'loaded', job, info, positions: target.inputPositions(), indices: target.inputIndices(), carried: { paint, faces } });
 }
 
