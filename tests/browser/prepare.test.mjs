@@ -473,7 +473,9 @@ test('a hole change that makes the mesh prepared drops the edits of the mesh as 
 
 // A link whose recorded preparation the core refuses (an edge length that needs 53 million
 // triangles) is refused after the worker has read its mesh: the worker then loads the design on
-// show again, so Remesh solves the 12 x 12 grid, not the refused 24 x 24 one.
+// show again, and the form shows that design again (the link had written its own), so Remesh
+// solves the 12 x 12 grid with its paint and lock, the very panels of before, not the refused
+// 24 x 24 one.
 test('a link refused while preparing its mesh leaves the worker on the design on show', () => {
   const { link } = gridLink();
   const lines = [];
@@ -486,11 +488,13 @@ test('a link refused while preparing its mesh leaves the worker on the design on
   const refused = linkOf(suite.url, { v: 1, mesh: { file: 'big.obj', size: bytes.length, prepare: { panels: 4, subdivide: 0, edgeLength: 0.005 } }, params: { ...quick, panels: 4, edits: [] }, history: [] }, bytes, new Int8Array(0));
   return suite.withPage(link, async (page) => {
     assert.equal(await waitForDone(page), 4);
+    const before = (await download(page, 'Export OBJ')).text;
     const message = await errorAfter(page, () => page.goto(refused));
     assert.match(message, /an edge length of 0\.005 needs about [\d,]+ triangles, more than the 2,000,000 the preparation makes/);
     assert.match(await page.locator('#mesh-details').textContent(), /^288 triangles/);
     assert.equal(await solveAfter(page, () => remesh(page)), 4);
     const after = parseObj((await download(page, 'Export OBJ')).text);
     assert.ok(after.vertices.every((v) => v.every((x) => x <= 12 + 1e-9)), 'panels of the 12 x 12 grid on show');
+    assert.equal((await download(page, 'Export OBJ')).text, before, 'with its paint and lock: the same panels as before the refused link');
   });
 });

@@ -360,7 +360,10 @@ export class App {
     const takenBack = this.editor.repreparationLost(this.machine.opening === null);
     if (takenBack && crash.meshKept) parts.push(takenBackNote(takenBack));
     const lostOpen = lost.lostOpening;
-    if (lostOpen && !lostOpen.reprepare) parts.push(`${lostOpen.label} was not opened`);
+    if (lostOpen && !lostOpen.reprepare) {
+      parts.push(`${lostOpen.label} was not opened`);
+      if (crash.meshKept && !this.machine.opening) this.editor.showCurrent(); // its parameters go with it
+    }
     else if (lostOpen?.reprepare === 'carry' && crash.meshKept) parts.push('the mesh was not prepared again');
     this.status.error(`${parts.join('; ')}.`);
     this.updateButtons();

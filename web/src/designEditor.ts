@@ -104,6 +104,16 @@ export class DesignEditor {
 
   // ---- what the controller tells
 
+  // An open failed: the form shows the design on show again (the open wrote its own
+  // parameters, which name a mesh that never came).
+  showCurrent(): void {
+    const current = this.history.current;
+    if (!current) return;
+    this.host.form.write(current.params, current.count ?? undefined);
+    this.density.show();
+    this.updateButtons();
+  }
+
   // A new mesh is about to be opened from the form (an example, a file): its paint is gone.
   forgetPaint(): void {
     this.host.form.setPaint('');

@@ -258,9 +258,12 @@ export class DesignOpener {
     this.host.updateButtons();
   }
 
+  // An open failed: the design on show stays, in the form too, unless another open goes on
+  // (that one has written the form for its design).
   failOpen(reason: string): void {
     const notice = this.pendingNotice;
     this.pendingNotice = null;
+    if (!this.host.machine.opening) this.host.editor.showCurrent();
     this.syncExampleSelect();
     this.host.status.resetProgress();
     this.host.status.error(notice ? `${notice} ${reason}` : reason);
