@@ -498,3 +498,27 @@ test('a link refused while preparing its mesh leaves the worker on the design on
     assert.equal((await download(page, 'Export OBJ')).text, before, 'with its paint and lock: the same panels as before the refused link');
   });
 });
+
+// A file that fails on the page (a broken glTF) cleared the Target edge length as every new
+// file does; the design on show keeps its own, so the field shows it again and Remesh solves on
+// the mesh as it is instead of preparing it anew without the edge length.
+test('a file that fails to open leaves the Surface section as the design on show has it', () => {
+  const { link } = gridLink({ panels: 4, prepare: { panels: 4, subdivide: 0, edgeLength: 0.5 } });
+  return suite.withPage(link, async (page) => {
+    assert.equal(await waitForDone(page), 4);
+    const edge = page.getByLabel('Target edge length');
+    assert.equal(await edge.inputValue(), '0.5');
+    const details = await page.locator('#mesh-details').textContent();
+    const message = await errorAfter(page, () =>
+      page.evaluate(() => {
+        const transfer = new DataTransfer();
+        transfer.items.add(new File(['glTF not really'], 'broken.glb'));
+        document.getElementById('viewport').dispatchEvent(new DragEvent('drop', { dataTransfer: transfer, bubbles: true, cancelable: true }));
+      }),
+    );
+    assert.match(message, /broken\.glb/);
+    assert.equal(await edge.inputValue(), '0.5', 'the edge length of the design on show');
+    assert.equal(await solveAfter(page, () => remesh(page)), 4);
+    assert.equal(await page.locator('#mesh-details').textContent(), details, 'not prepared again');
+  });
+});

@@ -304,6 +304,7 @@ export class App {
 
   // The core refused a mesh or parameters: the previous design stays loaded and usable.
   private onFailed(job: number, reason: string, largestPart?: { faces: number; of: number }): void {
+    const failedOpen = this.machine.sentOpening(job);
     const what = this.machine.failed(job);
     if (what === null) return; // an answer to a request the page moved past
     if (what === 'open' && largestPart && !this.machine.opening) {
@@ -323,7 +324,7 @@ export class App {
       const solved = this.machine.solved; // the open dropped a solve under way: its clusters go
       if (solved) this.viewer.setClusters(solved.result.clusterIds);
       if (this.machine.opening) this.status.error(reason); // a later open goes on
-      else this.opener.failOpen(reason);
+      else this.opener.failOpen(reason, !failedOpen?.reprepare);
       return;
     }
     if (what === 'solve') {

@@ -272,9 +272,11 @@ export class DesignEditor {
     const read = this.host.form.read();
     const current = this.history.current;
     this.density.show(); // the expression may have changed
-    // Not while an Undo or Redo prepares the mesh back: the step would be tagged with the mesh
-    // on show, not the one its parameters name; surfaceChanged records it once that is settled.
-    if (this.repreparing) return;
+    // Not while a mesh is opening (an Undo or Redo preparing it back, a link, a file): the step
+    // would be tagged with the mesh on show while the form may hold the opening design's
+    // parameters. After an Undo or Redo, surfaceChanged records it once the mesh is on show;
+    // an open starts its own history, and Remesh reads the form either way.
+    if (this.repreparing || !this.host.canEdit()) return;
     if (!read.ok || !current || sameParams(current.params, read.value)) return;
     this.history.push({ kind: 'params', params: read.value, chain: null, count: null, prepare: this.host.prepared() });
     this.prune();
@@ -304,7 +306,7 @@ export class DesignEditor {
     const lost = this.repreparing;
     if (!lost) return null;
     this.repreparing = null;
-    // Nothing records a step while the mesh is opening (formChanged waits, the rest needs
+    // Nothing records a step while the mesh is opening (formChanged and the rest need
     // canEdit), so the history is where the move left it; checked all the same.
     if (this.history.current === lost.reached) {
       if (lost.move === 'Undo') this.history.redo();

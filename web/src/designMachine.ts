@@ -185,6 +185,11 @@ export class DesignMachine<M, O, R> {
 
   // ---- failures
 
+  // The opening sent as `job`, while its answer is awaited (null: none such).
+  sentOpening(job: number): O | null {
+    return this.sent.find((opening) => opening.job === job)?.info ?? null;
+  }
+
   // The core refused job's mesh or parameters: the previous design stays. What failed.
   failed(job: number): 'open' | 'solve' | null {
     let what: 'open' | 'solve' | null = null;

@@ -217,7 +217,7 @@ export class DesignOpener {
     const job = this.host.solver.prepare(prepare ?? null, carry);
     if (job === null) {
       this.host.machine.abandonOpen(token);
-      this.failOpen('the solver has lost the mesh: open it again');
+      this.failOpen('the solver has lost the mesh: open it again', false);
       return false;
     }
     this.host.machine.openSent(token, job);
@@ -258,12 +258,19 @@ export class DesignOpener {
     this.host.updateButtons();
   }
 
-  // An open failed: the design on show stays, in the form too, unless another open goes on
-  // (that one has written the form for its design).
-  failOpen(reason: string): void {
+  // An open failed: the design on show stays. `restoreDesign`: the open had written its own
+  // design into the form and the Surface section (a link, a file, an example; not a
+  // re-preparation, whose form holds what the user typed), so they show the design on show
+  // again, unless another open goes on.
+  failOpen(reason: string, restoreDesign = true): void {
     const notice = this.pendingNotice;
     this.pendingNotice = null;
-    if (!this.host.machine.opening) this.host.editor.showCurrent();
+    const mesh = this.host.machine.mesh;
+    if (restoreDesign && mesh && !this.host.machine.opening) {
+      this.host.editor.showCurrent();
+      this.host.preparation.show(mesh.design);
+      this.host.repair.show(mesh.design);
+    }
     this.syncExampleSelect();
     this.host.status.resetProgress();
     this.host.status.error(notice ? `${notice} ${reason}` : reason);
