@@ -75,7 +75,10 @@ test('a load a later open overtook still becomes the mesh: the page shows what t
   const e = machine.beginOpen({ name: 'e' });
   machine.openSent(e, 5);
   assert.equal(machine.loaded(4, (info) => info.name).newest, false);
+  assert.deepEqual(machine.sentOpening(5), { name: 'e' }, 'what the refused load was opening');
+  assert.equal(machine.sentOpening(4), null, 'answered already');
   assert.equal(machine.failed(5), 'open');
+  assert.equal(machine.sentOpening(5), null);
   assert.equal(machine.opening, null);
   assert.equal(machine.mesh, 'd');
   // An answer for a load the worker skipped past clears it too (answers come in order).
