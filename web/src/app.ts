@@ -313,18 +313,22 @@ export class App {
       reason = `${reason}. Use the largest manifold part (${largestPart.faces.toLocaleString('en-US')} of ${largestPart.of.toLocaleString('en-US')} faces)?`;
     }
     if (what === 'open') {
-      if (this.machine.mesh) {
-        // A preparation or repair refused: the Surface section shows the mesh on show's again.
-        this.preparation.show(this.machine.mesh.design);
-        this.repair.show(this.machine.mesh.design);
-      }
       // Another open going on has written the form for its design.
       const takenBack = this.editor.repreparationLost(this.machine.opening === null);
       if (takenBack) reason = `${reason}; ${takenBackNote(takenBack)}`;
       const solved = this.machine.solved; // the open dropped a solve under way: its clusters go
       if (solved) this.viewer.setClusters(solved.result.clusterIds);
-      if (this.machine.opening) this.status.error(reason); // a later open goes on
-      else this.opener.failOpen(reason, !failedOpen?.reprepare);
+      if (!this.machine.opening) {
+        this.opener.failOpen(reason, !failedOpen?.reprepare); // the Surface section too
+        return;
+      }
+      // A later open goes on. The Surface section shows the mesh on show's (a preparation or
+      // repair refused) until that open's mesh comes.
+      if (this.machine.mesh) {
+        this.preparation.show(this.machine.mesh.design);
+        this.repair.show(this.machine.mesh.design);
+      }
+      this.status.error(reason);
       return;
     }
     if (what === 'solve') {
@@ -364,8 +368,9 @@ export class App {
     if (lostOpen && !lostOpen.reprepare) {
       parts.push(`${lostOpen.label} was not opened`);
       if (crash.meshKept && !this.machine.opening) this.editor.showCurrent(); // its parameters go with it
+    } else if (lostOpen?.reprepare === 'carry' && crash.meshKept) {
+      parts.push('the mesh was not prepared again');
     }
-    else if (lostOpen?.reprepare === 'carry' && crash.meshKept) parts.push('the mesh was not prepared again');
     this.status.error(`${parts.join('; ')}.`);
     this.updateButtons();
   }

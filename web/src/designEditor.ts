@@ -104,8 +104,8 @@ export class DesignEditor {
 
   // ---- what the controller tells
 
-  // An open failed: the form shows the design on show again (the open wrote its own
-  // parameters, which name a mesh that never came).
+  // The form and the density view show the current step (after Undo or Redo, or an open that
+  // failed after writing its own parameters, which name a mesh that never came).
   showCurrent(): void {
     const current = this.history.current;
     if (!current) return;
@@ -312,11 +312,8 @@ export class DesignEditor {
       if (lost.move === 'Undo') this.history.redo();
       else this.history.undo();
     }
-    if (writeForm && this.history.current === lost.left) {
-      this.host.form.write(lost.left.params, lost.left.count ?? undefined);
-      this.density.show();
-    }
-    this.updateButtons();
+    if (writeForm && this.history.current === lost.left) this.showCurrent();
+    else this.updateButtons();
     return lost.move;
   }
 
@@ -324,9 +321,7 @@ export class DesignEditor {
   // when its chain is known. A step never solved (parameters typed, no Remesh) only goes back
   // in the form, as typing it would: the panels on show stay until Remesh.
   private restore(step: DesignStep, move: HistoryMove): void {
-    this.host.form.write(step.params, step.count ?? undefined);
-    this.density.show();
-    this.updateButtons();
+    this.showCurrent(); // `step`, which undo or redo made current
     // A step on another preparation of the mesh: the mesh is prepared back, then solved.
     if (!samePrepare(step.prepare, this.host.prepared())) {
       this.repreparing = move;

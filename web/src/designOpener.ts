@@ -18,7 +18,7 @@ import type { DesignParams } from './params.ts';
 import type { ParamsForm } from './paramsForm.ts';
 import type { PrepareControl } from './prepareControl.ts';
 import type { RepairControl } from './repairControl.ts';
-import { carriedParams, editFaces, preparationNeeded, refusedPreparation } from './preparation.ts';
+import { carriedParams, editFaces, preparationNeeded, refusedPreparation, withPrepare } from './preparation.ts';
 import type { Carry, SolveResult } from './protocol.ts';
 import { renderQuality } from './qualityViews.ts';
 import { rhinoLoaded } from './rhino/rhinoOpen.ts';
@@ -258,16 +258,16 @@ export class DesignOpener {
     this.host.updateButtons();
   }
 
-  // An open failed: the design on show stays. `restoreDesign`: the open had written its own
-  // design into the form and the Surface section (a link, a file, an example; not a
-  // re-preparation, whose form holds what the user typed), so they show the design on show
-  // again, unless another open goes on.
-  failOpen(reason: string, restoreDesign = true): void {
+  // An open failed and none other goes on: the design on show stays, and the Surface section
+  // shows its preparation and repair again (a refused value was never applied). `restoreForm`:
+  // the open had written its own parameters into the form (a link, a file, an example; not a
+  // re-preparation, whose form holds what the user typed), so the form shows the design's too.
+  failOpen(reason: string, restoreForm = true): void {
     const notice = this.pendingNotice;
     this.pendingNotice = null;
     const mesh = this.host.machine.mesh;
-    if (restoreDesign && mesh && !this.host.machine.opening) {
-      this.host.editor.showCurrent();
+    if (mesh && !this.host.machine.opening) {
+      if (restoreForm) this.host.editor.showCurrent();
       this.host.preparation.show(mesh.design);
       this.host.repair.show(mesh.design);
     }
@@ -388,7 +388,3 @@ function withRepair(design: DesignMesh, repair: MeshRepair | undefined): DesignM
   return repair ? { ...rest, repair } : rest;
 }
 
-function withPrepare(design: DesignMesh, prepare: MeshPrepare | undefined): DesignMesh {
-  const { prepare: _old, ...rest } = design;
-  return prepare ? { ...rest, prepare } : rest;
-}

@@ -3,9 +3,10 @@
 // a count it cannot serve (core/prepare/prepare.h: fewer than 20 triangles per panel; fewer
 // than 30 where 50 per panel is within reach; or a huge mesh with more than 1000 per panel) or
 // a new subdivision / target edge length prepares it again from the mesh as loaded, recorded
-// in the design (DesignMesh.prepare) so links and reloads make the same mesh. Painted density (per vertex) and panel edits (per triangle) are
-// carried over by the worker (Session.transferField / remapFaces); this module rebuilds the
-// parameters from what it answers. No DOM: unit-tested in Node (tests/web/preparation.test.mjs).
+// in the design (DesignMesh.prepare) so links and reloads make the same mesh. Painted density
+// (per vertex) and panel edits (per triangle) are carried over by the worker
+// (Session.transferField / remapFaces); this module rebuilds the parameters from what it
+// answers. No DOM: unit-tested in Node (tests/web/preparation.test.mjs).
 import { levelOf, STEPS_PER_OCTAVE } from './brush/densityField.ts';
 import type { PanelEdit } from './edits/panelEdits.ts';
 import type { DesignParams } from './params.ts';
@@ -23,6 +24,13 @@ export const REFINE_ROUNDS = 5; // kPrepareRefineRounds
 export interface PrepareChoice {
   subdivide: number;
   edgeLength?: number;
+}
+
+// `mesh` (a design's, or the worker's payload of it) with this preparation; none: the field
+// left out, the mesh as loaded (as designs saved before preparations were recorded have it).
+export function withPrepare<T extends { prepare?: MeshPrepare }>(mesh: T, prepare: MeshPrepare | null | undefined): T {
+  const { prepare: _old, ...rest } = mesh;
+  return (prepare ? { ...rest, prepare: { ...prepare } } : rest) as T;
 }
 
 export function samePrepare(a: MeshPrepare | undefined, b: MeshPrepare | undefined): boolean {

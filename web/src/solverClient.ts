@@ -4,6 +4,7 @@
 // worker that crashed (an error event, or a wasm call that threw something other than a
 // Status) is replaced the same way, and the page is told so.
 import type { FabricationParams } from '@flatfacet/wasm';
+import { withPrepare } from './preparation.ts';
 import type { Carry, MeshPayload, MeshPrepare, PrepareFault, SolveStep, WorkerRequest, WorkerResponse } from './protocol.ts';
 
 const CANCEL_GRACE_MS = 250;
@@ -127,8 +128,7 @@ export class SolverClient {
   prepare(prepare: MeshPrepare | null, carry: Carry): number | null {
     if (!this.loadedMesh) return null;
     this.job += 1;
-    const { prepare: _before, ...mesh } = this.loadedMesh;
-    this.pendingMeshes.set(this.job, prepare ? { ...mesh, prepare: { ...prepare } } : mesh);
+    this.pendingMeshes.set(this.job, withPrepare(this.loadedMesh, prepare));
     this.send({ type: 'prepare', job: this.job, prepare, carry });
     return this.job;
   }

@@ -9,7 +9,7 @@
 import createFlatfacet, { type FlatfacetModule, type MeshInfo, type Problems, type Progress, type Session, type Status } from '@flatfacet/wasm';
 import wasmUrl from '@flatfacet/wasm-binary?url';
 import { decodeField } from './brush/densityField.ts';
-import { levelsOf } from './preparation.ts';
+import { levelsOf, withPrepare } from './preparation.ts';
 import { LEGACY_REFINE_BELOW, LEGACY_REFINE_ROUNDS } from './share.ts';
 import { fabricationOf } from './workerFabrication.ts';
 import { transferablesOf, type Carry, type MeshPayload, type MeshPrepare, type PrepareFault, type QualityReport, type SolveResult, type SolveStep, type WorkerRequest, type WorkerResponse } from './protocol.ts';
@@ -158,10 +158,7 @@ function handlePrepare(job: number, prepare: MeshPrepare | null, carry: Carry): 
   }
   const faces = carry.faces.length > 0 ? target.remapFaces(carry.faces) : new Int32Array(0);
   if (faces.length !== carry.faces.length) throw new Error('the panel edits could not be carried to the prepared mesh');
-  if (shown) {
-    const { prepare: _before, ...asLoaded } = shown;
-    shown = prepare ? { ...asLoaded, prepare: { ...prepare } } : asLoaded;
-  }
+  if (shown) shown = withPrepare(shown, prepare);
   post({ type: 'loaded', job, info, positions: target.inputPositions(), indices: target.inputIndices(), carried: { paint, faces } });
 }
 
