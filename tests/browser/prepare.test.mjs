@@ -97,6 +97,14 @@ function readLink(href) {
   return { json, paint: new Int8Array(payload.buffer, payload.byteOffset + paintAt, payload.length - paintAt) };
 }
 
+// The design on show's share link, read (its JSON and paint), once the address holds a link
+// other than `unlike` (one the page had before; none: any link).
+async function shareLink(page, unlike = null) {
+  await page.getByRole('button', { name: 'Copy share link' }).click();
+  await page.waitForFunction((unlike) => location.hash.startsWith('#v1=') && location.href !== unlike, unlike);
+  return readLink(await page.evaluate(() => location.href));
+}
+
 // web/src/brush/densityField.ts fieldKey, the content key a link's field must hash to.
 function fieldKey(field) {
   let a = 0x811c9dc5 ^ field.length;
@@ -149,9 +157,7 @@ test('a design saved before the 30 keeps its mesh between 20 and 30 triangles pe
     assert.match(await page.locator('#mesh-details').textContent(), /^288 triangles/);
     assert.equal(await solveAfter(page, () => remesh(page)), 12);
     assert.match(await page.locator('#mesh-details').textContent(), /^288 triangles/);
-    await page.getByRole('button', { name: 'Copy share link' }).click();
-    await page.waitForFunction(() => location.hash.startsWith('#v1='));
-    const shared = readLink(await page.evaluate(() => location.href));
+    const shared = await shareLink(page);
     assert.deepEqual(shared.json.mesh.prepare, { panels: 12, subdivide: 0 }, 'still the rule before');
     assert.deepEqual(shared.json.params.edits, [{ op: 'lock', face: 0 }]);
     assert.deepEqual([...shared.paint], [...paint]);
@@ -170,9 +176,7 @@ test('a design saved before the 5 remeshing rounds keeps its refined mesh', () =
     assert.match(await page.locator('#mesh-details').textContent(), /^2,192 triangles/);
     assert.equal(await solveAfter(page, () => remesh(page)), 30);
     assert.match(await page.locator('#mesh-details').textContent(), /^2,192 triangles/);
-    await page.getByRole('button', { name: 'Copy share link' }).click();
-    await page.waitForFunction(() => location.hash.startsWith('#v1='));
-    const shared = readLink(await page.evaluate(() => location.href));
+    const shared = await shareLink(page);
     assert.deepEqual(shared.json.mesh.prepare, { panels: 30, subdivide: 0, refineBelow: 30 }, 'still the rounds before');
     assert.deepEqual(shared.json.params.edits, [{ op: 'lock', face: 0 }]);
   });
@@ -185,9 +189,7 @@ test('a new design refined below 20 triangles per panel gets 5 remeshing rounds'
     await setPanels(page, 30);
     assert.equal(await solveAfter(page, () => remesh(page), 300_000), 30);
     assert.match(await page.locator('#mesh-details').textContent(), /^2,214 triangles/);
-    await page.getByRole('button', { name: 'Copy share link' }).click();
-    await page.waitForFunction(() => location.hash.startsWith('#v1='));
-    assert.deepEqual(readLink(await page.evaluate(() => location.href)).json.mesh.prepare, { panels: 30, subdivide: 0, refineBelow: 30, refineRounds: 5 });
+    assert.deepEqual((await shareLink(page)).json.mesh.prepare, { panels: 30, subdivide: 0, refineBelow: 30, refineRounds: 5 });
   });
 });
 
@@ -204,9 +206,7 @@ test('undo to a design saved before preparations were recorded opens the mesh as
     assert.doesNotMatch(await page.locator('#mesh-details').textContent(), /^288 triangles/, 'prepared for 20 panels');
     assert.equal(await solveAfter(page, () => page.getByRole('button', { name: 'Undo' }).click()), 20);
     assert.match(await page.locator('#mesh-details').textContent(), /^288 triangles/);
-    await page.getByRole('button', { name: 'Copy share link' }).click();
-    await page.waitForFunction((before) => location.hash.startsWith('#v1=') && location.href !== before, link);
-    const back = readLink(await page.evaluate(() => location.href));
+    const back = await shareLink(page, link);
     assert.ok(!('prepare' in back.json.mesh), 'no preparation, as the link had');
     assert.deepEqual(back.json.params.edits, [{ op: 'lock', face: 0 }]);
     assert.deepEqual([...back.paint], [...paint]);
@@ -215,9 +215,7 @@ test('undo to a design saved before preparations were recorded opens the mesh as
     assert.equal(await solveAfter(page, () => page.getByRole('button', { name: 'Redo' }).click(), 300_000), 20);
     assert.doesNotMatch(await page.locator('#mesh-details').textContent(), /^288 triangles/);
     const undone = page.url();
-    await page.getByRole('button', { name: 'Copy share link' }).click();
-    await page.waitForFunction((before) => location.hash.startsWith('#v1=') && location.href !== before, undone);
-    assert.deepEqual(readLink(await page.evaluate(() => location.href)).json.mesh.prepare, { panels: 20, subdivide: 0, refineBelow: 30, refineRounds: 5 });
+    assert.deepEqual((await shareLink(page, undone)).json.mesh.prepare, { panels: 20, subdivide: 0, refineBelow: 30, refineRounds: 5 });
   });
 });
 
@@ -310,9 +308,7 @@ test('preparing again carries the paint (by position) and the panel edits to the
     const details = await page.locator('#mesh-details').textContent();
     const triangles = Number(/^([\d,]+) triangles/.exec(details)[1].replace(/,/g, ''));
     const vertices = Number(/([\d,]+) vertices/.exec(details)[1].replace(/,/g, ''));
-    await page.getByRole('button', { name: 'Copy share link' }).click();
-    await page.waitForFunction(() => location.hash.startsWith('#v1='));
-    const shared = readLink(await page.evaluate(() => location.href));
+    const shared = await shareLink(page);
     assert.deepEqual(shared.json.mesh.prepare, { panels: 20, subdivide: 0, refineBelow: 30, refineRounds: 5 }, 'the new preparation is recorded, with its rule');
     assert.equal(shared.json.history.length, 0, 'solved afresh on the prepared mesh');
     const carried = shared.paint;
@@ -328,9 +324,7 @@ test('preparing again carries the paint (by position) and the panel edits to the
     // Undo: the 288-triangle mesh and the paint and edit as they were.
     assert.equal(await solveAfter(page, () => page.getByRole('button', { name: 'Undo' }).click()), 4);
     assert.match(await page.locator('#mesh-details').textContent(), /^288 triangles/);
-    await page.getByRole('button', { name: 'Copy share link' }).click();
-    await page.waitForFunction((before) => location.hash.startsWith('#v1=') && location.href !== before, link);
-    const back = readLink(await page.evaluate(() => location.href));
+    const back = await shareLink(page, link);
     assert.deepEqual(back.json.mesh.prepare, { panels: 4, subdivide: 0 });
     assert.deepEqual(back.json.params.edits, [{ op: 'lock', face: 0 }]);
     assert.deepEqual([...back.paint], [...paint]);
@@ -349,9 +343,7 @@ test('a Target edge length prepares the mesh to it, travels in the link, and a b
     assert.match(await cleanupNote(page), /remeshed 288 triangles to [\d,]+ \(target edge 0\.5\).*at the edge length asked for/);
     const triangles = Number(/^([\d,]+) triangles/.exec(await page.locator('#mesh-details').textContent())[1].replace(/,/g, ''));
     assert.ok(triangles > 1000, `${triangles} triangles at edge 0.5 on a 12 x 12 square`);
-    await page.getByRole('button', { name: 'Copy share link' }).click();
-    await page.waitForFunction((before) => location.hash.startsWith('#v1=') && location.href !== before, link);
-    assert.deepEqual(readLink(await page.evaluate(() => location.href)).json.mesh.prepare, { panels: 4, subdivide: 0, edgeLength: 0.5, refineBelow: 30, refineRounds: 5 });
+    assert.deepEqual((await shareLink(page, link)).json.mesh.prepare, { panels: 4, subdivide: 0, edgeLength: 0.5, refineBelow: 30, refineRounds: 5 });
     // Raising the count keeps the designer's resolution: no new preparation.
     await setPanels(page, 8);
     assert.equal(await solveAfter(page, () => remesh(page)), 8);
@@ -378,9 +370,7 @@ test('filling holes keeps the paint and edits on the mesh as loaded, and drops t
     const filled = (await download(page, 'Export OBJ')).text;
     assert.equal(await solveAfter(page, () => remesh(page)), 8);
     assert.equal((await download(page, 'Export OBJ')).text, filled, 'the form kept the paint and the lock the solve used');
-    await page.getByRole('button', { name: 'Copy share link' }).click();
-    await page.waitForFunction((before) => location.hash.startsWith('#v1=') && location.href !== before, hole.link);
-    const shared = readLink(await page.evaluate(() => location.href));
+    const shared = await shareLink(page, hole.link);
     assert.deepEqual(shared.json.params.edits, [{ op: 'lock', face: 0 }]);
     assert.deepEqual([...shared.paint], [...hole.paint]);
   });
@@ -419,9 +409,7 @@ test('Redo to a prepared step prepares it whatever its edits name on the mesh on
   return suite.withPage(link, async (page) => {
     assert.equal(await waitForDone(page), 20);
     assert.equal(await solveAfter(page, () => remesh(page), 300_000), 20);
-    await page.getByRole('button', { name: 'Copy share link' }).click();
-    await page.waitForFunction((before) => location.hash.startsWith('#v1=') && location.href !== before, link);
-    const [lock] = readLink(await page.evaluate(() => location.href)).json.params.edits;
+    const [lock] = (await shareLink(page, link)).json.params.edits;
     assert.ok(lock.face >= 288, `the lock carried past the 288 triangles as loaded (to ${lock.face})`);
     assert.equal(await solveAfter(page, () => page.getByRole('button', { name: 'Undo' }).click(), 300_000), 20);
     assert.match(await page.locator('#mesh-details').textContent(), /^288 triangles/);
@@ -442,9 +430,7 @@ test('changing the holes filled drops the edits when one names a filled triangle
     assert.equal(await solveAfter(page, () => fill.fill('0').then(() => fill.blur())), 8);
     assert.match(await page.locator('#mesh-details').textContent(), /^286 triangles/);
     assert.match(await statusText(page), /^2 panel edits were dropped: one named a filled triangle, which filling numbers anew\. Done: 8 panels/);
-    await page.getByRole('button', { name: 'Copy share link' }).click();
-    await page.waitForFunction((before) => location.hash.startsWith('#v1=') && location.href !== before, link);
-    const shared = readLink(await page.evaluate(() => location.href));
+    const shared = await shareLink(page, link);
     assert.deepEqual(shared.json.params.edits, []);
     assert.deepEqual([...shared.paint], [...paint], 'the paint stays: filling adds no vertex');
   });
@@ -463,9 +449,7 @@ test('a hole change that makes the mesh prepared drops the edits of the mesh as 
     assert.equal(await solveAfter(page, () => fill.fill('0').then(() => fill.blur()), 300_000), 9);
     assert.doesNotMatch(await page.locator('#mesh-details').textContent(), /^(256|270) triangles/, 'unfilled and refined');
     assert.match(await statusText(page), /^1 panel edit was dropped: it named the mesh before the holes changed\. Done: 9 panels/);
-    await page.getByRole('button', { name: 'Copy share link' }).click();
-    await page.waitForFunction((before) => location.hash.startsWith('#v1=') && location.href !== before, link);
-    assert.deepEqual(readLink(await page.evaluate(() => location.href)).json.params.edits, []);
+    assert.deepEqual((await shareLink(page, link)).json.params.edits, []);
     assert.equal(await page.getByLabel('Panels', { exact: true }).inputValue(), '9');
     assert.equal(await solveAfter(page, () => remesh(page), 300_000), 9);
   });
