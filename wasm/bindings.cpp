@@ -100,6 +100,7 @@ EMSCRIPTEN_BINDINGS(flatfacet) {
       .function("problems", &Session::problems)
       .function("reportJson", &Session::report_json)
       .function("objText", &Session::obj_text)
+      .function("keepPanels", &Session::keep_panels)
       .function("setFabrication", &Session::set_fabrication)
       .function("partsCsv", &Session::parts_csv)
       .function("partsJson", &Session::parts_json)

@@ -271,6 +271,11 @@ export interface Session {
   // instead of a path); "" when there are no panels yet; a Status JSON on failure (it starts
   // with '{', which an OBJ never does).
   objText(): string;
+  // Every fabrication output below is of the panels kept last: keepPanels() copies the current
+  // ones (the page's worker calls it when it hands a solve's result over), so a later solve,
+  // under way or cancelled half-way, does not change them. A load or a preparation drops them
+  // (the outputs are then empty parts lists).
+  keepPanels(): void;
   // Fabrication settings (JSON of FabricationParams). Status JSON; on failure the previous
   // settings stay. They apply to every fabrication output below.
   setFabrication(fabricationJson: string): string;

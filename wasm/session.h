@@ -108,11 +108,16 @@ class Session {
   std::string report_json();
   std::string obj_text();  // empty without panels
 
-  // Fabrication (wasm/session_fabrication.cpp; wasm/flatfacet.d.ts, FabricationParams):
+  // Fabrication (wasm/session_fabrication.cpp; wasm/flatfacet.d.ts, FabricationParams) reads
+  // the panels last kept: keep_panels() copies the current ones when a solve's result is
+  // shown, so a later solve, under way or cancelled half-way, does not change what is
+  // fabricated (the page shows the last finished design then). A new mesh (a load or a
+  // preparation) drops them.
+  void keep_panels();
   // Status JSON; the settings stay as they were on failure.
   std::string set_fabrication(const std::string& json);
   // Texts (a Status JSON on failure: it starts with '{', which CSV, SVG, DXF and OBJ never do;
-  // partsJson's failure has "ok": false). Empty parts lists without panels.
+  // partsJson's failure has "ok": false). Empty parts lists without kept panels.
   std::string parts_csv() const;
   std::string parts_json() const;
   std::string sheets_svg() const;
@@ -172,6 +177,7 @@ class Session {
   int input_triangles_ = 0;
   RemeshParams params_;
   FabricationSettings fabrication_;
+  PanelMesh kept_panels_;  // keep_panels(): what fabrication reads
   // The last cut-sheet packing and what it was packed from (session_fabrication.cpp): one
   // fabrication request asks for the SVG, the DXF and the stats of the same layout.
   struct SheetCache {

@@ -2,6 +2,7 @@
 // the thick-panel view, all from the current panels and the fabrication settings.
 #include <algorithm>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/fabricate/cut_sheets.h"
@@ -18,11 +19,6 @@
 namespace ff::wasm {
 
 namespace {
-
-const PanelMesh& no_panels() {
-  static const PanelMesh empty;
-  return empty;
-}
 
 // The thickness in mesh units (the settings hold it in the designer's units).
 double mesh_thickness(const FabricationSettings& f) {
@@ -84,33 +80,36 @@ std::string Session::set_fabrication(const std::string& json) {
   });
 }
 
-#define FF_PANELS (remesher_ ? remesher_->panels() : no_panels())
+void Session::keep_panels() {
+  PanelMesh kept = remesher_ ? remesher_->panels() : PanelMesh{};  // a failed copy keeps the old
+  kept_panels_ = std::move(kept);
+}
 
 std::string Session::parts_csv() const {
-  return guarded([&] { return parts_list_csv(make_parts_list(FF_PANELS, fabrication_.options)); });
+  return guarded([&] { return parts_list_csv(make_parts_list(kept_panels_, fabrication_.options)); });
 }
 
 std::string Session::parts_json() const {
-  return guarded([&] { return parts_list_json(make_parts_list(FF_PANELS, fabrication_.options)); });
+  return guarded([&] { return parts_list_json(make_parts_list(kept_panels_, fabrication_.options)); });
 }
 
 std::string Session::sheets_svg() const {
   return guarded([&] {
-    const std::vector<PanelOutline> outlines = panel_outlines(make_parts_list(FF_PANELS, fabrication_.options));
+    const std::vector<PanelOutline> outlines = panel_outlines(make_parts_list(kept_panels_, fabrication_.options));
     return cut_sheets_svg(outlines, sheet_layout(outlines), fabrication_.sheet);
   });
 }
 
 std::string Session::sheets_dxf() const {
   return guarded([&] {
-    const std::vector<PanelOutline> outlines = panel_outlines(make_parts_list(FF_PANELS, fabrication_.options));
+    const std::vector<PanelOutline> outlines = panel_outlines(make_parts_list(kept_panels_, fabrication_.options));
     return cut_sheets_dxf(outlines, sheet_layout(outlines), fabrication_.sheet);
   });
 }
 
 std::string Session::sheet_stats() const {
   return guarded([&] {
-    const std::vector<PanelOutline> outlines = panel_outlines(make_parts_list(FF_PANELS, fabrication_.options));
+    const std::vector<PanelOutline> outlines = panel_outlines(make_parts_list(kept_panels_, fabrication_.options));
     const SheetLayout& layout = sheet_layout(outlines);
     JsonWriter j;
     j.begin_object().value("ok", true).value("message", "");
@@ -123,15 +122,15 @@ std::string Session::solid_obj() const {
   return guarded([&] {
     if (!(fabrication_.options.thickness > 0.0))
       throw InputError("solid panels need a thickness: set one under Fabrication");
-    if (FF_PANELS.num_panels() == 0) throw InputError("solid panels need panels: remesh first");
+    if (kept_panels_.num_panels() == 0) throw InputError("solid panels need panels: remesh first");
     // In mesh coordinates, to overlay the panels in the page and in the panels OBJ.
-    return solid_panels_obj(FF_PANELS, thick_options(FF_PANELS, fabrication_), 1.0, "");
+    return solid_panels_obj(kept_panels_, thick_options(kept_panels_, fabrication_), 1.0, "");
   });
 }
 
 std::vector<double> Session::inner_positions() const {
   std::vector<double> out;
-  const PanelMesh& pm = FF_PANELS;
+  const PanelMesh& pm = kept_panels_;
   if (pm.num_panels() == 0 || !(fabrication_.options.thickness > 0.0)) return out;
   const ThickPanels thick = thicken_panels(pm, panel_edges(pm), thick_options(pm, fabrication_));
   for (const std::vector<Vec3>& panel : thick.inner)
@@ -142,7 +141,7 @@ std::vector<double> Session::inner_positions() const {
 
 std::string Session::spread_nodes() const {
   return guarded([&] {
-    const PanelMesh& pm = FF_PANELS;
+    const PanelMesh& pm = kept_panels_;
     const PartsList list = make_parts_list(pm, fabrication_.options);
     JsonWriter j;
     j.begin_object().value("ok", true).value("message", "");
@@ -173,7 +172,5 @@ std::string Session::spread_nodes() const {
     return j.str();
   });
 }
-
-#undef FF_PANELS
 
 }  // namespace ff::wasm

@@ -2,12 +2,13 @@
 // the parts list, cut sheets (SVG, parsed by the browser's DOMParser) and solid panels
 // downloaded and checked; the thick-panel view; a share link carrying the settings.
 // Glass mode (convex panels, acute corners marked), a panel's own thickness set by clicking
-// it (in the parts list and carried by a share link).
+// it (in the parts list and carried by a share link). The outputs stay those of the panels on
+// show when a solve is cancelled or the solver crashes.
 // Screenshots: the thick panels and the cut sheets (the SVG rendered in a page).
 import assert from 'node:assert/strict';
 import { join } from 'node:path';
 import { test } from 'node:test';
-import { browserSuite, download, parseObj, remesh, repo, screenshot, selectExample, setPanels, solveAfter, viewPixels, viewPixelsWithoutProblems, waitForDone } from './harness.mjs';
+import { browserSuite, download, errorAfter, parseObj, remesh, repo, screenshot, selectExample, setPanels, solveAfter, viewPixels, viewPixelsWithoutProblems, waitForDone, waitForProgress, waitForStatus } from './harness.mjs';
 
 const suite = browserSuite();
 const { withPage } = suite;
@@ -271,4 +272,45 @@ test('a clicked panel gets its own thickness, boundary edges a bevel: in the par
       assert.equal(await opened.getByLabel('Boundary edges').inputValue(), 'bevel');
       assert.ok(json.panels.flatMap((p) => p.edges).some((e) => e.neighbour === null && Math.abs(e.chamfer_deg - 15) < 1e-9));
     });
+  }));
+
+// The worker fabricates the panels the page shows (Session.keepPanels), not whatever its solver
+// holds: a fresh solve cancelled half-way had left an empty parts list ("0,total,,0,0") under
+// the 300 panels on show, and one that finished just before the cancel arrived its own panels.
+test('a solve cancelled half-way leaves the parts list of the panels on show', () =>
+  withPage(suite.url, async (page) => {
+    assert.equal(await waitForDone(page), 300);
+    await setThickness(page, 20);
+    const before = (await download(page, 'Export parts list')).text;
+    assert.match(before, /^300,total,/m);
+    // Another seed solves afresh: the solver drops its panels at once.
+    await page.getByText('Metric and solver').click();
+    await page.getByLabel('Seed', { exact: true }).fill('2');
+    await remesh(page);
+    await waitForProgress(page);
+    await page.getByRole('button', { name: 'Cancel' }).click();
+    await waitForStatus(page, /^Cancelled/);
+    // New outputs asked for after the cancel, with the settings of before.
+    await setThickness(page, 25);
+    await setThickness(page, 20);
+    assert.equal((await download(page, 'Export parts list')).text, before);
+  }));
+
+// A new worker holds no panels: it says so instead of answering with an empty parts list (it
+// did: "0,total,,0,0"), the outputs of the old settings are not offered under the new ones,
+// and Remesh brings them back.
+test('after a solver crash a fabrication change says to remesh, and Remesh brings the outputs back', () =>
+  withPage(`${suite.url}?crashAfterSteps=3`, async (page) => {
+    assert.equal(await waitForDone(page), 300);
+    await setPanels(page, 200);
+    assert.match(await errorAfter(page, () => remesh(page), 60_000), /crashed and was restarted; the last result is kept/);
+    const message = await errorAfter(page, async () => {
+      await page.getByLabel('Thickness', { exact: true }).fill('20');
+      await page.getByLabel('Thickness', { exact: true }).press('Tab');
+    });
+    assert.match(message, /fabrication: the solver no longer holds the panels on show .*Remesh to make their outputs/);
+    assert.equal(await page.getByRole('button', { name: 'Export parts list' }).isDisabled(), true);
+    await setPanels(page, 300);
+    await fabricatedAfter(page, async () => assert.equal(await solveAfter(page, () => remesh(page)), 300));
+    assert.match((await download(page, 'Export parts list')).text, /^300,total,.*,mm,20,/m);
   }));

@@ -13,6 +13,7 @@ function solved(shape = 'groin_vault', panels = 30) {
   assert.equal(json(s.loadShape(shape, 4000)).ok, true);
   assert.equal(json(s.setParams(JSON.stringify({ panels }))).ok, true);
   solve(s);
+  s.keepPanels(); // as the worker does when it shows the result
   return s;
 }
 
@@ -221,6 +222,36 @@ function isSimple(ring, n) {
     }
   return true;
 }
+
+test('fabrication reads the kept panels: a later solve, finished or cancelled half-way, does not change them; a new mesh drops them', () => {
+  const s = solved('groin_vault', 30);
+  assert.equal(json(s.setFabrication('{}')).ok, true);
+  const kept = s.partsCsv();
+  assert.equal(json(s.partsJson()).totals.panels, 30);
+  // Another count solved afresh, a few steps in (the page cancels here and shows the 30 panels).
+  assert.equal(json(s.setParams(JSON.stringify({ panels: 20 }))).ok, true);
+  s.resetSolve();
+  for (let i = 0; i < 5; i++) json(s.step());
+  assert.equal(s.done(), false, 'still solving');
+  assert.equal(s.partsCsv(), kept);
+  // Finished: still the kept ones until the result is kept.
+  solve(s);
+  assert.equal(json(s.reportJson()).panels, 20);
+  assert.equal(s.partsCsv(), kept);
+  s.keepPanels();
+  assert.equal(json(s.partsJson()).totals.panels, 20);
+  // A refused load keeps them; a load or a preparation drops them.
+  assert.equal(json(s.loadMesh('broken.off', new TextEncoder().encode('OFF\n3 1 0\n0 0 0\n'))).ok, false);
+  assert.equal(json(s.partsJson()).totals.panels, 20);
+  assert.equal(json(s.prepareAsLoaded()).ok, true);
+  assert.equal(json(s.partsJson()).totals.panels, 0);
+  solve(s);
+  s.keepPanels();
+  assert.equal(json(s.partsJson()).totals.panels, 20);
+  assert.equal(json(s.loadShape('saddle', 2000)).ok, true);
+  assert.equal(json(s.partsJson()).totals.panels, 0);
+  s.delete();
+});
 
 test('without panels the fabrication outputs are empty, not errors', () => {
   const s = new ff.Session();

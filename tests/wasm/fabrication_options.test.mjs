@@ -14,6 +14,7 @@ function solved(shape, panels, extra = {}) {
   const status = json(s.setParams(JSON.stringify({ panels, ...extra })));
   assert.equal(status.ok, true, status.message);
   solve(s);
+  s.keepPanels(); // as the worker does when it shows the result
   return s;
 }
 

@@ -58,6 +58,7 @@ export class App {
     viewer: this.viewer,
     selection: this.selection,
     panels: () => (this.machine.solving ? null : (this.machine.solved?.result ?? null)),
+    panelsJob: () => this.machine.solved?.job ?? null,
     stem: () => designStem(this.machine.mesh?.fileName ?? 'design'),
     error: (message) => this.status.error(message),
     settingsChanged: () => this.fabricationChanged(),
@@ -244,6 +245,7 @@ export class App {
     const mesh = this.machine.mesh;
     if (!solved || !mesh) return;
     countOutcome('solves');
+    this.solver.keep(job); // before the fabrication request below
     this.viewer.setSolving(false);
     this.viewer.setResult(result);
     renderQuality(this.statsBox, result);

@@ -25,6 +25,7 @@ export interface Solving {
 }
 
 export interface Solved<R> {
+  job: number; // the solve that gave it (the worker keeps its panels for fabrication)
   params: DesignParams;
   chain: DesignParams[] | null;
   lost: ChainLoss | null;
@@ -178,7 +179,7 @@ export class DesignMachine<M, O, R> {
     const solving = this.solvingValue;
     if (!solving || solving.job !== job || !this.meshValue) return null;
     this.solvingValue = null;
-    this.solvedValue = { params: solving.params, chain: solving.chain, lost: solving.lost, result };
+    this.solvedValue = { job, params: solving.params, chain: solving.chain, lost: solving.lost, result };
     this.holdsSolved = true;
     return this.solvedValue;
   }

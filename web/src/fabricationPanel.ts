@@ -17,6 +17,7 @@ export interface FabricationHost {
   viewer: Viewer;
   selection: PanelSelection; // the page's one selected panel
   panels(): SolveResult | null; // the panels on show
+  panelsJob(): number | null; // the solve that gave the last result (the worker fabricates its panels)
   stem(): string; // file name stem of the design ("saddle")
   error(message: string): void;
   settingsChanged(): void; // save the session, forget a link in the address bar
@@ -85,9 +86,11 @@ export class FabricationPanel {
     this.show();
   }
 
+  // The outputs on show were made with other settings than the form's now: they go.
   onFailed(job: number, message: string): void {
     if (job !== this.job) return;
     this.job = null;
+    this.result = null;
     this.host.error(`fabrication: ${message}`);
     this.show();
   }
@@ -126,7 +129,9 @@ export class FabricationPanel {
   }
 
   private request(): void {
-    this.job = this.host.solver.fabricate(toFabricationParams(this.settings));
+    const panels = this.host.panelsJob();
+    if (panels === null) return;
+    this.job = this.host.solver.fabricate(toFabricationParams(this.settings), panels);
     this.update();
   }
 

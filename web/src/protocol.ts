@@ -53,9 +53,14 @@ export type WorkerRequest =
   // A parameter change during a solve: applied before the next step (warm start).
   | { type: 'update'; job: number; step: SolveStep }
   | { type: 'cancel'; job: number }
-  // The fabrication outputs of the session's current panels with these settings. Its own job
-  // numbers (SolverClient.fabricate), so it never disturbs a solve's.
-  | { type: 'fabricate'; job: number; settings: FabricationParams }
+  // The page shows the result of solve `job`: its panels are what fabrication reads from now
+  // on (Session.keepPanels), until the next 'keep' or a new mesh.
+  | { type: 'keep'; job: number }
+  // The fabrication outputs of the panels the solve numbered `panels` gave (the result on
+  // show), with these settings; refused when the worker no longer holds them (restarted, or a
+  // mesh loaded since). Its own job numbers (SolverClient.fabricate), so it never disturbs a
+  // solve's.
+  | { type: 'fabricate'; job: number; settings: FabricationParams; panels: number }
   // A density expression's values per vertex of the loaded mesh (the Density colour map shows
   // expression x paint). Its own job numbers too (SolverClient.expressionDensity).
   | { type: 'expressionDensity'; job: number; expression: string }

@@ -139,10 +139,15 @@ export class SolverClient {
     return this.job;
   }
 
-  // Fabrication outputs of the worker's current panels; numbered apart from loads and solves.
-  fabricate(settings: FabricationParams): number {
+  // The page shows solve `job`'s result: the worker keeps its panels for fabrication.
+  keep(job: number): void {
+    this.send({ type: 'keep', job });
+  }
+
+  // Fabrication outputs of the panels solve `panels` gave; numbered apart from loads and solves.
+  fabricate(settings: FabricationParams, panels: number): number {
     this.fabricateJob += 1;
-    this.send({ type: 'fabricate', job: this.fabricateJob, settings });
+    this.send({ type: 'fabricate', job: this.fabricateJob, settings, panels });
     return this.fabricateJob;
   }
 
@@ -164,7 +169,7 @@ export class SolverClient {
     if (this.held) {
       // An earlier cancel is still waiting for the worker, which has not seen this job's
       // requests yet: dropping them is the whole cancel.
-      this.held = this.held.filter((request) => request.type === 'fabricate' || request.type === 'expressionDensity' || request.job !== job);
+      this.held = this.held.filter((request) => request.type === 'fabricate' || request.type === 'expressionDensity' || request.type === 'keep' || request.job !== job);
       return;
     }
     const worker = this.worker;

@@ -21,6 +21,7 @@ const scope = self as unknown as {
 };
 
 const CLUSTER_VIEW_INTERVAL_MS = 150;
+const LOST_PANELS = 'the solver no longer holds the panels on show (it was restarted, or the mesh was read again): Remesh to make their outputs';
 
 interface Run {
   job: number;
@@ -38,6 +39,12 @@ let crashed = false;
 let crashAfterSteps: number | null = null; // test hook: counts down in the second solve
 let prepareFault: PrepareFault | null = null; // test hook: `at` counts down the preparations
 let solvesFinished = 0;
+// The solve whose result the session holds now (null once another solve starts or a mesh
+// loads), and the one whose panels it keeps for fabrication (Session.keepPanels): the result
+// the page shows, kept when the page says it shows it ('keep'), so a solve finished just
+// before the page cancelled it does not replace them; null after a restart or a new mesh.
+let finishedJob: number | null = null;
+let keptJob: number | null = null;
 
 // A Status with ok false: the request failed, the session kept its mesh and result. A load
 // refused for non-manifold edges or a far-off part says how large its largest part is.
@@ -109,10 +116,21 @@ function restoreShown(target: Session, mesh: MeshPayload): void {
 }
 
 function prepareInto(target: Session, prepare: MeshPrepare): MeshInfo {
-  return checked<MeshInfo>(target.prepare(prepare.panels, prepare.subdivide, prepare.edgeLength ?? 0, prepare.refineBelow ?? LEGACY_REFINE_BELOW, prepare.refineRounds ?? LEGACY_REFINE_ROUNDS), 'preparing the mesh');
+  return tookMesh(checked<MeshInfo>(target.prepare(prepare.panels, prepare.subdivide, prepare.edgeLength ?? 0, prepare.refineBelow ?? LEGACY_REFINE_BELOW, prepare.refineRounds ?? LEGACY_REFINE_ROUNDS), 'preparing the mesh'));
+}
+
+// The session took a new mesh (it drops its kept panels then).
+function tookMesh(info: MeshInfo): MeshInfo {
+  finishedJob = null;
+  keptJob = null;
+  return info;
 }
 
 function loadAsIs(target: Session, mesh: MeshPayload): MeshInfo {
+  return tookMesh(readInto(target, mesh));
+}
+
+function readInto(target: Session, mesh: MeshPayload): MeshInfo {
   switch (mesh.kind) {
     case 'bytes':
       return checked<MeshInfo>(target.loadMesh(mesh.name, mesh.bytes), 'reading the mesh');
@@ -147,7 +165,7 @@ function handlePrepare(job: number, prepare: MeshPrepare | null, carry: Carry): 
   if (currentRun) currentRun.cancelled = true;
   maybePrepareFaultForTest();
   const target = requireSession();
-  const info = prepare ? prepareInto(target, prepare) : checked<MeshInfo>(target.prepareAsLoaded(), 'opening the mesh as loaded');
+  const info = prepare ? prepareInto(target, prepare) : tookMesh(checked<MeshInfo>(target.prepareAsLoaded(), 'opening the mesh as loaded'));
   let paint: Int8Array | null = null;
   if (carry.paint) {
     const values = target.transferField(Float64Array.from(carry.paint));
@@ -228,6 +246,7 @@ function applyStep(target: Session, step: SolveStep): void {
 
 async function handleSolve(run: Run, fresh: boolean, chain: SolveStep[]): Promise<void> {
   const target = requireSession();
+  finishedJob = null;
   // A cold start from the loaded mesh, the same result as a new Session with it.
   if (fresh) target.resetSolve();
   const started = performance.now();
@@ -260,6 +279,7 @@ async function handleSolve(run: Run, fresh: boolean, chain: SolveStep[]): Promis
   }
   const result = collectResult(target, (performance.now() - started) / 1000, steps);
   solvesFinished += 1;
+  finishedJob = run.job;
   post({ type: 'solved', job: run.job, result });
 }
 
@@ -301,7 +321,17 @@ function handle(request: WorkerRequest): void {
       if (currentRun && currentRun.job === request.job) currentRun.cancelled = true;
       else post({ type: 'cancelled', job: request.job });
       return;
+    case 'keep':
+      if (request.job === finishedJob) {
+        requireSession().keepPanels();
+        keptJob = request.job;
+      }
+      return;
     case 'fabricate': {
+      if (request.panels !== keptJob) {
+        post({ type: 'fabricationFailed', job: request.job, message: LOST_PANELS });
+        return;
+      }
       const outcome = fabricationOf(requireSession(), JSON.stringify(request.settings));
       post(outcome.ok ? { type: 'fabricated', job: request.job, result: outcome.value } : { type: 'fabricationFailed', job: request.job, message: outcome.message });
       return;
