@@ -436,6 +436,22 @@ test('changing the holes filled drops the edits when one names a filled triangle
   });
 });
 
+// What an open dropped is said with its solve; a solve that ends otherwise (here a crash, as
+// a cancel or a refusal would) says it too: before, it was never said, and the form no longer
+// held the edits to show.
+test('what a hole change dropped is said even when its solve crashes', () => {
+  const { link } = gridLink({ hole: 1, panels: 8, repair: { fillHoles: 10, largestPart: false }, edits: [{ op: 'lock', face: 0 }, { op: 'lock', face: 287 }] });
+  return suite.withPage(link.replace('#', '?crashAfterSteps=2#'), async (page) => {
+    assert.equal(await waitForDone(page), 8);
+    const fill = page.getByLabel('Fill holes up to (edges)');
+    const message = await errorAfter(page, () => fill.fill('0').then(() => fill.blur()), 60_000);
+    assert.match(message, /crashed and was restarted; the mesh is kept: Remesh to solve it\. 2 panel edits were dropped: one named a filled triangle, which filling numbers anew\.$/);
+    await screenshot(page, 'grid-fill-crash-dropped-said');
+    assert.equal(await solveAfter(page, () => remesh(page)), 8);
+    assert.deepEqual((await shareLink(page, link)).json.params.edits, []);
+  });
+});
+
 // Preparation follows the triangle count, which filling changes: filled, 270 triangles serve 9
 // panels as loaded (30 each); unfilled, 256 are refined. The split named the mesh as loaded, so
 // it is dropped (said), not replayed on another triangle of the refined one, and "Panels" no

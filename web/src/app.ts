@@ -28,12 +28,22 @@ import { Viewer } from './view/viewer.ts';
 
 export type { OpenOptions };
 
-export const CRASH_MESSAGE = 'the solver ran out of memory or crashed and was restarted; the last result is kept';
+const CRASHED = 'the solver ran out of memory or crashed and was restarted';
+export const CRASH_MESSAGE = `${CRASHED}; the last result is kept`;
+
+// What a crash leaves: the result on show, if any (a mesh just opened has none), and the mesh
+// in the new worker, unless reloading it failed.
+function crashMessage(result: boolean, meshKept: boolean): string {
+  if (!result) return meshKept ? `${CRASHED}; the mesh is kept: Remesh to solve it` : `${CRASHED} without the mesh: open it again`;
+  return meshKept ? CRASH_MESSAGE : `${CRASH_MESSAGE}, but without the mesh: open it again`;
+}
 
 export class App {
   private readonly machine = new DesignMachine<LoadedMesh, OpenInfo, SolveResult>(MAX_HISTORY);
-  // Said with the summary of solve `job` (DesignOpener: what an open or re-preparation dropped).
-  private solveNotice: { job: number; text: string } | null = null;
+  // Said with the summary of solve `job` (DesignOpener: what an open or re-preparation dropped),
+  // or with whatever ends it otherwise (a cancel, a refusal, a crash); a solve that replaces it
+  // on the same mesh says it instead.
+  private solveNotice: { job: number; mesh: LoadedMesh | null; text: string } | null = null;
   private readonly solver = new SolverClient(
     { onMessage: (message) => this.onWorkerMessage(message), onCrash: (crash) => this.onCrash(crash) },
     solverTestHooks(),
@@ -191,7 +201,9 @@ export class App {
   private startSolve(run: DesignParams[], fresh: boolean, chain: DesignParams[] | null, lost: ChainLoss | null = null, notice: string | null = null): void {
     const params = run[run.length - 1]!;
     const job = this.solver.solve(fresh, run.map((p) => this.editor.solveStep(p)));
-    this.solveNotice = notice ? { job, text: notice } : null;
+    const replaced = this.solveNotice?.mesh === this.machine.mesh ? this.solveNotice.text : null;
+    const text = notice ?? replaced;
+    this.solveNotice = text ? { job, mesh: this.machine.mesh, text } : null;
     this.machine.startSolve(job, params, chain, lost);
     this.viewer.setSolving(true);
     this.status.show(`Solving ${params.panels} panels…`);
@@ -217,11 +229,13 @@ export class App {
   }
 
   cancel(): void {
+    const job = this.machine.solving?.job ?? null;
     if (!this.dropSolve()) return;
     const solved = this.machine.solved;
     if (solved) this.viewer.setClusters(solved.result.clusterIds);
     this.status.resetProgress('cancelled');
-    this.status.show(solved ? 'Cancelled. The last finished design is shown.' : 'Cancelled.');
+    const notice = this.takeSolveNotice(job);
+    this.status.show(`${notice ? `${notice} ` : ''}${solved ? 'Cancelled. The last finished design is shown.' : 'Cancelled.'}`);
     this.updateButtons();
   }
 
@@ -251,8 +265,7 @@ export class App {
     renderQuality(this.statsBox, result);
     this.status.finishProgress();
     const summary = solvedSummary(result);
-    const notice = this.solveNotice?.job === job ? this.solveNotice.text : null;
-    this.solveNotice = null;
+    const notice = this.takeSolveNotice(job);
     if (notice) this.status.show(`${notice} ${summary.text}`, 'info'); // it still ends "Done: N panels"
     else this.status.show(summary.text, summary.warning ? 'info' : 'done');
     this.fabrication.panelsChanged(result.panelTriangles.length > 0);
@@ -334,6 +347,8 @@ export class App {
       return;
     }
     if (what === 'solve') {
+      const notice = this.takeSolveNotice(job);
+      if (notice) reason = `${reason}. ${notice}`;
       this.editor.solveFailed();
       this.viewer.setSolving(false);
       const solved = this.machine.solved;
@@ -348,6 +363,7 @@ export class App {
   // reloaded). What was under way is lost; the last result stays on show and exportable.
   private onCrash(crash: Crash): void {
     console.warn(`flatfacet: the solver worker crashed: ${crash.message}`);
+    const notice = this.takeSolveNotice(this.machine.solving?.job ?? null);
     const lost = this.machine.crashed(crash.meshKept);
     this.viewer.setSolving(false);
     const solved = this.machine.solved;
@@ -363,7 +379,7 @@ export class App {
     this.editor.workerReplaced();
     this.opener.syncExampleSelect();
     this.status.resetProgress();
-    const parts = [crash.meshKept ? CRASH_MESSAGE : `${CRASH_MESSAGE}, but without the mesh: open it again`];
+    const parts = [crashMessage(solved !== null, crash.meshKept)];
     const takenBack = this.editor.repreparationLost(this.machine.opening === null);
     if (takenBack && crash.meshKept) parts.push(takenBackNote(takenBack));
     const lostOpen = lost.lostOpening;
@@ -373,8 +389,16 @@ export class App {
     } else if (lostOpen?.reprepare === 'carry' && crash.meshKept) {
       parts.push('the mesh was not prepared again');
     }
-    this.status.error(`${parts.join('; ')}.`);
+    this.status.error(`${parts.join('; ')}.${notice ? ` ${notice}` : ''}`);
     this.updateButtons();
+  }
+
+  // The notice said with solve `job`'s end, if it has one (it is said once).
+  private takeSolveNotice(job: number | null): string | null {
+    const notice = this.solveNotice;
+    if (!notice || notice.job !== job) return null;
+    this.solveNotice = null;
+    return notice.text;
   }
 
   // ---- outputs
