@@ -71,16 +71,20 @@ std::string Session::load(const std::string& name, TriMesh raw, int input_triang
   MeshTopology topology = build_topology(clean.mesh);
   // The file's polygon of each cleaned triangle (a subdivision's control faces, prepare()).
   std::vector<int> face_polygon = cleaned_face_polygons(clean.face_source, source_polygon);
-  // Everything built: only now replace the previous design.
-  name_ = name;
+  // The copies too (running out of memory in one, a large mesh's second copy, is a refusal that
+  // must leave the previous design whole), then replace it by moves and clears.
+  TriMesh original = clean.mesh;
+  std::vector<std::string> cleanup = clean.report.messages();
+  std::string new_name = name;
+  name_ = std::move(new_name);
   mesh_ = std::move(clean.mesh);
-  original_ = mesh_;
+  original_ = std::move(original);
   forget_mesh_before();
   topology_ = std::move(topology);
   face_polygon_ = std::move(face_polygon);
   input_triangles_ = input_triangles;
   prepared_notes_.clear();
-  cleanup_ = clean.report.messages();
+  cleanup_ = std::move(cleanup);
   clean_report_ = clean.report;
   params_.density.clear();  // per vertex of the previous mesh
   remesher_.reset();
