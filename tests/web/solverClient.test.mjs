@@ -21,7 +21,7 @@ class FakeWorker {
   answer(data) { this.onmessage({ data }); }
 }
 globalThis.Worker = FakeWorker;
-const { SolverClient } = await import('../../build/web-tests/solverClient.js');
+const { SolverClient, solverTestHooks } = await import('../../build/web-tests/solverClient.js');
 
 const info = { triangles: 288 };
 const loadedAnswer = (job) => ({ type: 'loaded', job, info, positions: new Float32Array(0), indices: new Uint32Array(0) });
@@ -54,4 +54,22 @@ test('a crash reloads the last mesh with its preparation, and without one after 
   assert.equal(reload.type, 'load');
   assert.ok(!('prepare' in reload.mesh), 'the mesh as loaded: no preparation to make again');
   assert.deepEqual(reload.mesh, mesh);
+});
+
+test('the test hooks in the address work only on a page served from this machine', () => {
+  const hooks = (href) => {
+    globalThis.location = new URL(href);
+    try {
+      return solverTestHooks();
+    } finally {
+      delete globalThis.location;
+    }
+  };
+  const query = '?crashAfterSteps=3&cancelGrace=0&refuseOnPrepare=2';
+  const expected = { cancelGraceMs: 0, crashAfterSteps: 3, prepareFault: { at: 2, kind: 'refuse' } };
+  assert.deepEqual(hooks(`http://127.0.0.1:4173/${query}`), expected);
+  assert.deepEqual(hooks(`http://localhost:5173/${query}#v1=abc`), expected);
+  assert.deepEqual(hooks(`http://[::1]:8080/${query}`), expected);
+  assert.deepEqual(hooks(`https://flatfacet.example/${query}`), {});
+  assert.deepEqual(hooks(`http://192.168.1.20:4173/${query}`), {});
 });

@@ -221,8 +221,12 @@ export class SolverClient {
 // Test hooks from the page's address: ?cancelGrace=0 makes every cancel replace the worker
 // (the path a long step takes); ?crashAfterSteps=N makes the first worker crash N steps into
 // its second solve; ?crashOnPrepare=N or ?refuseOnPrepare=N (the latter wins when both are
-// given) makes its Nth 'prepare' request crash or be refused.
+// given) makes its Nth 'prepare' request crash or be refused. Only on a page served from this
+// machine (the tests', scripts/start.sh): a link to the site carrying one does nothing.
+const LOOPBACK_HOSTS = new Set(['127.0.0.1', 'localhost', '[::1]']);
+
 export function solverTestHooks(): SolverOptions {
+  if (!LOOPBACK_HOSTS.has(location.hostname)) return {};
   const numberFromUrl = (name: string, max: number): number | undefined => {
     const value = new URLSearchParams(location.search).get(name);
     const n = value === null ? Number.NaN : Number(value);
