@@ -273,8 +273,9 @@ export interface Session {
   objText(): string;
   // Every fabrication output below is of the panels kept last: keepPanels() copies the current
   // ones (the page's worker calls it when it hands a solve's result over), so a later solve,
-  // under way or cancelled half-way, does not change them. A load or a preparation drops them
-  // (the outputs are then empty parts lists).
+  // under way or cancelled half-way, does not change them. They stay until the next
+  // keepPanels(), through loads and preparations too (the worker knows which design they are
+  // of); before the first, the outputs are empty parts lists.
   keepPanels(): void;
   // Fabrication settings (JSON of FabricationParams). Status JSON; on failure the previous
   // settings stay. They apply to every fabrication output below.

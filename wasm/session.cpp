@@ -88,7 +88,6 @@ std::string Session::load(const std::string& name, TriMesh raw, int input_triang
   clean_report_ = clean.report;
   params_.density.clear();  // per vertex of the previous mesh
   remesher_.reset();
-  kept_panels_ = PanelMesh{};
   forget_result();
   prepare_seconds_ = seconds_since(t0);
   return mesh_info_json();

@@ -111,8 +111,8 @@ class Session {
   // Fabrication (wasm/session_fabrication.cpp; wasm/flatfacet.d.ts, FabricationParams) reads
   // the panels last kept: keep_panels() copies the current ones when a solve's result is
   // shown, so a later solve, under way or cancelled half-way, does not change what is
-  // fabricated (the page shows the last finished design then). A new mesh (a load or a
-  // preparation) drops them.
+  // fabricated (the page shows the last finished design then). They stay until the next
+  // keep_panels(), through loads too (the worker tells which design they are of).
   void keep_panels();
   // Status JSON; the settings stay as they were on failure.
   std::string set_fabrication(const std::string& json);

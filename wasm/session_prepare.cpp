@@ -81,7 +81,6 @@ std::string Session::adopt_mesh(TriMesh mesh, std::vector<std::string> notes) {
   prepared_notes_ = std::move(notes);
   params_.density.clear();
   remesher_.reset();
-  kept_panels_ = PanelMesh{};
   forget_result();
   return mesh_info_json();
 }

@@ -475,7 +475,8 @@ test('a hole change that makes the mesh prepared drops the edits of the mesh as 
 // triangles) is refused after the worker has read its mesh: the worker then loads the design on
 // show again, and the form shows that design again (the link had written its own), so Remesh
 // solves the 12 x 12 grid with its paint and lock, the very panels of before, not the refused
-// 24 x 24 one.
+// 24 x 24 one. Its fabrication settings are not written, and the worker still fabricates the
+// panels on show.
 test('a link refused while preparing its mesh leaves the worker on the design on show', () => {
   const { link } = gridLink();
   const lines = [];
@@ -485,13 +486,25 @@ test('a link refused while preparing its mesh leaves the worker on the design on
     lines.push(`f ${v(i, j)} ${v(i + 1, j)} ${v(i + 1, j + 1)} ${v(i, j + 1)}`);
   }
   const bytes = new TextEncoder().encode(`${lines.join('\n')}\n`);
-  const refused = linkOf(suite.url, { v: 1, mesh: { file: 'big.obj', size: bytes.length, prepare: { panels: 4, subdivide: 0, edgeLength: 0.005 } }, params: { ...quick, panels: 4, edits: [] }, history: [] }, bytes, new Int8Array(0));
+  const fabrication = { thickness: 33, side: 'inside', units: 'mm', meshUnits: 'm', sheetWidth: 2440, sheetHeight: 1220, panelThickness: {}, boundaryCut: 'square', boundaryBevelDeg: 0, upAxis: 'z' };
+  const refused = linkOf(suite.url, { v: 1, mesh: { file: 'big.obj', size: bytes.length, prepare: { panels: 4, subdivide: 0, edgeLength: 0.005 } }, params: { ...quick, panels: 4, edits: [] }, history: [], fabrication }, bytes, new Int8Array(0));
   return suite.withPage(link, async (page) => {
     assert.equal(await waitForDone(page), 4);
     const before = (await download(page, 'Export OBJ')).text;
+    const parts = (await download(page, 'Export parts list')).text;
     const message = await errorAfter(page, () => page.goto(refused));
     assert.match(message, /an edge length of 0\.005 needs about [\d,]+ triangles, more than the 2,000,000 the preparation makes/);
     assert.match(await page.locator('#mesh-details').textContent(), /^288 triangles/);
+    // The link's fabrication settings never came; the worker still fabricates the panels on
+    // show (it read the refused mesh, then the one on show again).
+    assert.equal(await page.getByLabel('Thickness', { exact: true }).inputValue(), '0');
+    const thickness = page.getByLabel('Thickness', { exact: true });
+    await thickness.fill('1');
+    await thickness.press('Tab');
+    await thickness.fill('0');
+    await thickness.press('Tab');
+    await page.waitForFunction(() => document.body.dataset.fabricating === 'false' && !document.querySelector('#export-parts').disabled, null, { timeout: 30_000, polling: 50 });
+    assert.equal((await download(page, 'Export parts list')).text, parts);
     assert.equal(await solveAfter(page, () => remesh(page)), 4);
     const after = parseObj((await download(page, 'Export OBJ')).text);
     assert.ok(after.vertices.every((v) => v.every((x) => x <= 12 + 1e-9)), 'panels of the 12 x 12 grid on show');

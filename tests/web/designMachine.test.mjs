@@ -171,3 +171,24 @@ test('an open still being prepared on the page survives a crash', () => {
   assert.equal(machine.isCurrentOpen(token), true);
   assert.equal(machine.openSent(token, 4), true);
 });
+
+test('a result solved again by a new worker warm-starts again, unless the design moved on', () => {
+  const machine = loadedMachine({ solved: true });
+  const solved = machine.solved;
+  assert.equal(solved.job, 2);
+  machine.crashed(true);
+  assert.equal(machine.planRemesh(params({ panels: 50 })).fresh, true, 'the new worker holds no result');
+  assert.equal(machine.heldAgain(solved), true);
+  assert.equal(machine.sessionHoldsSolved, true);
+  assert.equal(machine.planRemesh(params({ panels: 50 })).fresh, false, 'a warm start from the result on show');
+  // Moved on: another solve under way, another result, or another mesh opening.
+  machine.crashed(true);
+  machine.startSolve(3, params({ panels: 50 }), [params({ panels: 50 })], null);
+  assert.equal(machine.heldAgain(solved), false);
+  assert.ok(machine.finishSolve(3, 'result b'));
+  assert.equal(machine.heldAgain(solved), false);
+  const again = machine.solved;
+  machine.crashed(true);
+  machine.beginOpen({ name: 'b' });
+  assert.equal(machine.heldAgain(again), false);
+});

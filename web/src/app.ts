@@ -6,7 +6,7 @@
 import { faceOfCollapsed } from './collapsedPanel.ts';
 import { countOutcome, element } from './dom.ts';
 import { DesignEditor } from './designEditor.ts';
-import { DesignMachine, type ChainLoss } from './designMachine.ts';
+import { DesignMachine, type ChainLoss, type Solved } from './designMachine.ts';
 import { DesignOpener, type LoadedMesh, type OpenInfo, type OpenOptions } from './designOpener.ts';
 import { ExamplePicker } from './examplePicker.ts';
 import { designStem } from './exports.ts';
@@ -45,9 +45,14 @@ export class App {
   // on the same mesh says it instead.
   private solveNotice: { job: number; mesh: LoadedMesh | null; text: string } | null = null;
   private readonly solver = new SolverClient(
-    { onMessage: (message) => this.onWorkerMessage(message), onCrash: (crash) => this.onCrash(crash) },
+    { onMessage: (message) => this.onWorkerMessage(message), onCrash: (crash) => this.onCrash(crash), onReplaced: () => this.onReplaced() },
     solverTestHooks(),
   );
+  // The solve whose panels the worker keeps for fabrication (its 'keep'): the result on show,
+  // unless the worker was replaced since; and a new worker solving that result again, quietly
+  // (restorePanels).
+  private keptJob: number | null = null;
+  private restoring: { job: number; solved: Solved<SolveResult> } | null = null;
   private readonly viewer = new Viewer(element('viewport', HTMLElement));
   private readonly form = new ParamsForm();
   private readonly preparation = new PrepareControl();
@@ -69,6 +74,7 @@ export class App {
     selection: this.selection,
     panels: () => (this.machine.solving ? null : (this.machine.solved?.result ?? null)),
     panelsJob: () => this.machine.solved?.job ?? null,
+    restoring: () => this.restoring !== null,
     stem: () => designStem(this.machine.mesh?.fileName ?? 'design'),
     error: (message) => this.status.error(message),
     settingsChanged: () => this.fabricationChanged(),
@@ -200,6 +206,7 @@ export class App {
   // `notice`: said with this solve's summary (what an open or a re-preparation dropped).
   private startSolve(run: DesignParams[], fresh: boolean, chain: DesignParams[] | null, lost: ChainLoss | null = null, notice: string | null = null): void {
     const params = run[run.length - 1]!;
+    if (this.restoring) this.setRestoring(null); // the worker drops it for this solve
     const job = this.solver.solve(fresh, run.map((p) => this.editor.solveStep(p)));
     const replaced = this.solveNotice?.mesh === this.machine.mesh ? this.solveNotice.text : null;
     const text = notice ?? replaced;
@@ -236,6 +243,7 @@ export class App {
     this.status.resetProgress('cancelled');
     const notice = this.takeSolveNotice(job);
     this.status.show(`${notice ? `${notice} ` : ''}${solved ? 'Cancelled. The last finished design is shown.' : 'Cancelled.'}`);
+    this.restorePanels(); // when the cancelled solve had replaced a restore
     this.updateButtons();
   }
 
@@ -255,11 +263,16 @@ export class App {
   }
 
   private onSolved(job: number, result: SolveResult): void {
+    if (this.restoring?.job === job) {
+      this.panelsRestored(job, result);
+      return;
+    }
     const solved = this.machine.finishSolve(job, result);
     const mesh = this.machine.mesh;
     if (!solved || !mesh) return;
     countOutcome('solves');
     this.solver.keep(job); // before the fabrication request below
+    this.keptJob = job;
     this.viewer.setSolving(false);
     this.viewer.setResult(result);
     renderQuality(this.statsBox, result);
@@ -319,6 +332,11 @@ export class App {
 
   // The core refused a mesh or parameters: the previous design stays loaded and usable.
   private onFailed(job: number, reason: string, largestPart?: { faces: number; of: number }): void {
+    if (this.restoring?.job === job) {
+      this.setRestoring(null); // a deferred fabrication is then refused: Remesh
+      this.fabrication.panelsRestored();
+      return;
+    }
     const failedOpen = this.machine.sentOpening(job);
     const what = this.machine.failed(job);
     if (what === null) return; // an answer to a request the page moved past
@@ -353,6 +371,7 @@ export class App {
       this.viewer.setSolving(false);
       const solved = this.machine.solved;
       if (solved) this.viewer.setClusters(solved.result.clusterIds);
+      this.restorePanels(); // when the refused solve had replaced a restore
     }
     this.status.resetProgress();
     this.status.error(reason);
@@ -363,6 +382,9 @@ export class App {
   // reloaded). What was under way is lost; the last result stays on show and exportable.
   private onCrash(crash: Crash): void {
     console.warn(`flatfacet: the solver worker crashed: ${crash.message}`);
+    const crashedRestoring = this.restoring !== null;
+    this.setRestoring(null);
+    this.keptJob = null;
     const notice = this.takeSolveNotice(this.machine.solving?.job ?? null);
     const lost = this.machine.crashed(crash.meshKept);
     this.viewer.setSolving(false);
@@ -390,7 +412,49 @@ export class App {
       parts.push('the mesh was not prepared again');
     }
     this.status.error(`${parts.join('; ')}.${notice ? ` ${notice}` : ''}`);
+    if (crash.meshKept && !crashedRestoring) this.restorePanels(); // not again: no crash loop
+    else this.fabrication.panelsRestored(); // a deferred request is refused: Remesh
     this.updateButtons();
+  }
+
+  // A cancel replaced a worker that did not answer in time: a fabrication it was asked for
+  // will not come, and the new one has the mesh but not the panels on show.
+  private onReplaced(): void {
+    this.keptJob = null;
+    this.fabrication.workerLost();
+    this.restorePanels();
+  }
+
+  // A worker that does not keep the panels on show (a new one, or a solve that replaced a
+  // restore was cancelled) solves their chain again, quietly (a solve is deterministic: the
+  // same panels), so that fabrication, which reads the worker's panels, and the next warm start
+  // work as before. Not for a result whose chain is lost (changed mid-solve, a long chain):
+  // fabrication then asks for a Remesh.
+  private restorePanels(): void {
+    const solved = this.machine.solved;
+    if (this.restoring || !solved || this.keptJob === solved.job) return;
+    if (!solved.chain || this.machine.solving || this.machine.opening || !this.machine.mesh) {
+      this.fabrication.panelsRestored(); // a deferred request is refused: Remesh
+      return;
+    }
+    this.setRestoring({ job: this.solver.solve(true, solved.chain.map((p) => this.editor.solveStep(p))), solved });
+  }
+
+  private panelsRestored(job: number, result: SolveResult): void {
+    const { solved } = this.restoring!;
+    this.setRestoring(null);
+    // The very panels on show, and the design has not moved on (else a fabrication request is
+    // refused, which is then the truth).
+    if (result.objText === solved.result.objText && this.machine.heldAgain(solved)) {
+      this.solver.keep(job, solved.job); // before a deferred fabrication request
+      this.keptJob = solved.job;
+    }
+    this.fabrication.panelsRestored();
+  }
+
+  private setRestoring(restoring: { job: number; solved: Solved<SolveResult> } | null): void {
+    this.restoring = restoring;
+    document.body.dataset.restoring = String(restoring !== null);
   }
 
   // The notice said with solve `job`'s end, if it has one (it is said once).

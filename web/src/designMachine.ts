@@ -211,6 +211,16 @@ export class DesignMachine<M, O, R> {
     return what;
   }
 
+  // A new worker solved `solved` again (the same panels) with nothing else sent since: it holds
+  // the result on show, so the next change warm-starts from it again. False when the design
+  // moved on meanwhile.
+  heldAgain(solved: Solved<R>): boolean {
+    if (this.solvedValue !== solved || this.solvingValue || this.opening) return false;
+    this.holdsSolved = true;
+    this.pristine = false;
+    return true;
+  }
+
   // The worker crashed and a new one took its place (with the mesh reloaded when
   // `meshKept`): nothing sent to the old one survives (an open still being read on the page
   // does), the last result stays on show.

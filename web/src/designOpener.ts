@@ -11,6 +11,7 @@ import { showMeshInfo, type ExamplePicker } from './examplePicker.ts';
 import { describeDesign, findExample } from './examples.ts';
 import { checkEditsFit, countAfterEdits } from './edits/panelEdits.ts';
 import type { FabricationPanel } from './fabricationPanel.ts';
+import type { FabricationSettings } from './fabricationParams.ts';
 import type { MeshRepair } from './meshRepair.ts';
 import { payloadFromExample, payloadFromFile } from './meshFiles.ts';
 import type { Outputs } from './outputs.ts';
@@ -49,6 +50,9 @@ export interface OpenInfo {
   // A change of the holes filled: the mesh on show before it (keptThroughRepair decides, once
   // the repaired mesh is loaded, what of the paint and edits still fits).
   repairOf?: MeshBeforeRepair;
+  // A link's or stored session's fabrication settings, written once its mesh is on show (a
+  // refused link leaves those of the design on show).
+  fabrication?: FabricationSettings;
 }
 
 export interface MeshBeforeRepair {
@@ -62,6 +66,7 @@ export interface OpenOptions {
   note: string; // said in the status while loading, e.g. "Opening the shared design"
   fromLink?: boolean; // keeps the link in the address bar (it describes this design)
   repairOf?: MeshBeforeRepair; // OpenInfo.repairOf
+  fabrication?: FabricationSettings; // OpenInfo.fabrication
 }
 
 // What the opener uses of the controller.
@@ -231,13 +236,12 @@ export class DesignOpener {
     this.host.form.write(state.params);
     this.host.preparation.show(state.mesh);
     this.host.repair.show(state.mesh);
-    if (state.fabrication) this.host.fabrication.write(state.fabrication);
-    await this.open(state.mesh, state.params, state.history, { solve: true, note, fromLink });
+    await this.open(state.mesh, state.params, state.history, { solve: true, note, fromLink, ...(state.fabrication ? { fabrication: state.fabrication } : {}) });
   }
 
   private async open(design: DesignMesh, params: DesignParams, history: DesignParams[], options: OpenOptions): Promise<void> {
     const { example, label, fileName, up } = describeDesign(design);
-    const token = this.host.machine.beginOpen({ design, label, fileName, up, params, history, solve: options.solve, ...(options.repairOf ? { repairOf: options.repairOf } : {}) });
+    const token = this.host.machine.beginOpen({ design, label, fileName, up, params, history, solve: options.solve, ...(options.repairOf ? { repairOf: options.repairOf } : {}), ...(options.fabrication ? { fabrication: options.fabrication } : {}) });
     this.lastOpen = { design, params, history, options };
     this.host.repair.hideOffer();
     if (!options.fromLink) this.host.outputs.forgetLink();
@@ -301,6 +305,7 @@ export class DesignOpener {
     rhinoLoaded(loaded.mesh.fileName, loaded.mesh.info);
     renderQuality(this.host.statsBox, null);
     this.host.fabrication.panelsChanged(false);
+    if (loaded.newest && opening.fabrication) this.host.fabrication.write(opening.fabrication);
     this.host.updateButtons();
     // Overtaken by a later open: shown, since the worker holds it now, but that open goes on.
     if (!loaded.newest) return;

@@ -18,6 +18,7 @@ export interface FabricationHost {
   selection: PanelSelection; // the page's one selected panel
   panels(): SolveResult | null; // the panels on show
   panelsJob(): number | null; // the solve that gave the last result (the worker fabricates its panels)
+  restoring(): boolean; // a new worker is solving the panels on show again (App.restorePanels)
   stem(): string; // file name stem of the design ("saddle")
   error(message: string): void;
   settingsChanged(): void; // save the session, forget a link in the address bar
@@ -40,6 +41,7 @@ export class FabricationPanel {
   private settings: FabricationSettings = { ...DEFAULT_FABRICATION };
   private hasPanels = false;
   private job: number | null = null; // the request whose answer is awaited
+  private deferred = false; // a request waits for the panels to be restored
   private result: FabricationResult | null = null;
   private readonly panelThickness: PanelThicknessControl;
 
@@ -71,6 +73,7 @@ export class FabricationPanel {
   // New panels on show (or none): their outputs are asked for at once.
   panelsChanged(hasPanels: boolean): void {
     this.hasPanels = hasPanels;
+    this.deferred = false;
     this.result = null;
     this.panelThickness.clear();
     this.job = null;
@@ -128,7 +131,22 @@ export class FabricationPanel {
     this.host.settingsChanged();
   }
 
+  // The worker has the panels on show again (or will not get them: a request is then refused).
+  panelsRestored(): void {
+    if (!this.deferred) return;
+    this.deferred = false;
+    if (this.hasPanels) this.request();
+    else this.update();
+  }
+
   private request(): void {
+    if (this.host.restoring()) {
+      // The outputs on show are of the settings before: not offered until the new ones come.
+      this.deferred = true;
+      this.job = null;
+      this.update();
+      return;
+    }
     const panels = this.host.panelsJob();
     if (panels === null) return;
     this.job = this.host.solver.fabricate(toFabricationParams(this.settings), panels);
@@ -147,14 +165,14 @@ export class FabricationPanel {
   }
 
   private update(): void {
-    const ready = this.hasPanels && this.job === null && this.result !== null;
+    const ready = this.hasPanels && this.job === null && !this.deferred && this.result !== null;
     this.buttons.csv.disabled = !ready;
     this.buttons.json.disabled = !ready;
     this.buttons.svg.disabled = !ready || !this.result?.sheets.ok;
     this.buttons.dxf.disabled = !ready || !this.result?.sheets.ok;
     this.buttons.obj.disabled = !ready || this.result?.solidObj === null;
     this.buttons.obj.title = this.settings.thickness > 0 ? '' : 'set a thickness first';
-    document.body.dataset.fabricating = String(this.job !== null);
+    document.body.dataset.fabricating = String(this.job !== null || this.deferred);
   }
 
   private download(kind: 'csv' | 'json' | 'svg' | 'dxf' | 'obj'): void {

@@ -54,8 +54,9 @@ export type WorkerRequest =
   | { type: 'update'; job: number; step: SolveStep }
   | { type: 'cancel'; job: number }
   // The page shows the result of solve `job`: its panels are what fabrication reads from now
-  // on (Session.keepPanels), until the next 'keep' or a new mesh.
-  | { type: 'keep'; job: number }
+  // on (Session.keepPanels), until the next 'keep' or a new mesh. `as`: a new worker solved
+  // the result on show again (the same panels), which fabricate requests name by its first job.
+  | { type: 'keep'; job: number; as?: number }
   // The fabrication outputs of the panels the solve numbered `panels` gave (the result on
   // show), with these settings; refused when the worker no longer holds them (restarted, or a
   // mesh loaded since). Its own job numbers (SolverClient.fabricate), so it never disturbs a

@@ -31,6 +31,9 @@ export interface SolverEvents {
   onMessage(message: WorkerResponse): void;
   // The worker crashed and was replaced; every job up to now is dropped.
   onCrash(crash: Crash): void;
+  // A cancel replaced the worker (it did not answer in time): the new one has the mesh back
+  // (if one was loaded), not the panels, and a request sent to the old one is not answered.
+  onReplaced?(): void;
 }
 
 export class SolverClient {
@@ -140,8 +143,8 @@ export class SolverClient {
   }
 
   // The page shows solve `job`'s result: the worker keeps its panels for fabrication.
-  keep(job: number): void {
-    this.send({ type: 'keep', job });
+  keep(job: number, as?: number): void {
+    this.send(as === undefined ? { type: 'keep', job } : { type: 'keep', job, as });
   }
 
   // Fabrication outputs of the panels solve `panels` gave; numbered apart from loads and solves.
@@ -187,6 +190,7 @@ export class SolverClient {
       if (worker !== this.worker) return; // replaced meanwhile (a crash): nothing is held any more
       if (restart) this.restart(true);
       this.release();
+      if (restart) this.events.onReplaced?.();
     };
     worker.addEventListener('message', listener);
   }

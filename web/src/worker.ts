@@ -90,6 +90,7 @@ function checkedText(text: string, what: string): string {
 
 // `restore`: after a refusal half-way, put the mesh on show back (not when that is the load).
 function loadInto(target: Session, mesh: MeshPayload, restore = true): MeshInfo {
+  const kept = keptJob;
   // Every load sets the repair, so a previous design's never carries over.
   checked<Status>(target.setRepair(mesh.repair?.fillHoles ?? 0, mesh.repair?.largestPart ?? false), 'the repair options');
   const loaded = loadAsIs(target, mesh);
@@ -101,7 +102,10 @@ function loadInto(target: Session, mesh: MeshPayload, restore = true): MeshInfo 
   } catch (error) {
     // Refused after the session took the new mesh: the page keeps the one before, so the
     // session gets it back (else the next Remesh would solve the refused mesh).
-    if (error instanceof StatusError && restore && shown) restoreShown(target, shown);
+    if (error instanceof StatusError && restore && shown) {
+      restoreShown(target, shown);
+      keptJob = kept; // the session keeps the panels it kept, of this very mesh
+    }
     throw error;
   }
 }
@@ -119,7 +123,7 @@ function prepareInto(target: Session, prepare: MeshPrepare): MeshInfo {
   return tookMesh(checked<MeshInfo>(target.prepare(prepare.panels, prepare.subdivide, prepare.edgeLength ?? 0, prepare.refineBelow ?? LEGACY_REFINE_BELOW, prepare.refineRounds ?? LEGACY_REFINE_ROUNDS), 'preparing the mesh'));
 }
 
-// The session took a new mesh (it drops its kept panels then).
+// The session took a new mesh: the panels it keeps are not of it.
 function tookMesh(info: MeshInfo): MeshInfo {
   finishedJob = null;
   keptJob = null;
@@ -324,7 +328,7 @@ function handle(request: WorkerRequest): void {
     case 'keep':
       if (request.job === finishedJob) {
         requireSession().keepPanels();
-        keptJob = request.job;
+        keptJob = request.as ?? request.job;
       }
       return;
     case 'fabricate': {
