@@ -44,6 +44,8 @@ test('a link carries the fabrication settings; an old link without them still op
   const hostile = hashToState(stateToHash({ mesh, params: DEFAULT_PARAMS, history: [], fabrication: { ...fabrication, thickness: -5 } }));
   assert.equal(hostile.ok, false);
   assert.match(hostile.message, /in the link, Thickness/);
+  const unknown = hashToState(stateToHash({ mesh, params: DEFAULT_PARAMS, history: [], fabrication: { ...fabrication, sheetMargin: 10 } }));
+  assert.equal(unknown.message, 'in the link, fabrication: unknown field "sheetMargin"');
 });
 
 test('per-panel thickness and boundary cuts: validated, sorted, carried by links, sent with a thickness only', () => {

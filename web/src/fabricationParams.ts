@@ -107,7 +107,7 @@ export function validateFabrication(value: unknown, where = 'fabrication'): Chec
 // Absent (an older link or stored session): the defaults.
 export function fabricationOrDefault(value: unknown, where: string): Checked<FabricationSettings> {
   if (value === undefined) return { ok: true, value: { ...DEFAULT_FABRICATION } };
-  const checked = validateFabrication(value, where);
+  const checked = validateFabrication(value); // "fabrication: unknown field …", not "the link: …" twice
   return checked.ok ? checked : failure(`in ${where}, ${checked.message}`);
 }
 
