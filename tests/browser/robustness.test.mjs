@@ -1,7 +1,8 @@
 // The page under races, crashes and hostile input, in headless Chromium against the built
 // site: Remesh while a mesh opens, a cancel during an earlier cancel, a crashing worker, glTF
 // files that point elsewhere, links too large to travel, stale link messages and hashes, the
-// stored session, and a site built without the shared example meshes.
+// stored session, a site built without the shared example meshes, and an example that fails
+// while another mesh loads.
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
@@ -29,6 +30,27 @@ import { movedOff } from '../fixtures/meshes.mjs';
 
 const suite = browserSuite();
 const { withPage } = suite;
+
+// A file dropped on the view, as a designer would.
+function dropFile(page, name, text) {
+  return page.evaluate(
+    ([name, text]) => {
+      const transfer = new DataTransfer();
+      transfer.items.add(new File([text], name));
+      document.getElementById('viewport').dispatchEvent(new DragEvent('drop', { dataTransfer: transfer, bubbles: true, cancelable: true }));
+    },
+    [name, text],
+  );
+}
+
+// An n x n quad saddle as OFF (large enough that its load in the worker takes a while).
+function pringleOff(n) {
+  const lines = [];
+  for (let j = 0; j <= n; j++) for (let i = 0; i <= n; i++) lines.push(`${i} ${j} ${(((i - n / 2) ** 2 - (j - n / 2) ** 2) / (n * 10)).toFixed(4)}`);
+  const faces = [];
+  for (let j = 0; j < n; j++) for (let i = 0; i < n; i++) faces.push(`4 ${j * (n + 1) + i} ${j * (n + 1) + i + 1} ${(j + 1) * (n + 1) + i + 1} ${(j + 1) * (n + 1) + i}`);
+  return `OFF\n${lines.length} ${faces.length} 0\n${lines.join('\n')}\n${faces.join('\n')}\n`;
+}
 
 test('Remesh, Enter and Share are refused while a mesh opens; the new mesh solves under its own name', () =>
   withPage(suite.url, async (page) => {
@@ -65,20 +87,6 @@ test('a load overtaken by an open that fails: the page shows, and solves, the me
     await setPanels(page, 6);
     const since = await outcomes(page);
     // A large OFF goes to the worker; while it loads there, a GLB that fails on the page.
-    const drop = (name, text) =>
-      page.evaluate(
-        ([name, text]) => {
-          const transfer = new DataTransfer();
-          transfer.items.add(new File([text], name));
-          document.getElementById('viewport').dispatchEvent(new DragEvent('drop', { dataTransfer: transfer, bubbles: true, cancelable: true }));
-        },
-        [name, text],
-      );
-    const n = 160;
-    const lines = [];
-    for (let j = 0; j <= n; j++) for (let i = 0; i <= n; i++) lines.push(`${i} ${j} ${(((i - n / 2) ** 2 - (j - n / 2) ** 2) / (n * 10)).toFixed(4)}`);
-    const faces = [];
-    for (let j = 0; j < n; j++) for (let i = 0; i < n; i++) faces.push(`4 ${j * (n + 1) + i} ${j * (n + 1) + i + 1} ${(j + 1) * (n + 1) + i + 1} ${(j + 1) * (n + 1) + i}`);
     // The load may pass between two polls (CI once missed it for 30 s polling each frame):
     // an observer records that it reached the worker.
     await page.evaluate(() => {
@@ -87,9 +95,9 @@ test('a load overtaken by an open that fails: the page shows, and solves, the me
         if (document.body.dataset.opening === 'loading') window.sawLoading = true;
       }).observe(document.body, { attributes: true, attributeFilter: ['data-opening'] });
     });
-    await drop('pringle.off', `OFF\n${lines.length} ${faces.length} 0\n${lines.join('\n')}\n${faces.join('\n')}\n`);
+    await dropFile(page, 'pringle.off', pringleOff(160));
     await page.waitForFunction(() => window.sawLoading, null, { timeout: 30_000, polling: 20 });
-    await drop('broken.glb', 'glTF not really');
+    await dropFile(page, 'broken.glb', 'glTF not really');
     // Which finishes first is up to the browser; wait until both have, and any solve too.
     await page
       .waitForFunction(
@@ -111,6 +119,34 @@ test('a load overtaken by an open that fails: the page shows, and solves, the me
     assert.equal(input, title === 'pringle.off' ? 'pringle.off' : 'saddle', 'the worker solved the mesh the page shows');
     assert.equal(obj.name, title === 'pringle.off' ? 'pringle-panels.obj' : 'saddle-panels.obj');
   }));
+
+// An example that fails on the page while a file loads in the worker: the example had written
+// its own panel count (100) into the form, and the file, solved with the 6 it was opened with,
+// then showed 100 in Panels, so the next Remesh solved 100.
+test('an example that fails while another mesh loads leaves the form to that mesh', () =>
+  withPage(suite.url, async (page) => {
+    await waitForDone(page);
+    await solveAfter(page, () => selectExample(page, 'saddle'));
+    await setPanels(page, 6);
+    await page.route('**/examples/epcot.off', (route) => route.abort());
+    const since = await outcomes(page);
+    await page.evaluate(() => {
+      window.sawLoading = false;
+      window.failedWhileLoading = false;
+      new MutationObserver(() => {
+        if (document.body.dataset.opening === 'loading') window.sawLoading = true;
+        window.failedWhileLoading ||= document.body.dataset.opening === 'loading' && /could not be fetched/.test(document.querySelector('[role="status"]')?.textContent ?? '');
+      }).observe(document.body, { attributes: true, subtree: true, childList: true, characterData: true });
+    });
+    await dropFile(page, 'pringle.off', pringleOff(300));
+    await page.waitForFunction(() => window.sawLoading, null, { timeout: 30_000, polling: 20 });
+    await selectExample(page, 'epcot');
+    await page.waitForFunction((since) => Number(document.body.dataset.errors ?? 0) > since.errors && document.body.dataset.opening === 'false' && document.body.dataset.solving === 'false', since, { timeout: 30_000, polling: 20 });
+    assert.equal(await page.evaluate(() => window.failedWhileLoading), true, 'the example failed while the file loaded');
+    assert.equal((await page.locator('#mesh-title').textContent()).trim(), 'pringle.off');
+    assert.equal(await page.getByLabel('Panels', { exact: true }).inputValue(), '6');
+    assert.equal(await solveAfter(page, () => remesh(page)), 6);
+  }, { allowed: [/Failed to load resource/] }));
 
 test('a fresh solve in the same worker (resetSolve) gives the panels of the first solve', () =>
   withPage(suite.url, async (page) => {

@@ -265,15 +265,19 @@ export class DesignOpener {
   // An open failed and none other goes on: the design on show stays, and the Surface section
   // shows its preparation and repair again (a refused value was never applied). `restoreForm`:
   // the open had written its own parameters into the form (a link, a file, an example; not a
-  // re-preparation, whose form holds what the user typed), so the form shows the design's too.
+  // re-preparation, whose form holds what the user typed), so the form shows the design's too,
+  // or, when another open goes on, that open's (which solves them once its mesh is shown).
   failOpen(reason: string, restoreForm = true): void {
     const notice = this.pendingNotice;
     this.pendingNotice = null;
     const mesh = this.host.machine.mesh;
-    if (mesh && !this.host.machine.opening) {
+    const opening = this.host.machine.opening;
+    if (mesh && !opening) {
       if (restoreForm) this.host.editor.showCurrent();
       this.host.preparation.show(mesh.design);
       this.host.repair.show(mesh.design);
+    } else if (opening && restoreForm && !opening.info.reprepare) {
+      this.host.form.write(opening.info.params);
     }
     this.syncExampleSelect();
     this.host.status.resetProgress();
