@@ -321,6 +321,7 @@ for (const how of ['cancel', 'crash'])
       const before = (await download(page, 'Export parts list')).text;
       const first = page.workers()[0];
       const replaced = page.waitForEvent('worker', { timeout: 30_000 });
+      const closed = new Promise((resolve) => first.once('close', resolve));
       await setPanels(page, 200);
       if (how === 'cancel') {
         await remesh(page);
@@ -329,7 +330,8 @@ for (const how of ['cancel', 'crash'])
       } else {
         assert.match(await errorAfter(page, () => remesh(page), 60_000), /crashed and was restarted; the last result is kept/);
       }
-      await replaced;
+      await Promise.all([replaced, closed]);
+      assert.equal(page.workers().length, 1);
       assert.notEqual(page.workers()[0], first, 'a new worker');
       assert.equal(await partsListAgain(page), before);
       assert.equal(await page.evaluate(() => document.body.dataset.restoring), 'false');
@@ -337,3 +339,52 @@ for (const how of ['cancel', 'crash'])
       assert.equal(await solveAfter(page, () => remesh(page)), 200);
       assert.match((await download(page, 'Export parts list')).text, /^200,total,.*,mm,20,/m);
     }));
+
+// A fabrication change made as the cancel replaces the worker is held and goes to the new one,
+// which cannot answer it yet: it is asked again once the panels are restored (it was lost, and
+// the outputs of 20 mm were offered under 33).
+test('a fabrication change made with a cancel that replaces the worker is made once the panels are back', () =>
+  withPage(`${suite.url}?cancelGrace=0`, async (page) => {
+    assert.equal(await waitForDone(page), 300);
+    await setThickness(page, 20);
+    await setPanels(page, 500);
+    await remesh(page);
+    await waitForProgress(page);
+    const since = await fabrications(page);
+    const status = await page.evaluate(() => {
+      document.getElementById('cancel').click();
+      const thickness = document.getElementById('fab-thickness');
+      thickness.value = '33';
+      thickness.dispatchEvent(new Event('change', { bubbles: true }));
+      return document.querySelector('[role="status"]')?.textContent?.trim() ?? '';
+    });
+    assert.match(status, /^Cancelled/);
+    await page.waitForFunction((since) => Number(document.body.dataset.fabrications ?? 0) > since && document.body.dataset.fabricating === 'false', since, { timeout: 60_000, polling: 50 });
+    assert.equal(await page.getByLabel('Thickness', { exact: true }).inputValue(), '33');
+    assert.match((await download(page, 'Export parts list')).text, /^300,total,.*,mm,33,/m);
+  }));
+
+// A mesh the worker refuses while the new worker restores the panels on show: the load drops
+// the restore, so the refusal starts it again (it stayed "restoring" for good, and the
+// Fabrication downloads with it).
+test('a mesh refused while the panels are restored: they are restored again', () =>
+  withPage(`${suite.url}?cancelGrace=0`, async (page) => {
+    assert.equal(await waitForDone(page), 300);
+    await setThickness(page, 20);
+    const before = (await download(page, 'Export parts list')).text;
+    await setPanels(page, 200);
+    await remesh(page);
+    await waitForProgress(page);
+    assert.match(await cancelAtOnce(page), /^Cancelled/);
+    await page.waitForFunction(() => document.body.dataset.restoring === 'true', null, { timeout: 30_000, polling: 5 });
+    const message = await errorAfter(page, () =>
+      page.evaluate(() => {
+        const transfer = new DataTransfer();
+        transfer.items.add(new File(['OFF\n3 1 0\n0 0 0\n'], 'broken.off'));
+        document.getElementById('viewport').dispatchEvent(new DragEvent('drop', { dataTransfer: transfer, bubbles: true, cancelable: true }));
+      }),
+    );
+    assert.match(message, /broken\.off|reading the mesh|OFF/);
+    assert.equal(await partsListAgain(page), before);
+    assert.equal(await page.evaluate(() => document.body.dataset.restoring), 'false');
+  }));

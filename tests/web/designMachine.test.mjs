@@ -181,7 +181,8 @@ test('a result solved again by a new worker warm-starts again, unless the design
   assert.equal(machine.heldAgain(solved), true);
   assert.equal(machine.sessionHoldsSolved, true);
   assert.equal(machine.planRemesh(params({ panels: 50 })).fresh, false, 'a warm start from the result on show');
-  // Moved on: another solve under way, another result, or another mesh opening.
+  // Moved on: another solve under way, another result, or another mesh sent to the worker
+  // (one still read on the page is not there yet).
   machine.crashed(true);
   machine.startSolve(3, params({ panels: 50 }), [params({ panels: 50 })], null);
   assert.equal(machine.heldAgain(solved), false);
@@ -189,6 +190,11 @@ test('a result solved again by a new worker warm-starts again, unless the design
   assert.equal(machine.heldAgain(solved), false);
   const again = machine.solved;
   machine.crashed(true);
-  machine.beginOpen({ name: 'b' });
+  const token = machine.beginOpen({ name: 'b' });
+  assert.equal(machine.loadingInWorker, false);
+  assert.equal(machine.heldAgain(again), true);
+  machine.crashed(true);
+  assert.equal(machine.openSent(token, 4), true);
+  assert.equal(machine.loadingInWorker, true);
   assert.equal(machine.heldAgain(again), false);
 });

@@ -53,6 +53,7 @@ export class App {
   // (restorePanels).
   private keptJob: number | null = null;
   private restoring: { job: number; solved: Solved<SolveResult> } | null = null;
+  private unrestorable: Solved<SolveResult> | null = null; // solved again to other panels
   private readonly viewer = new Viewer(element('viewport', HTMLElement));
   private readonly form = new ParamsForm();
   private readonly preparation = new PrepareControl();
@@ -109,7 +110,10 @@ export class App {
     examples: this.examples,
     fabrication: this.fabrication,
     statsBox: this.statsBox,
-    dropSolve: () => this.dropSolve(),
+    dropSolve: () => {
+      this.dropSolve();
+      if (this.restoring) this.setRestoring(null); // the worker drops it for the load
+    },
     startSolve: (run, fresh, chain, notice) => this.startSolve(run, fresh, chain, null, notice),
     save: (state) => this.save(state),
     updateButtons: () => this.updateButtons(),
@@ -353,6 +357,7 @@ export class App {
       if (solved) this.viewer.setClusters(solved.result.clusterIds);
       if (!this.machine.opening) {
         this.opener.failOpen(reason, !failedOpen?.reprepare); // the Surface section too
+        this.restorePanels(); // when the open had dropped a restore
         return;
       }
       // A later open goes on. The Surface section shows the mesh on show's (a preparation or
@@ -433,7 +438,7 @@ export class App {
   private restorePanels(): void {
     const solved = this.machine.solved;
     if (this.restoring || !solved || this.keptJob === solved.job) return;
-    if (!solved.chain || this.machine.solving || this.machine.opening || !this.machine.mesh) {
+    if (!solved.chain || solved === this.unrestorable || this.machine.solving || this.machine.loadingInWorker || !this.machine.mesh) {
       this.fabrication.panelsRestored(); // a deferred request is refused: Remesh
       return;
     }
@@ -445,7 +450,8 @@ export class App {
     this.setRestoring(null);
     // The very panels on show, and the design has not moved on (else a fabrication request is
     // refused, which is then the truth).
-    if (result.objText === solved.result.objText && this.machine.heldAgain(solved)) {
+    if (result.objText !== solved.result.objText) this.unrestorable = solved; // not tried again
+    else if (this.machine.heldAgain(solved)) {
       this.solver.keep(job, solved.job); // before a deferred fabrication request
       this.keptJob = solved.job;
     }

@@ -187,6 +187,11 @@ export class DesignMachine<M, O, R> {
   // ---- failures
 
   // The opening sent as `job`, while its answer is awaited (null: none such).
+  // A mesh sent to the worker and not yet answered (one still read on the page is not there).
+  get loadingInWorker(): boolean {
+    return this.sent.length > 0;
+  }
+
   sentOpening(job: number): O | null {
     return this.sent.find((opening) => opening.job === job)?.info ?? null;
   }
@@ -215,7 +220,7 @@ export class DesignMachine<M, O, R> {
   // the result on show, so the next change warm-starts from it again. False when the design
   // moved on meanwhile.
   heldAgain(solved: Solved<R>): boolean {
-    if (this.solvedValue !== solved || this.solvingValue || this.opening) return false;
+    if (this.solvedValue !== solved || this.solvingValue || this.loadingInWorker) return false;
     this.holdsSolved = true;
     this.pristine = false;
     return true;

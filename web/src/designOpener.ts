@@ -50,8 +50,8 @@ export interface OpenInfo {
   // A change of the holes filled: the mesh on show before it (keptThroughRepair decides, once
   // the repaired mesh is loaded, what of the paint and edits still fits).
   repairOf?: MeshBeforeRepair;
-  // A link's or stored session's fabrication settings, written once its mesh is on show (a
-  // refused link leaves those of the design on show).
+  // A link's fabrication settings, written once its mesh is on show (a refused link leaves
+  // those of the design on show).
   fabrication?: FabricationSettings;
 }
 
@@ -83,7 +83,7 @@ export interface OpenerHost {
   examples: ExamplePicker;
   fabrication: FabricationPanel;
   statsBox: HTMLDivElement;
-  dropSolve(): boolean;
+  dropSolve(): void; // a solve under way, and a quiet restore (the session's mesh changes)
   startSolve(run: DesignParams[], fresh: boolean, chain: DesignParams[] | null, notice?: string | null): void;
   save(state: DesignState): void;
   updateButtons(): void;
@@ -236,7 +236,11 @@ export class DesignOpener {
     this.host.form.write(state.params);
     this.host.preparation.show(state.mesh);
     this.host.repair.show(state.mesh);
-    await this.open(state.mesh, state.params, state.history, { solve: true, note, fromLink, ...(state.fabrication ? { fabrication: state.fabrication } : {}) });
+    // A link's settings wait for its mesh (a refused link leaves the design's own); the stored
+    // session's are the designer's own, kept even when its mesh cannot be opened again.
+    if (state.fabrication && !fromLink) this.host.fabrication.write(state.fabrication);
+    const fabrication = state.fabrication && fromLink ? { fabrication: state.fabrication } : {};
+    await this.open(state.mesh, state.params, state.history, { solve: true, note, fromLink, ...fabrication });
   }
 
   private async open(design: DesignMesh, params: DesignParams, history: DesignParams[], options: OpenOptions): Promise<void> {

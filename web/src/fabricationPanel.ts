@@ -98,10 +98,13 @@ export class FabricationPanel {
     this.show();
   }
 
-  // The worker was replaced: an awaited answer will not come; the last outputs stay.
+  // The worker was replaced: an awaited answer will not come. It is asked for again once the
+  // new worker has the panels (panelsRestored); until then the outputs on show, of the
+  // settings before, are not offered.
   workerLost(): void {
     if (this.job === null) return;
     this.job = null;
+    this.deferred = true;
     this.show();
   }
 
@@ -149,6 +152,7 @@ export class FabricationPanel {
     }
     const panels = this.host.panelsJob();
     if (panels === null) return;
+    this.deferred = false;
     this.job = this.host.solver.fabricate(toFabricationParams(this.settings), panels);
     this.update();
   }
