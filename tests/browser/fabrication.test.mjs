@@ -8,7 +8,7 @@
 import assert from 'node:assert/strict';
 import { join } from 'node:path';
 import { test } from 'node:test';
-import { browserSuite, download, errorAfter, parseObj, remesh, repo, screenshot, selectExample, setPanels, solveAfter, viewPixels, viewPixelsWithoutProblems, waitForDone, waitForProgress, waitForStatus } from './harness.mjs';
+import { browserSuite, download, errorAfter, outcomes, parseObj, remesh, repo, screenshot, selectExample, setPanels, solveAfter, viewPixels, viewPixelsWithoutProblems, waitForDone, waitForProgress, waitForStatus } from './harness.mjs';
 
 const suite = browserSuite();
 const { withPage } = suite;
@@ -387,4 +387,32 @@ test('a mesh refused while the panels are restored: they are restored again', ()
     assert.match(message, /broken\.off|reading the mesh|OFF/);
     assert.equal(await partsListAgain(page), before);
     assert.equal(await page.evaluate(() => document.body.dataset.restoring), 'false');
+  }));
+
+// A Remesh during the restore drops it (the worker solves that instead), and a fabrication
+// change during that solve waits: the worker keeps no panels then. Cancelled (within the
+// grace: the worker stays), the design on show is restored and the change made (it was
+// refused, and the downloads then stayed off).
+test('a fabrication change during a solve that replaced the restore is made once the panels are back', () =>
+  withPage(`${suite.url}?crashAfterSteps=3`, async (page) => {
+    assert.equal(await waitForDone(page), 300);
+    await setThickness(page, 20);
+    await setPanels(page, 200);
+    assert.match(await errorAfter(page, () => remesh(page), 60_000), /crashed and was restarted/);
+    await page.waitForFunction(() => document.body.dataset.restoring === 'true', null, { timeout: 30_000, polling: 5 });
+    await setPanels(page, 600);
+    await remesh(page);
+    await waitForProgress(page);
+    const since = await outcomes(page);
+    const fabricated = await fabrications(page);
+    await page.evaluate(() => {
+      const thickness = document.getElementById('fab-thickness');
+      thickness.value = '26';
+      thickness.dispatchEvent(new Event('change', { bubbles: true }));
+    });
+    await page.waitForTimeout(300); // a refusal would have come by now
+    assert.match(await cancelAtOnce(page), /^Cancelled/);
+    await page.waitForFunction((since) => Number(document.body.dataset.fabrications ?? 0) > since && document.body.dataset.fabricating === 'false', fabricated, { timeout: 60_000, polling: 50 });
+    assert.match((await download(page, 'Export parts list')).text, /^300,total,.*,mm,26,/m);
+    assert.equal((await outcomes(page)).errors, since.errors, 'no refusal said meanwhile');
   }));

@@ -75,7 +75,7 @@ export class App {
     selection: this.selection,
     panels: () => (this.machine.solving ? null : (this.machine.solved?.result ?? null)),
     panelsJob: () => this.machine.solved?.job ?? null,
-    restoring: () => this.restoring !== null,
+    workerPanels: () => this.workerPanels(),
     stem: () => designStem(this.machine.mesh?.fileName ?? 'design'),
     error: (message) => this.status.error(message),
     settingsChanged: () => this.fabricationChanged(),
@@ -117,6 +117,7 @@ export class App {
     startSolve: (run, fresh, chain, notice) => this.startSolve(run, fresh, chain, null, notice),
     save: (state) => this.save(state),
     updateButtons: () => this.updateButtons(),
+    openFailed: () => this.restorePanels(), // an open sent meanwhile had dropped a restore
   });
 
   constructor() {
@@ -356,8 +357,7 @@ export class App {
       const solved = this.machine.solved; // the open dropped a solve under way: its clusters go
       if (solved) this.viewer.setClusters(solved.result.clusterIds);
       if (!this.machine.opening) {
-        this.opener.failOpen(reason, !failedOpen?.reprepare); // the Surface section too
-        this.restorePanels(); // when the open had dropped a restore
+        this.opener.failOpen(reason, !failedOpen?.reprepare); // the Surface section too (and restorePanels)
         return;
       }
       // A later open goes on. The Surface section shows the mesh on show's (a preparation or
@@ -436,13 +436,22 @@ export class App {
   // work as before. Not for a result whose chain is lost (changed mid-solve, a long chain):
   // fabrication then asks for a Remesh.
   private restorePanels(): void {
+    if (this.restoring) return;
     const solved = this.machine.solved;
-    if (this.restoring || !solved || this.keptJob === solved.job) return;
-    if (!solved.chain || solved === this.unrestorable || this.machine.solving || this.machine.loadingInWorker || !this.machine.mesh) {
-      this.fabrication.panelsRestored(); // a deferred request is refused: Remesh
+    if (solved?.chain && this.keptJob !== solved.job && solved !== this.unrestorable && !this.machine.solving && !this.machine.loadingInWorker && this.machine.mesh) {
+      this.setRestoring({ job: this.solver.solve(true, solved.chain.map((p) => this.editor.solveStep(p))), solved });
       return;
     }
-    this.setRestoring({ job: this.solver.solve(true, solved.chain.map((p) => this.editor.solveStep(p))), solved });
+    this.fabrication.panelsRestored(); // a deferred request goes: answered, refused (Remesh), or waits again
+  }
+
+  // FabricationHost.workerPanels: whether a fabrication request can be answered now.
+  private workerPanels(): 'kept' | 'pending' | 'lost' {
+    const solved = this.machine.solved;
+    if (solved && this.keptJob === solved.job) return 'kept';
+    // Each ends in new panels (a solve, a load) or in restorePanels (a cancel, a refusal).
+    if (this.restoring || this.machine.solving || this.machine.opening) return 'pending';
+    return 'lost';
   }
 
   private panelsRestored(job: number, result: SolveResult): void {

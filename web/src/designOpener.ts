@@ -87,6 +87,7 @@ export interface OpenerHost {
   startSolve(run: DesignParams[], fresh: boolean, chain: DesignParams[] | null, notice?: string | null): void;
   save(state: DesignState): void;
   updateButtons(): void;
+  openFailed(): void; // after failOpen: the design on show stays
 }
 
 export class DesignOpener {
@@ -286,6 +287,7 @@ export class DesignOpener {
     this.syncExampleSelect();
     this.host.status.resetProgress();
     this.host.status.error(notice ? `${notice} ${reason}` : reason);
+    this.host.openFailed();
     this.host.updateButtons();
   }
 

@@ -18,7 +18,10 @@ export interface FabricationHost {
   selection: PanelSelection; // the page's one selected panel
   panels(): SolveResult | null; // the panels on show
   panelsJob(): number | null; // the solve that gave the last result (the worker fabricates its panels)
-  restoring(): boolean; // a new worker is solving the panels on show again (App.restorePanels)
+  // Whether the worker keeps the panels on show ('kept'), will have them or new ones once what
+  // is under way ends ('pending': a restore, a solve, a mesh loading; App.restorePanels), or
+  // will not ('lost': a request is refused, saying to Remesh).
+  workerPanels(): 'kept' | 'pending' | 'lost';
   stem(): string; // file name stem of the design ("saddle")
   error(message: string): void;
   settingsChanged(): void; // save the session, forget a link in the address bar
@@ -134,7 +137,8 @@ export class FabricationPanel {
     this.host.settingsChanged();
   }
 
-  // The worker has the panels on show again (or will not get them: a request is then refused).
+  // What kept a request waiting has ended (App.restorePanels): it goes now, and is answered,
+  // refused, or waits again.
   panelsRestored(): void {
     if (!this.deferred) return;
     this.deferred = false;
@@ -143,7 +147,7 @@ export class FabricationPanel {
   }
 
   private request(): void {
-    if (this.host.restoring()) {
+    if (this.host.workerPanels() === 'pending') {
       // The outputs on show are of the settings before: not offered until the new ones come.
       this.deferred = true;
       this.job = null;
