@@ -54,6 +54,7 @@ export class App {
   private keptJob: number | null = null;
   private restoring: { job: number; solved: Solved<SolveResult> } | null = null;
   private unrestorable: Solved<SolveResult> | null = null; // solved again to other panels
+  private solverDead = false; // a worker that could not start ('fatal'): nothing is answered
   private readonly viewer = new Viewer(element('viewport', HTMLElement));
   private readonly form = new ParamsForm();
   private readonly preparation = new PrepareControl();
@@ -301,6 +302,11 @@ export class App {
         this.machine.crashed(false);
         this.editor.repreparationLost(this.machine.opening === null); // no answer will come
         this.viewer.setSolving(false);
+        this.solverDead = true; // no fabrication answer will come either
+        this.setRestoring(null);
+        this.keptJob = null;
+        this.fabrication.workerLost();
+        this.fabrication.panelsRestored(); // a request waiting is told the solver is gone
         this.status.error(message.message);
         this.updateButtons();
         return;
@@ -436,7 +442,7 @@ export class App {
   // work as before. Not for a result whose chain is lost (changed mid-solve, a long chain):
   // fabrication then asks for a Remesh.
   private restorePanels(): void {
-    if (this.restoring) return;
+    if (this.restoring || this.solverDead) return;
     const solved = this.machine.solved;
     if (solved?.chain && this.keptJob !== solved.job && solved !== this.unrestorable && !this.machine.solving && !this.machine.loadingInWorker && this.machine.mesh) {
       this.setRestoring({ job: this.solver.solve(true, solved.chain.map((p) => this.editor.solveStep(p))), solved });
@@ -446,7 +452,8 @@ export class App {
   }
 
   // FabricationHost.workerPanels: whether a fabrication request can be answered now.
-  private workerPanels(): 'kept' | 'pending' | 'lost' {
+  private workerPanels(): 'kept' | 'pending' | 'lost' | 'dead' {
+    if (this.solverDead) return 'dead';
     const solved = this.machine.solved;
     if (solved && this.keptJob === solved.job) return 'kept';
     // Each ends in new panels (a solve, a load) or in restorePanels (a cancel, a refusal).

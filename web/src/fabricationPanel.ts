@@ -20,8 +20,9 @@ export interface FabricationHost {
   panelsJob(): number | null; // the solve that gave the last result (the worker fabricates its panels)
   // Whether the worker keeps the panels on show ('kept'), will have them or new ones once what
   // is under way ends ('pending': a restore, a solve, a mesh loading; App.restorePanels), or
-  // will not ('lost': a request is refused, saying to Remesh).
-  workerPanels(): 'kept' | 'pending' | 'lost';
+  // will not ('lost': a request is refused, saying to Remesh), or no worker answers at all
+  // ('dead': it could not start).
+  workerPanels(): 'kept' | 'pending' | 'lost' | 'dead';
   stem(): string; // file name stem of the design ("saddle")
   error(message: string): void;
   settingsChanged(): void; // save the session, forget a link in the address bar
@@ -147,7 +148,15 @@ export class FabricationPanel {
   }
 
   private request(): void {
-    if (this.host.workerPanels() === 'pending') {
+    const worker = this.host.workerPanels();
+    if (worker === 'dead') {
+      this.deferred = false;
+      this.result = null;
+      this.host.error('fabrication: the solver could not start; reload the page');
+      this.show();
+      return;
+    }
+    if (worker === 'pending') {
       // The outputs on show are of the settings before: not offered until the new ones come.
       this.deferred = true;
       this.job = null;
