@@ -186,12 +186,12 @@ export class DesignMachine<M, O, R> {
 
   // ---- failures
 
-  // The opening sent as `job`, while its answer is awaited (null: none such).
   // A mesh sent to the worker and not yet answered (one still read on the page is not there).
   get loadingInWorker(): boolean {
     return this.sent.length > 0;
   }
 
+  // The opening sent as `job`, while its answer is awaited (null: none such).
   sentOpening(job: number): O | null {
     return this.sent.find((opening) => opening.job === job)?.info ?? null;
   }

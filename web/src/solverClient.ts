@@ -172,7 +172,7 @@ export class SolverClient {
     if (this.held) {
       // An earlier cancel is still waiting for the worker, which has not seen this job's
       // requests yet: dropping them is the whole cancel.
-      this.held = this.held.filter((request) => request.type === 'fabricate' || request.type === 'expressionDensity' || request.type === 'keep' || request.job !== job);
+      this.held = this.held.filter((request) => request.type === 'fabricate' || request.type === 'expressionDensity' || request.job !== job);
       return;
     }
     const worker = this.worker;

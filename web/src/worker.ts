@@ -120,7 +120,7 @@ function restoreShown(target: Session, mesh: MeshPayload): void {
 }
 
 function prepareInto(target: Session, prepare: MeshPrepare): MeshInfo {
-  return tookMesh(checked<MeshInfo>(target.prepare(prepare.panels, prepare.subdivide, prepare.edgeLength ?? 0, prepare.refineBelow ?? LEGACY_REFINE_BELOW, prepare.refineRounds ?? LEGACY_REFINE_ROUNDS), 'preparing the mesh'));
+  return checked<MeshInfo>(target.prepare(prepare.panels, prepare.subdivide, prepare.edgeLength ?? 0, prepare.refineBelow ?? LEGACY_REFINE_BELOW, prepare.refineRounds ?? LEGACY_REFINE_ROUNDS), 'preparing the mesh');
 }
 
 // The session took a new mesh: the panels it keeps are not of it.
@@ -169,7 +169,7 @@ function handlePrepare(job: number, prepare: MeshPrepare | null, carry: Carry): 
   if (currentRun) currentRun.cancelled = true;
   maybePrepareFaultForTest();
   const target = requireSession();
-  const info = prepare ? prepareInto(target, prepare) : tookMesh(checked<MeshInfo>(target.prepareAsLoaded(), 'opening the mesh as loaded'));
+  const info = tookMesh(prepare ? prepareInto(target, prepare) : checked<MeshInfo>(target.prepareAsLoaded(), 'opening the mesh as loaded'));
   let paint: Int8Array | null = null;
   if (carry.paint) {
     const values = target.transferField(Float64Array.from(carry.paint));
