@@ -52,6 +52,8 @@ function pringleOff(n) {
   return `OFF\n${lines.length} ${faces.length} 0\n${lines.join('\n')}\n${faces.join('\n')}\n`;
 }
 
+// The Surface inputs are read-only meanwhile: the open has read them, and a value typed then
+// would give way to the opened mesh's own without a word.
 test('Remesh, Enter and Share are refused while a mesh opens; the new mesh solves under its own name', () =>
   withPage(suite.url, async (page) => {
     await waitForDone(page);
@@ -64,13 +66,14 @@ test('Remesh, Enter and Share are refused while a mesh opens; the new mesh solve
       const state = {
         remesh: document.getElementById('remesh').disabled,
         share: document.getElementById('share').disabled,
+        surfaceReadOnly: ['subdivide', 'edge-length', 'fill-holes'].map((id) => document.getElementById(id).readOnly),
       };
       document.getElementById('remesh').click();
       document.getElementById('share').click();
       document.getElementById('panels').dispatchEvent(new KeyboardEvent('keydown', { key: 'Enter', bubbles: true }));
       return state;
     });
-    assert.deepEqual(buttons, { remesh: true, share: true }, 'disabled while opening');
+    assert.deepEqual(buttons, { remesh: true, share: true, surfaceReadOnly: [true, true, true] }, 'disabled while opening');
     assert.equal(await waitForDone(page, since), 120);
     assert.equal((await outcomes(page)).solves, since.solves + 1, 'one solve: the one the open starts');
     assert.match(await page.locator('#mesh-title').textContent(), /Helicoid/);
@@ -78,6 +81,7 @@ test('Remesh, Enter and Share are refused while a mesh opens; the new mesh solve
     const obj = await download(page, 'Export OBJ');
     assert.equal(obj.name, 'helicoid-panels.obj');
     assert.equal(await page.getByRole('button', { name: 'Remesh' }).isEnabled(), true);
+    for (const label of ['Subdivide levels', 'Target edge length', 'Fill holes up to (edges)']) assert.equal(await page.getByLabel(label).isEditable(), true, label);
   }));
 
 test('a load overtaken by an open that fails: the page shows, and solves, the mesh the worker holds', () =>

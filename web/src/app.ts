@@ -402,8 +402,8 @@ export class App {
     const solved = this.machine.solved;
     if (solved) this.viewer.setClusters(solved.result.clusterIds);
     this.opener.pendingNotice = null;
-    // The Surface section shows what the mesh on show was prepared and repaired with (a value
-    // typed while an open was under way was never applied).
+    // The Surface section shows what the mesh on show was prepared and repaired with (an open
+    // lost with the worker had written its own).
     if (this.machine.mesh && !this.machine.opening) {
       this.preparation.show(this.machine.mesh.design);
       this.repair.show(this.machine.mesh.design);
@@ -539,6 +539,8 @@ export class App {
     this.collapsedSelectButton.disabled = solving || !this.machine.canRemesh;
     document.body.dataset.solving = String(solving);
     const opening = this.machine.opening;
+    this.preparation.setReadOnly(opening !== null);
+    this.repair.setReadOnly(opening !== null);
     document.body.dataset.opening = opening === null ? 'false' : opening.job === null ? 'reading' : 'loading';
     this.editor.updateButtons();
   }

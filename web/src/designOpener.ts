@@ -139,8 +139,8 @@ export class DesignOpener {
   }
 
   // New holes to fill: the design's mesh opened again with them (its largest-part choice kept),
-  // not while another open is under way (as preparationChanged; the field shows the mesh's
-  // own value again once that open ends). What the paint and edits name is kept where the
+  // not while another open is under way (the Surface inputs are read-only then, and show the
+  // opened mesh's own values when it ends). What the paint and edits name is kept where the
   // repaired mesh keeps it, decided once it is loaded (keptThroughRepair), so a refused open
   // leaves the design as it was.
   async repairChanged(): Promise<void> {

@@ -57,6 +57,13 @@ export class PrepareControl {
     this.edgeLength.removeAttribute('aria-invalid');
   }
 
+  // Read-only while a mesh opens or is prepared: that open has read these values and shows its
+  // mesh's own when it ends, so a value typed meanwhile would be dropped without a word.
+  setReadOnly(readOnly: boolean): void {
+    this.subdivide.readOnly = readOnly;
+    this.edgeLength.readOnly = readOnly;
+  }
+
   // A new mesh: an edge length in the previous mesh's units means nothing for it.
   forgetEdgeLength(): void {
     this.edgeLength.value = '';

@@ -47,6 +47,11 @@ export class RepairControl {
     this.fillHoles.removeAttribute('aria-invalid');
   }
 
+  // Read-only while a mesh opens (as PrepareControl.setReadOnly).
+  setReadOnly(readOnly: boolean): void {
+    this.fillHoles.readOnly = readOnly;
+  }
+
   // After a refusal for non-manifold edges or a far-off part: the button reopens with the largest part.
   showOffer(faces: number, of: number, reopen: () => void): void {
     this.useLargest.title = `Open the largest manifold part: ${faces.toLocaleString('en-US')} of ${of.toLocaleString('en-US')} faces`;
