@@ -3,7 +3,8 @@
 // downloaded and checked; the thick-panel view; a share link carrying the settings.
 // Glass mode (convex panels, acute corners marked), a panel's own thickness set by clicking
 // it (in the parts list and carried by a share link). The outputs stay those of the panels on
-// show when a solve is cancelled or the solver crashes.
+// show when a solve is cancelled or the solver crashes; a solver that cannot start again leaves
+// the panels on show exportable.
 // Screenshots: the thick panels and the cut sheets (the SVG rendered in a page).
 import assert from 'node:assert/strict';
 import { join } from 'node:path';
@@ -415,4 +416,36 @@ test('a fabrication change during a solve that replaced the restore is made once
     await page.waitForFunction((since) => Number(document.body.dataset.fabrications ?? 0) > since && document.body.dataset.fabricating === 'false', fabricated, { timeout: 60_000, polling: 50 });
     assert.match((await download(page, 'Export parts list')).text, /^300,total,.*,mm,26,/m);
     assert.equal((await outcomes(page)).errors, since.errors, 'no refusal said meanwhile');
+  }));
+
+// A replacement worker that cannot start (?failRestart=1, after a crash: as running out of
+// memory while instantiating the solver would): the page says so, the quiet restore ends, and a
+// fabrication change is refused with what to do (the downloads had stayed off, 'fabricating'
+// for good, and a later request went to the dead worker).
+test('a solver that cannot start again after a crash: said, and fabrication asks for a reload', () =>
+  withPage(`${suite.url}?crashAfterSteps=3&failRestart=1`, async (page) => {
+    assert.equal(await waitForDone(page), 300);
+    await setThickness(page, 20);
+    await setPanels(page, 200);
+    await remesh(page);
+    await page.waitForFunction(() => (document.querySelector('[role="status"]')?.textContent ?? '').includes('could not start'), null, { timeout: 60_000, polling: 50 });
+    assert.match(await page.locator('[role="status"]').textContent(), /the solver could not start: .*\. Reload the page; the panels on show can still be exported and shared\.$/);
+    assert.equal(await page.evaluate(() => document.body.dataset.restoring), 'false');
+    assert.equal(await page.evaluate(() => document.body.dataset.fabricating), 'false');
+    const message = await errorAfter(page, async () => {
+      await page.getByLabel('Thickness', { exact: true }).fill('30');
+      await page.getByLabel('Thickness', { exact: true }).press('Tab');
+    });
+    assert.equal(message, 'Error: fabrication: the solver could not start; reload the page');
+    assert.equal(await page.evaluate(() => document.body.dataset.fabricating), 'false');
+    // The panels on show are still exported and shared (both made on the page); nothing more
+    // is asked of the dead worker: Remesh is off, and an open is refused, by name.
+    assert.match((await download(page, 'Export OBJ')).text, /^f /m);
+    assert.equal(await page.getByRole('button', { name: 'Copy share link' }).isEnabled(), true);
+    assert.equal(await page.getByRole('button', { name: 'Remesh' }).isEnabled(), false);
+    assert.equal(await page.getByLabel('Subdivide levels').isEditable(), false);
+    assert.equal(await errorAfter(page, () => page.getByLabel('Panels', { exact: true }).press('Enter')), 'Error: the solver could not start; reload the page');
+    assert.equal(await errorAfter(page, () => selectExample(page, 'saddle')), 'Error: the solver could not start; reload the page');
+    assert.equal(await page.getByLabel('Example', { exact: true }).inputValue(), 'hyperboloid_s4', 'the picker shows the design on show');
+    await screenshot(page, 'solver-cannot-start');
   }));

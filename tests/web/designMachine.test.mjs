@@ -164,6 +164,22 @@ test('a crash drops what was under way, keeps the last result, and loses the mes
   assert.equal(machine.canExport, false);
 });
 
+test('a solver that could not start: nothing more is asked of it, the design on show stays exportable', () => {
+  const machine = loadedMachine({ solved: true });
+  machine.startSolve(7, params({ panels: 60 }), [params({ panels: 60 })], null);
+  const token = machine.beginOpen({ name: 'b' });
+  machine.solverDied();
+  assert.equal(machine.solverDead, true);
+  assert.equal(machine.solving, null);
+  assert.equal(machine.opening, null, 'the open being read is dropped');
+  assert.equal(machine.isCurrentOpen(token), false);
+  assert.equal(machine.mesh, 'a');
+  assert.equal(machine.solved.result, 'result a');
+  assert.equal(machine.canRemesh, false);
+  assert.equal(machine.canExport, true);
+  assert.equal(machine.canShare, true);
+});
+
 test('an open still being prepared on the page survives a crash', () => {
   const machine = loadedMachine();
   const token = machine.beginOpen({ name: 'b' });

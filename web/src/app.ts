@@ -22,7 +22,7 @@ import type { SolveResult, WorkerResponse } from './protocol.ts';
 import { renderQuality } from './qualityViews.ts';
 import { saveSession } from './sessionStore.ts';
 import { MAX_HISTORY, type DesignState } from './share.ts';
-import { SolverClient, solverTestHooks, type Crash } from './solverClient.ts';
+import { SOLVER_DEAD, SolverClient, solverTestHooks, type Crash } from './solverClient.ts';
 import { solvedSummary, StatusView } from './statusView.ts';
 import { Viewer } from './view/viewer.ts';
 
@@ -54,7 +54,6 @@ export class App {
   private keptJob: number | null = null;
   private restoring: { job: number; solved: Solved<SolveResult> } | null = null;
   private unrestorable: Solved<SolveResult> | null = null; // solved again to other panels
-  private solverDead = false; // a worker that could not start ('fatal'): nothing is answered
   private readonly viewer = new Viewer(element('viewport', HTMLElement));
   private readonly form = new ParamsForm();
   private readonly preparation = new PrepareControl();
@@ -192,7 +191,8 @@ export class App {
   // disabled then too): the worker may already hold the new mesh.
   remesh(): void {
     if (!this.machine.canRemesh) {
-      if (!this.machine.mesh && !this.machine.opening) this.status.error('open a mesh or pick an example first');
+      if (this.machine.solverDead) this.status.error(SOLVER_DEAD);
+      else if (!this.machine.mesh && !this.machine.opening) this.status.error('open a mesh or pick an example first');
       return;
     }
     const checked = this.form.read();
@@ -299,15 +299,15 @@ export class App {
         document.body.dataset.solverVersion = message.version;
         return;
       case 'fatal':
-        this.machine.crashed(false);
-        this.editor.repreparationLost(this.machine.opening === null); // no answer will come
+        this.machine.solverDied();
+        this.editor.repreparationLost(true); // no answer will come
         this.viewer.setSolving(false);
-        this.solverDead = true; // no fabrication answer will come either
         this.setRestoring(null);
         this.keptJob = null;
         this.fabrication.workerLost();
         this.fabrication.panelsRestored(); // a request waiting is told the solver is gone
-        this.status.error(message.message);
+        this.status.resetProgress();
+        this.status.error(`${message.message}. Reload the page${this.machine.solved ? '; the panels on show can still be exported and shared' : ''}.`);
         this.updateButtons();
         return;
       case 'crashed': // handled by the client (onCrash)
@@ -442,7 +442,7 @@ export class App {
   // work as before. Not for a result whose chain is lost (changed mid-solve, a long chain):
   // fabrication then asks for a Remesh.
   private restorePanels(): void {
-    if (this.restoring || this.solverDead) return;
+    if (this.restoring || this.machine.solverDead) return;
     const solved = this.machine.solved;
     if (solved?.chain && this.keptJob !== solved.job && solved !== this.unrestorable && !this.machine.solving && !this.machine.loadingInWorker && this.machine.mesh) {
       this.setRestoring({ job: this.solver.solve(true, solved.chain.map((p) => this.editor.solveStep(p))), solved });
@@ -453,7 +453,7 @@ export class App {
 
   // FabricationHost.workerPanels: whether a fabrication request can be answered now.
   private workerPanels(): 'kept' | 'pending' | 'lost' | 'dead' {
-    if (this.solverDead) return 'dead';
+    if (this.machine.solverDead) return 'dead';
     const solved = this.machine.solved;
     if (solved && this.keptJob === solved.job) return 'kept';
     // Each ends in new panels (a solve, a load) or in restorePanels (a cancel, a refusal).
@@ -539,8 +539,9 @@ export class App {
     this.collapsedSelectButton.disabled = solving || !this.machine.canRemesh;
     document.body.dataset.solving = String(solving);
     const opening = this.machine.opening;
-    this.preparation.setReadOnly(opening !== null);
-    this.repair.setReadOnly(opening !== null);
+    // The open has read them (and writes its mesh's own), or no solver would prepare the mesh.
+    this.preparation.setReadOnly(opening !== null || this.machine.solverDead);
+    this.repair.setReadOnly(opening !== null || this.machine.solverDead);
     document.body.dataset.opening = opening === null ? 'false' : opening.job === null ? 'reading' : 'loading';
     this.editor.updateButtons();
   }

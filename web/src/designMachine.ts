@@ -53,6 +53,7 @@ export class DesignMachine<M, O, R> {
   private pristine = false;
   private holdsSolved = false;
   private tokens = 0;
+  private solverGone = false;
 
   constructor(private readonly maxHistory: number) {}
 
@@ -78,10 +79,14 @@ export class DesignMachine<M, O, R> {
   // Remesh, Enter and Share act on the loaded mesh: not while another one is opening, since the
   // worker may already hold the new mesh while the page still shows the old one.
   get canRemesh(): boolean {
+    return this.meshValue !== null && this.opening === null && !this.solverGone;
+  }
+  // A link is made on the page: it works without a solver too.
+  get canShare(): boolean {
     return this.meshValue !== null && this.opening === null;
   }
-  get canShare(): boolean {
-    return this.canRemesh;
+  get solverDead(): boolean {
+    return this.solverGone;
   }
   get canExport(): boolean {
     return this.meshValue !== null && this.solvedValue !== null;
@@ -238,5 +243,14 @@ export class DesignMachine<M, O, R> {
     this.pristine = false;
     if (!meshKept) this.meshValue = null;
     return { lostOpening, lostSolve };
+  }
+
+  // The worker could not start ('fatal'): it answers nothing, so nothing more is asked of it
+  // (no Remesh, no open; one still being read on the page is dropped). The design on show
+  // stays, exportable and shareable: both are made on the page.
+  solverDied(): void {
+    this.crashed(true);
+    this.preparing = null;
+    this.solverGone = true;
   }
 }

@@ -24,7 +24,7 @@ import type { Carry, SolveResult } from './protocol.ts';
 import { renderQuality } from './qualityViews.ts';
 import { rhinoLoaded } from './rhino/rhinoOpen.ts';
 import type { DesignMesh, DesignState, MeshPrepare } from './share.ts';
-import type { SolverClient } from './solverClient.ts';
+import { SOLVER_DEAD, type SolverClient } from './solverClient.ts';
 import type { StatusView } from './statusView.ts';
 import { guessUpAxis } from './view/upAxis.ts';
 import type { Viewer } from './view/viewer.ts';
@@ -99,6 +99,7 @@ export class DesignOpener {
   constructor(private readonly host: OpenerHost) {}
 
   async openExample(id: string, options: OpenOptions = { solve: true, note: '' }): Promise<void> {
+    if (this.refusedWithoutSolver()) return;
     const example = findExample(id) ?? findExample(this.host.examples.defaultId)!;
     this.host.form.setPanels(example.panels); // each example comes with a count that suits it
     this.host.editor.forgetPaint(); // painted on the previous mesh
@@ -109,6 +110,7 @@ export class DesignOpener {
   }
 
   async openFile(file: File): Promise<void> {
+    if (this.refusedWithoutSolver()) return;
     this.host.editor.forgetPaint();
     this.host.preparation.forgetEdgeLength();
     const read = this.readChoices();
@@ -144,6 +146,7 @@ export class DesignOpener {
   // repaired mesh keeps it, decided once it is loaded (keptThroughRepair), so a refused open
   // leaves the design as it was.
   async repairChanged(): Promise<void> {
+    if (this.refusedWithoutSolver()) return;
     const mesh = this.host.machine.mesh;
     if (!mesh || !this.host.machine.canRemesh) return;
     const repair = this.host.repair.read(mesh.design.repair?.largestPart ?? false);
@@ -162,6 +165,7 @@ export class DesignOpener {
 
   // "Use largest manifold part": the refused open again, keeping that part.
   async openLargestPart(): Promise<void> {
+    if (this.refusedWithoutSolver()) return;
     const last = this.lastOpen;
     if (!last) return;
     const repair = { fillHoles: last.design.repair?.fillHoles ?? 0, largestPart: true };
@@ -170,6 +174,7 @@ export class DesignOpener {
 
   // New subdivision levels or edge length: the design's mesh prepared again with them.
   preparationChanged(): void {
+    if (this.refusedWithoutSolver()) return;
     const params = this.host.form.read();
     if (!params.ok) {
       this.host.status.error(params.message);
@@ -233,6 +238,7 @@ export class DesignOpener {
   }
 
   async openState(state: DesignState, note: string, fromLink: boolean): Promise<void> {
+    if (this.refusedWithoutSolver()) return;
     this.host.editor.adopt(state);
     this.host.form.write(state.params);
     this.host.preparation.show(state.mesh);
@@ -360,6 +366,15 @@ export class DesignOpener {
     }
     if (newest) this.host.startSolve(chain, false, chain, notice);
     this.host.updateButtons();
+  }
+
+  // A worker that could not start answers nothing: no open is sent to it, the design on show
+  // stays (exportable, shareable), and the page says what to do.
+  private refusedWithoutSolver(): boolean {
+    if (!this.host.machine.solverDead) return false;
+    this.host.status.error(SOLVER_DEAD);
+    this.syncExampleSelect();
+    return true;
   }
 
   syncExampleSelect(): void {

@@ -9,7 +9,7 @@ import { renderFabricationStats } from './fabricationStats.ts';
 import { downloadText } from './exports.ts';
 import type { PanelSelection } from './panelSelection.ts';
 import type { FabricationResult, SolveResult } from './protocol.ts';
-import type { SolverClient } from './solverClient.ts';
+import { SOLVER_DEAD, type SolverClient } from './solverClient.ts';
 import type { Viewer } from './view/viewer.ts';
 
 export interface FabricationHost {
@@ -152,7 +152,7 @@ export class FabricationPanel {
     if (worker === 'dead') {
       this.deferred = false;
       this.result = null;
-      this.host.error('fabrication: the solver could not start; reload the page');
+      this.host.error(`fabrication: ${SOLVER_DEAD}`);
       this.show();
       return;
     }

@@ -67,8 +67,10 @@ export type WorkerRequest =
   | { type: 'expressionDensity'; job: number; expression: string }
   // Test hooks: the worker makes a wasm call that throws a non-Status error, as running out of
   // memory would, N steps into its second solve (?crashAfterSteps=N); its Nth preparation of the
-  // mesh crashes so (?crashOnPrepare=N) or is refused as the core refuses (?refuseOnPrepare=N).
-  | { type: 'test'; job: 0; crashAfterSteps?: number; prepareFault?: PrepareFault };
+  // mesh crashes so (?crashOnPrepare=N) or is refused as the core refuses (?refuseOnPrepare=N);
+  // `failStart`: it answers as a worker whose solver could not start ('fatal') and nothing
+  // after (?failRestart=1, sent to every replacement worker).
+  | { type: 'test'; job: 0; crashAfterSteps?: number; prepareFault?: PrepareFault; failStart?: boolean };
 
 export interface PrepareFault {
   at: number; // 1: the first preparation

@@ -9,6 +9,9 @@ import type { Carry, MeshPayload, MeshPrepare, PrepareFault, SolveStep, WorkerRe
 
 const CANCEL_GRACE_MS = 250;
 
+// Said when something needs a worker that could not start ('fatal'): nothing will answer.
+export const SOLVER_DEAD = 'the solver could not start; reload the page';
+
 export interface SolverOptions {
   // How long a cancel waits for the worker before replacing it (tests set 0 to exercise the
   // replacement path deterministically).
@@ -17,6 +20,8 @@ export interface SolverOptions {
   // prepareFault.at-th 'prepare' request (1: the first) crashes or is refused.
   crashAfterSteps?: number;
   prepareFault?: PrepareFault;
+  // Test hook: every replacement worker fails to start (the 'fatal' path).
+  failRestart?: boolean;
 }
 
 export interface Crash {
@@ -51,9 +56,11 @@ export class SolverClient {
   // Requests made while a cancel waits for its answer: sent once the worker is known to be free.
   private held: WorkerRequest[] | null = null;
   private readonly cancelGraceMs: number;
+  private readonly failRestart: boolean;
 
   constructor(private readonly events: SolverEvents, options: SolverOptions = {}) {
     this.cancelGraceMs = options.cancelGraceMs ?? CANCEL_GRACE_MS;
+    this.failRestart = options.failRestart ?? false;
     this.worker = this.startWorker();
     const { crashAfterSteps, prepareFault } = options;
     if (crashAfterSteps !== undefined || prepareFault !== undefined) this.worker.postMessage({ type: 'test', job: 0, crashAfterSteps, prepareFault } satisfies WorkerRequest);
@@ -199,6 +206,7 @@ export class SolverClient {
   private restart(reload: boolean): boolean {
     this.worker.terminate();
     this.worker = this.startWorker();
+    if (this.failRestart) this.worker.postMessage({ type: 'test', job: 0, failStart: true } satisfies WorkerRequest);
     this.quietJobs.clear();
     if (!reload || !this.loadedMesh) return false;
     // A load still in the held queue is sent after this one and wins, as it should.
@@ -225,7 +233,8 @@ export class SolverClient {
 // Test hooks from the page's address: ?cancelGrace=0 makes every cancel replace the worker
 // (the path a long step takes); ?crashAfterSteps=N makes the first worker crash N steps into
 // its second solve; ?crashOnPrepare=N or ?refuseOnPrepare=N (the latter wins when both are
-// given) makes its Nth 'prepare' request crash or be refused. Only on a page served from this
+// given) makes its Nth 'prepare' request crash or be refused; ?failRestart=1 makes every
+// replacement worker fail to start. Only on a page served from this
 // machine (the tests', scripts/start.sh): a link to the site carrying one does nothing.
 const LOOPBACK_HOSTS = new Set(['127.0.0.1', 'localhost', '[::1]']);
 
@@ -241,6 +250,7 @@ export function solverTestHooks(): SolverOptions {
   const crashAfterSteps = numberFromUrl('crashAfterSteps', 1_000_000);
   if (cancelGraceMs !== undefined) options.cancelGraceMs = cancelGraceMs;
   if (crashAfterSteps !== undefined) options.crashAfterSteps = crashAfterSteps;
+  if (numberFromUrl('failRestart', 1) === 1) options.failRestart = true;
   for (const kind of ['crash', 'refuse'] as const) {
     const at = numberFromUrl(`${kind}OnPrepare`, 1_000);
     if (at !== undefined && at > 0) options.prepareFault = { at, kind };

@@ -36,6 +36,7 @@ let session: Session | null = null;
 let shown: MeshPayload | null = null;
 let currentRun: Run | null = null;
 let crashed = false;
+let failedToStart = false; // test hook: as if the solver could not start (?failRestart=1)
 let crashAfterSteps: number | null = null; // test hook: counts down in the second solve
 let prepareFault: PrepareFault | null = null; // test hook: `at` counts down the preparations
 let solvesFinished = 0;
@@ -344,6 +345,11 @@ function handle(request: WorkerRequest): void {
       post({ type: 'expressionDensity', job: request.job, expression: request.expression, values: requireSession().expressionDensity(request.expression) });
       return;
     case 'test':
+      if (request.failStart) {
+        failedToStart = true;
+        post({ type: 'fatal', message: 'the solver could not start: test hook ?failRestart' });
+        return;
+      }
       crashAfterSteps = request.crashAfterSteps ?? null;
       prepareFault = request.prepareFault ? { ...request.prepareFault } : null;
       return;
@@ -365,7 +371,7 @@ const ready = createFlatfacet({ locateFile: (path) => (path.endsWith('.wasm') ? 
 
 scope.onmessage = (event) => {
   void ready.then((ok) => {
-    if (!ok || crashed) return;
+    if (!ok || crashed || failedToStart) return;
     try {
       handle(event.data);
     } catch (error) {
