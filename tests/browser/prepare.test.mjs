@@ -452,6 +452,24 @@ test('what a hole change dropped is said even when its solve crashes', () => {
   });
 });
 
+// The solve that would say what a hole change dropped, replaced by a Subdivide change before it
+// ends (?stepDelay=40: its steps slowed): the preparation's solve says it instead (it was lost
+// with the mesh it named, though the design is the same).
+test('what a hole change dropped is said by the solve of a preparation that replaced its own', () => {
+  const { link } = gridLink({ hole: 1, panels: 8, repair: { fillHoles: 10, largestPart: false }, edits: [{ op: 'lock', face: 0 }, { op: 'lock', face: 287 }] });
+  return suite.withPage(link.replace('#', '?stepDelay=40#'), async (page) => {
+    assert.equal(await waitForDone(page), 8);
+    const fill = page.getByLabel('Fill holes up to (edges)');
+    await fill.fill('0');
+    await fill.blur();
+    await page.waitForFunction(() => document.body.dataset.solving === 'true' && document.body.dataset.opening === 'false', null, { timeout: 30_000, polling: 5 });
+    const subdivide = page.getByLabel('Subdivide levels');
+    assert.equal(await solveAfter(page, () => subdivide.fill('1').then(() => subdivide.blur()), 120_000), 8);
+    assert.match(await cleanupNote(page), /subdivided 143 polygons 1 level \(catmull-clark\) into 1,144 triangles/);
+    assert.match(await statusText(page), /^2 panel edits were dropped: one named a filled triangle, which filling numbers anew\. Done: 8 panels/);
+  });
+});
+
 // Preparation follows the triangle count, which filling changes: filled, 270 triangles serve 9
 // panels as loaded (30 each); unfilled, 256 are refined. The split named the mesh as loaded, so
 // it is dropped (said), not replayed on another triangle of the refined one, and "Panels" no

@@ -114,7 +114,7 @@ export class App {
       this.dropSolve();
       if (this.restoring) this.setRestoring(null); // the worker drops it for the load
     },
-    startSolve: (run, fresh, chain, notice) => this.startSolve(run, fresh, chain, null, notice),
+    startSolve: (run, fresh, chain, notice, sameDesign) => this.startSolve(run, fresh, chain, null, notice, sameDesign),
     save: (state) => this.save(state),
     updateButtons: () => this.updateButtons(),
     openFailed: () => this.restorePanels(), // an open sent meanwhile had dropped a restore
@@ -209,13 +209,16 @@ export class App {
   }
 
   // `run` is solved in order; `chain` is what reproduces the result from the loaded mesh.
-  // `notice`: said with this solve's summary (what an open or a re-preparation dropped).
-  private startSolve(run: DesignParams[], fresh: boolean, chain: DesignParams[] | null, lost: ChainLoss | null = null, notice: string | null = null): void {
+  // `notice`: said with this solve's summary (what an open or a re-preparation dropped), after
+  // the notice of a solve this one replaced unsaid, on this mesh or on `sameDesign` (the mesh
+  // this one prepared or repaired anew).
+  private startSolve(run: DesignParams[], fresh: boolean, chain: DesignParams[] | null, lost: ChainLoss | null = null, notice: string | null = null, sameDesign: LoadedMesh | null = null): void {
     const params = run[run.length - 1]!;
     if (this.restoring) this.setRestoring(null); // the worker drops it for this solve
     const job = this.solver.solve(fresh, run.map((p) => this.editor.solveStep(p)));
-    const replaced = this.solveNotice?.mesh === this.machine.mesh ? this.solveNotice.text : null;
-    const text = notice ?? replaced;
+    const unsaid = this.solveNotice;
+    const replaced = unsaid && (unsaid.mesh === this.machine.mesh || (sameDesign !== null && unsaid.mesh === sameDesign)) ? unsaid.text : null;
+    const text = [replaced, notice].filter((t) => t !== null).join(' ') || null;
     this.solveNotice = text ? { job, mesh: this.machine.mesh, text } : null;
     this.machine.startSolve(job, params, chain, lost);
     this.viewer.setSolving(true);

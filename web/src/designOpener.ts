@@ -84,7 +84,9 @@ export interface OpenerHost {
   fabrication: FabricationPanel;
   statsBox: HTMLDivElement;
   dropSolve(): void; // a solve under way, and a quiet restore (the session's mesh changes)
-  startSolve(run: DesignParams[], fresh: boolean, chain: DesignParams[] | null, notice?: string | null): void;
+  // `notice`: said with the solve's end; `sameDesign`: the mesh on show before, of which this
+  // one is the same design prepared or repaired anew (a notice of its dropped solve carries).
+  startSolve(run: DesignParams[], fresh: boolean, chain: DesignParams[] | null, notice?: string | null, sameDesign?: LoadedMesh | null): void;
   save(state: DesignState): void;
   updateButtons(): void;
   openFailed(): void; // after failOpen: the design on show stays
@@ -299,13 +301,14 @@ export class DesignOpener {
 
   onLoaded(job: number, info: MeshInfo, positions: Float32Array, indices: Uint32Array, carried?: Carry): void {
     // Prepared again: what the load said beyond the counts (a Rhino file's surfaces) stays.
-    const before = this.host.machine.mesh?.info;
+    const previous = this.host.machine.mesh;
+    const before = previous?.info;
     const loaded = this.host.machine.loaded(job, (opening) => ({ design: opening.design, label: opening.label, fileName: opening.fileName, info: opening.reprepare && before ? { ...before, ...info } : info }));
     if (!loaded) return;
     const opening = loaded.info;
     this.host.viewer.setSurface(positions, indices, opening.up === 'guess' ? guessUpAxis(positions) : opening.up, opening.reprepare !== undefined);
     if (opening.reprepare) {
-      this.preparedAgain(opening, loaded.newest, carried);
+      this.preparedAgain(opening, loaded.newest, carried, previous);
       return;
     }
     const { params, notice } = opening.repairOf ? keptThroughRepair(opening.params, opening.repairOf, info) : { params: opening.params, notice: null };
@@ -333,7 +336,7 @@ export class DesignOpener {
       this.host.status.error(`${misfit.message}; not solved.`);
     } else if (opening.solve) {
       const chain = [...opening.history, params];
-      this.host.startSolve(chain, false, chain, notice);
+      this.host.startSolve(chain, false, chain, notice, opening.repairOf ? previous : null);
     } else {
       this.host.status.show(`${opening.label} is loaded. Remesh to make panels.`);
     }
@@ -346,7 +349,7 @@ export class DesignOpener {
 
   // The design's mesh, prepared again, is on show: its note, the carried paint and edits as one
   // history step, and the solve (from the prepared mesh: no warm start across meshes).
-  private preparedAgain(opening: OpenInfo, newest: boolean, carried: Carry | undefined): void {
+  private preparedAgain(opening: OpenInfo, newest: boolean, carried: Carry | undefined, previous: LoadedMesh | null): void {
     const mesh = this.host.machine.mesh!;
     showMeshInfo(mesh.label, mesh.info);
     this.host.preparation.show(opening.design);
@@ -364,7 +367,7 @@ export class DesignOpener {
     } else {
       this.host.editor.surfaceChanged();
     }
-    if (newest) this.host.startSolve(chain, false, chain, notice);
+    if (newest) this.host.startSolve(chain, false, chain, notice, previous);
     this.host.updateButtons();
   }
 

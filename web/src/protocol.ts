@@ -69,8 +69,9 @@ export type WorkerRequest =
   // memory would, N steps into its second solve (?crashAfterSteps=N); its Nth preparation of the
   // mesh crashes so (?crashOnPrepare=N) or is refused as the core refuses (?refuseOnPrepare=N);
   // `failStart`: it answers as a worker whose solver could not start ('fatal') and nothing
-  // after (?failRestart=1, sent to every replacement worker).
-  | { type: 'test'; job: 0; crashAfterSteps?: number; prepareFault?: PrepareFault; failStart?: boolean };
+  // after (?failRestart=1, sent to every replacement worker); `stepDelayMs`: each solve step
+  // waits so long first (?stepDelay=MS), so that a test can act during a solve.
+  | { type: 'test'; job: 0; crashAfterSteps?: number; prepareFault?: PrepareFault; failStart?: boolean; stepDelayMs?: number };
 
 export interface PrepareFault {
   at: number; // 1: the first preparation

@@ -20,8 +20,10 @@ export interface SolverOptions {
   // prepareFault.at-th 'prepare' request (1: the first) crashes or is refused.
   crashAfterSteps?: number;
   prepareFault?: PrepareFault;
-  // Test hook: every replacement worker fails to start (the 'fatal' path).
+  // Test hooks: every replacement worker fails to start (the 'fatal' path); the first worker
+  // waits this long before each solve step.
   failRestart?: boolean;
+  stepDelayMs?: number;
 }
 
 export interface Crash {
@@ -62,8 +64,8 @@ export class SolverClient {
     this.cancelGraceMs = options.cancelGraceMs ?? CANCEL_GRACE_MS;
     this.failRestart = options.failRestart ?? false;
     this.worker = this.startWorker();
-    const { crashAfterSteps, prepareFault } = options;
-    if (crashAfterSteps !== undefined || prepareFault !== undefined) this.worker.postMessage({ type: 'test', job: 0, crashAfterSteps, prepareFault } satisfies WorkerRequest);
+    const { crashAfterSteps, prepareFault, stepDelayMs } = options;
+    if (crashAfterSteps !== undefined || prepareFault !== undefined || stepDelayMs !== undefined) this.worker.postMessage({ type: 'test', job: 0, crashAfterSteps, prepareFault, stepDelayMs } satisfies WorkerRequest);
   }
 
   private startWorker(): Worker {
@@ -234,7 +236,7 @@ export class SolverClient {
 // (the path a long step takes); ?crashAfterSteps=N makes the first worker crash N steps into
 // its second solve; ?crashOnPrepare=N or ?refuseOnPrepare=N (the latter wins when both are
 // given) makes its Nth 'prepare' request crash or be refused; ?failRestart=1 makes every
-// replacement worker fail to start. Only on a page served from this
+// replacement worker fail to start; ?stepDelay=MS slows the first worker's solve steps. Only on a page served from this
 // machine (the tests', scripts/start.sh): a link to the site carrying one does nothing.
 const LOOPBACK_HOSTS = new Set(['127.0.0.1', 'localhost', '[::1]']);
 
@@ -251,6 +253,8 @@ export function solverTestHooks(): SolverOptions {
   if (cancelGraceMs !== undefined) options.cancelGraceMs = cancelGraceMs;
   if (crashAfterSteps !== undefined) options.crashAfterSteps = crashAfterSteps;
   if (numberFromUrl('failRestart', 1) === 1) options.failRestart = true;
+  const stepDelayMs = numberFromUrl('stepDelay', 10_000);
+  if (stepDelayMs !== undefined) options.stepDelayMs = stepDelayMs;
   for (const kind of ['crash', 'refuse'] as const) {
     const at = numberFromUrl(`${kind}OnPrepare`, 1_000);
     if (at !== undefined && at > 0) options.prepareFault = { at, kind };

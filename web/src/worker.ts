@@ -37,6 +37,7 @@ let shown: MeshPayload | null = null;
 let currentRun: Run | null = null;
 let crashed = false;
 let failedToStart = false; // test hook: as if the solver could not start (?failRestart=1)
+let stepDelayMs = 0; // test hook: each solve step waits so long first (?stepDelay=MS)
 let crashAfterSteps: number | null = null; // test hook: counts down in the second solve
 let prepareFault: PrepareFault | null = null; // test hook: `at` counts down the preparations
 let solvesFinished = 0;
@@ -261,6 +262,7 @@ async function handleSolve(run: Run, fresh: boolean, chain: SolveStep[]): Promis
     applyStep(target, step);
     while (!target.done()) {
       await yieldToEventLoop();
+      if (stepDelayMs > 0) await new Promise((resolve) => setTimeout(resolve, stepDelayMs));
       if (crashed) return;
       if (run.cancelled) {
         post({ type: 'cancelled', job: run.job });
@@ -351,6 +353,7 @@ function handle(request: WorkerRequest): void {
         return;
       }
       crashAfterSteps = request.crashAfterSteps ?? null;
+      stepDelayMs = request.stepDelayMs ?? 0;
       prepareFault = request.prepareFault ? { ...request.prepareFault } : null;
       return;
   }
