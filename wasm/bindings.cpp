@@ -66,7 +66,8 @@ EMSCRIPTEN_BINDINGS(flatfacet) {
           })
       .function("setParams", &Session::set_params)
       .function(
-          "setDensity", +[](Session& s, const val& density) { return s.set_density(from_typed_array<double>(density)); })
+          "setDensity",
+          +[](Session& s, const val& density) { return s.set_density(from_typed_array<double>(density)); })
       .function("step", &Session::step)
       .function("done", &Session::done)
       .function("resetSolve", &Session::reset_solve)
@@ -90,7 +91,9 @@ EMSCRIPTEN_BINDINGS(flatfacet) {
           "facePanels", +[](const Session& s) { return to_typed_array(s.face_panels(), "Int32Array"); })
       .function(
           "expressionDensity",
-          +[](const Session& s, const std::string& e) { return to_typed_array(s.expression_density(e), "Float64Array"); })
+          +[](const Session& s, const std::string& e) {
+            return to_typed_array(s.expression_density(e), "Float64Array");
+          })
       .function(
           "cornerPositions", +[](const Session& s) { return to_typed_array(s.corner_positions(), "Float64Array"); })
       .function(
