@@ -449,3 +449,30 @@ test('a solver that cannot start again after a crash: said, and fabrication asks
     assert.equal(await page.getByLabel('Example', { exact: true }).inputValue(), 'hyperboloid_s4', 'the picker shows the design on show');
     await screenshot(page, 'solver-cannot-start');
   }));
+
+// An example picked as the worker crashed, before its replacement says it cannot start: the
+// open is lost with it, said, and the page shows the design on show again (the picker, Panels;
+// before, the picker and the form stayed on the lost saddle under the hyperboloid's panels).
+test('a solver that cannot start again drops an open made meanwhile, said, and shows the design on show', () =>
+  withPage(`${suite.url}?crashAfterSteps=3&failRestart=1`, async (page) => {
+    assert.equal(await waitForDone(page), 300);
+    await setPanels(page, 200);
+    await page.evaluate(() => {
+      const status = document.querySelector('[role="status"]');
+      // Picked at once when the crash is said: the replacement's answer comes in a later task.
+      new MutationObserver((_, observer) => {
+        if (!status.textContent.includes('crashed and was restarted')) return;
+        observer.disconnect();
+        const select = document.getElementById('example');
+        select.value = 'saddle';
+        select.dispatchEvent(new Event('change'));
+      }).observe(status, { childList: true, subtree: true, characterData: true });
+      document.getElementById('remesh').click();
+    });
+    await page.waitForFunction(() => (document.querySelector('[role="status"]')?.textContent ?? '').includes('could not start'), null, { timeout: 60_000, polling: 50 });
+    assert.match(await page.locator('[role="status"]').textContent(), /the solver could not start: [^;]*; Saddle \(generated\) was not opened\. Reload the page; the panels on show can still be exported and shared\.$/);
+    assert.equal(await page.getByLabel('Example', { exact: true }).inputValue(), 'hyperboloid_s4');
+    assert.equal(await page.getByLabel('Panels', { exact: true }).inputValue(), '300', 'the parameters of the panels on show');
+    assert.match(await page.locator('#mesh-title').textContent(), /Hyperboloid/);
+    assert.equal(await page.evaluate(() => document.body.dataset.opening), 'false');
+  }));

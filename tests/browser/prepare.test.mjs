@@ -452,6 +452,25 @@ test('what a hole change dropped is said even when its solve crashes', () => {
   });
 });
 
+// Enter in "Fill holes up to" with a Panels change that needs the mesh prepared anew: the
+// field's change opens the mesh with the holes and the new count. Before, Enter's Remesh started
+// the preparation first, the change then found the mesh opening and was dropped without a word,
+// and the field showed the old value again.
+test('Enter in Fill holes applies the holes even when the panel count needs the mesh prepared', () => {
+  const { link } = gridLink({ hole: 1, panels: 8, repair: { fillHoles: 10, largestPart: false }, edits: [] });
+  return suite.withPage(link, async (page) => {
+    assert.equal(await waitForDone(page), 8);
+    assert.match(await page.locator('#mesh-details').textContent(), /^288 triangles/, 'the hole filled');
+    await page.getByLabel('Panels', { exact: true }).fill('20');
+    await page.getByLabel('Panels', { exact: true }).press('Tab');
+    const fill = page.getByLabel('Fill holes up to (edges)');
+    await fill.fill('0');
+    assert.equal(await solveAfter(page, () => fill.press('Enter'), 300_000), 20);
+    assert.equal(await fill.inputValue(), '0');
+    assert.deepEqual((await shareLink(page, link)).json.mesh.repair, undefined, 'no holes filled');
+  });
+});
+
 // The solve that would say what a hole change dropped, replaced by a Subdivide change before it
 // ends (?stepDelay=40: its steps slowed): the preparation's solve says it instead (it was lost
 // with the mesh it named, though the design is the same).

@@ -168,7 +168,7 @@ test('a solver that could not start: nothing more is asked of it, the design on 
   const machine = loadedMachine({ solved: true });
   machine.startSolve(7, params({ panels: 60 }), [params({ panels: 60 })], null);
   const token = machine.beginOpen({ name: 'b' });
-  machine.solverDied();
+  assert.deepEqual(machine.solverDied(), { name: 'b' }, 'the open lost');
   assert.equal(machine.solverDead, true);
   assert.equal(machine.solving, null);
   assert.equal(machine.opening, null, 'the open being read is dropped');

@@ -65,11 +65,24 @@ test('the test hooks in the address work only on a page served from this machine
       delete globalThis.location;
     }
   };
-  const query = '?crashAfterSteps=3&cancelGrace=0&refuseOnPrepare=2';
-  const expected = { cancelGraceMs: 0, crashAfterSteps: 3, prepareFault: { at: 2, kind: 'refuse' } };
+  const query = '?crashAfterSteps=3&cancelGrace=0&refuseOnPrepare=2&failRestart=1&stepDelay=40';
+  const expected = { cancelGraceMs: 0, crashAfterSteps: 3, prepareFault: { at: 2, kind: 'refuse' }, failRestart: true, stepDelayMs: 40 };
   assert.deepEqual(hooks(`http://127.0.0.1:4173/${query}`), expected);
   assert.deepEqual(hooks(`http://localhost:5173/${query}#v1=abc`), expected);
   assert.deepEqual(hooks(`http://[::1]:8080/${query}`), expected);
   assert.deepEqual(hooks(`https://flatfacet.example/${query}`), {});
   assert.deepEqual(hooks(`http://192.168.1.20:4173/${query}`), {});
+});
+
+test('a worker that could not start is sent nothing more', () => {
+  workers.length = 0;
+  const messages = [];
+  const client = new SolverClient({ onMessage: (message) => messages.push(message), onCrash() {} });
+  const worker = workers[0];
+  worker.answer({ type: 'fatal', message: 'the solver could not start: no memory' });
+  assert.equal(messages.at(-1).type, 'fatal');
+  client.load(mesh);
+  client.solve(true, []);
+  client.expressionDensity('1 + x');
+  assert.deepEqual(worker.sent, []);
 });

@@ -302,16 +302,7 @@ export class App {
         document.body.dataset.solverVersion = message.version;
         return;
       case 'fatal':
-        this.machine.solverDied();
-        this.editor.repreparationLost(true); // no answer will come
-        this.viewer.setSolving(false);
-        this.setRestoring(null);
-        this.keptJob = null;
-        this.fabrication.workerLost();
-        this.fabrication.panelsRestored(); // a request waiting is told the solver is gone
-        this.status.resetProgress();
-        this.status.error(`${message.message}. Reload the page${this.machine.solved ? '; the panels on show can still be exported and shared' : ''}.`);
-        this.updateButtons();
+        this.onSolverDead(message.message);
         return;
       case 'crashed': // handled by the client (onCrash)
         return;
@@ -405,30 +396,58 @@ export class App {
     const solved = this.machine.solved;
     if (solved) this.viewer.setClusters(solved.result.clusterIds);
     this.opener.pendingNotice = null;
-    // The Surface section shows what the mesh on show was prepared and repaired with (an open
-    // lost with the worker had written its own).
-    if (this.machine.mesh && !this.machine.opening) {
-      this.preparation.show(this.machine.mesh.design);
-      this.repair.show(this.machine.mesh.design);
-    }
     this.fabrication.workerLost();
     this.editor.workerReplaced();
-    this.opener.syncExampleSelect();
     this.status.resetProgress();
     const parts = [crashMessage(solved !== null, crash.meshKept)];
     const takenBack = this.editor.repreparationLost(this.machine.opening === null);
     if (takenBack && crash.meshKept) parts.push(takenBackNote(takenBack));
-    const lostOpen = lost.lostOpening;
-    if (lostOpen && !lostOpen.reprepare) {
-      parts.push(`${lostOpen.label} was not opened`);
-      if (crash.meshKept && !this.machine.opening) this.editor.showCurrent(); // its parameters go with it
-    } else if (lostOpen?.reprepare === 'carry' && crash.meshKept) {
-      parts.push('the mesh was not prepared again');
-    }
+    const lostOpen = this.forgetLostOpen(lost.lostOpening, crash.meshKept);
+    if (lostOpen) parts.push(lostOpen);
     this.status.error(`${parts.join('; ')}.${notice ? ` ${notice}` : ''}`);
     if (crash.meshKept && !crashedRestoring) this.restorePanels(); // not again: no crash loop
     else this.fabrication.panelsRestored(); // a deferred request is refused: Remesh
     this.updateButtons();
+  }
+
+  // A worker that could not start ('fatal'): nothing more is asked of it (DesignMachine.solverDied),
+  // what was under way is lost as in a crash, and the design on show stays, exportable.
+  private onSolverDead(message: string): void {
+    const notice = this.takeSolveNotice(this.machine.solving?.job ?? null);
+    const lost = this.machine.solverDied();
+    this.viewer.setSolving(false);
+    const solved = this.machine.solved;
+    if (solved) this.viewer.setClusters(solved.result.clusterIds);
+    this.opener.pendingNotice = null;
+    this.setRestoring(null);
+    this.keptJob = null;
+    this.fabrication.workerLost();
+    this.fabrication.panelsRestored(); // a request waiting is told the solver is gone
+    this.status.resetProgress();
+    const parts = [message];
+    const takenBack = this.editor.repreparationLost(true); // no answer will come
+    if (takenBack && this.machine.mesh) parts.push(takenBackNote(takenBack));
+    const lostOpen = this.forgetLostOpen(lost, true);
+    if (lostOpen) parts.push(lostOpen);
+    const exportable = this.machine.canExport ? '; the panels on show can still be exported and shared' : '';
+    this.status.error(`${parts.join('; ')}. Reload the page${exportable}.${notice ? ` ${notice}` : ''}`);
+    this.updateButtons();
+  }
+
+  // After a worker was lost, the page shows the design on show again where an open lost with it
+  // had written its own (the form, the Surface section, the example picker), unless another
+  // open, still read on the page, goes on. Returns what to say of the lost open.
+  private forgetLostOpen(lostOpen: OpenInfo | null, meshKept: boolean): string | null {
+    const mesh = this.machine.mesh;
+    if (mesh && !this.machine.opening) {
+      this.preparation.show(mesh.design);
+      this.repair.show(mesh.design);
+      if (lostOpen && !lostOpen.reprepare && meshKept) this.editor.showCurrent(); // its parameters go with it
+    }
+    this.opener.syncExampleSelect();
+    if (lostOpen && !lostOpen.reprepare) return `${lostOpen.label} was not opened`;
+    if (lostOpen?.reprepare === 'carry' && meshKept) return 'the mesh was not prepared again';
+    return null;
   }
 
   // A cancel replaced a worker that did not answer in time: a fabrication it was asked for

@@ -247,10 +247,13 @@ export class DesignMachine<M, O, R> {
 
   // The worker could not start ('fatal'): it answers nothing, so nothing more is asked of it
   // (no Remesh, no open; one still being read on the page is dropped). The design on show
-  // stays, exportable and shareable: both are made on the page.
-  solverDied(): void {
-    this.crashed(true);
+  // stays, exportable and shareable: both are made on the page. Returns the open lost (the
+  // newest: sent, or still being read).
+  solverDied(): O | null {
+    const reading = this.preparing?.info ?? null;
+    const { lostOpening } = this.crashed(true);
     this.preparing = null;
     this.solverGone = true;
+    return reading ?? lostOpening;
   }
 }

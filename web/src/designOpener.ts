@@ -308,7 +308,9 @@ export class DesignOpener {
     const opening = loaded.info;
     this.host.viewer.setSurface(positions, indices, opening.up === 'guess' ? guessUpAxis(positions) : opening.up, opening.reprepare !== undefined);
     if (opening.reprepare) {
-      this.preparedAgain(opening, loaded.newest, carried, previous);
+      // An Undo or Redo ('replay') brings its own edits back: a notice of edits dropped before
+      // is not carried to it.
+      this.preparedAgain(opening, loaded.newest, carried, opening.reprepare === 'carry' ? previous : null);
       return;
     }
     const { params, notice } = opening.repairOf ? keptThroughRepair(opening.params, opening.repairOf, info) : { params: opening.params, notice: null };

@@ -76,12 +76,15 @@ async function openFromHash(hash: string, atStart: boolean): Promise<void> {
 }
 
 // Enter in a parameter field solves (during a solve the field's change event updates it);
-// Escape cancels.
+// Escape cancels. Enter in a Surface input is left to its change event, which opens or
+// prepares the mesh anew and solves: a Remesh first would start a preparation, and the change
+// that follows would find the mesh opening and be dropped.
+const SURFACE_INPUTS = new Set(['subdivide', 'edge-length', 'fill-holes']);
 function bindKeys(): void {
   const panel = document.querySelector('aside.panel');
   panel?.addEventListener('keydown', (event) => {
     const target = event.target;
-    if (event instanceof KeyboardEvent && event.key === 'Enter' && target instanceof HTMLInputElement && target.type === 'number' && !app.isSolving) {
+    if (event instanceof KeyboardEvent && event.key === 'Enter' && target instanceof HTMLInputElement && target.type === 'number' && !SURFACE_INPUTS.has(target.id) && !app.isSolving) {
       app.remesh();
     }
   });

@@ -59,6 +59,7 @@ export class SolverClient {
   private held: WorkerRequest[] | null = null;
   private readonly cancelGraceMs: number;
   private readonly failRestart: boolean;
+  private dead = false; // the worker could not start ('fatal'): nothing is sent to it any more
 
   constructor(private readonly events: SolverEvents, options: SolverOptions = {}) {
     this.cancelGraceMs = options.cancelGraceMs ?? CANCEL_GRACE_MS;
@@ -86,6 +87,7 @@ export class SolverClient {
       return;
     }
     if (message.type === 'ready' || message.type === 'fatal') {
+      if (message.type === 'fatal') this.dead = true;
       this.events.onMessage(message);
       return;
     }
@@ -117,6 +119,7 @@ export class SolverClient {
   }
 
   private send(request: WorkerRequest): void {
+    if (this.dead) return; // the page says so where it matters (SOLVER_DEAD)
     if (this.held) this.held.push(request);
     else this.worker.postMessage(request);
   }
