@@ -379,6 +379,11 @@ export class DesignOpener {
     if (!this.host.machine.solverDead) return false;
     this.host.status.error(SOLVER_DEAD);
     this.syncExampleSelect();
+    const mesh = this.host.machine.mesh;
+    if (mesh) {
+      this.host.preparation.show(mesh.design); // a value committed as the solver died
+      this.host.repair.show(mesh.design);
+    }
     return true;
   }
 
