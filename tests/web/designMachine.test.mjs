@@ -1,6 +1,7 @@
 // Unit tests of the page's design state machine (web/src/designMachine.ts, compiled to
 // build/web-tests by `npm run test:web`): what may run while a mesh opens, which worker answer
-// belongs to which request, warm starts, and what a crash leaves.
+// belongs to which request, warm starts, what a crash leaves, and the panels the worker keeps
+// for fabrication (kept, restored after a crash).
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
 import { DesignMachine } from '../../build/web-tests/designMachine.js';
@@ -149,7 +150,7 @@ test('a refused solve or mesh leaves the design; the next solve is a cold one', 
 test('a crash drops what was under way, keeps the last result, and loses the mesh only if it was not reloaded', () => {
   const machine = loadedMachine({ solved: true });
   machine.startSolve(7, params({ panels: 60 }), [params({ panels: 60 })], null);
-  assert.deepEqual(machine.crashed(true), { lostOpening: null, lostSolve: true });
+  assert.deepEqual(machine.crashed(true), { lostOpening: null, lostSolve: true, lostRestore: false });
   assert.equal(machine.solving, null);
   assert.equal(machine.solved.result, 'result a');
   assert.equal(machine.sessionHoldsSolved, false);
@@ -157,7 +158,7 @@ test('a crash drops what was under way, keeps the last result, and loses the mes
   assert.equal(machine.planRemesh(params({ panels: 60 })).fresh, true, 'the solve after a crash is a cold one');
   const token = machine.beginOpen({ name: 'b' });
   machine.openSent(token, 9);
-  assert.deepEqual(machine.crashed(false), { lostOpening: { name: 'b' }, lostSolve: false });
+  assert.deepEqual(machine.crashed(false), { lostOpening: { name: 'b' }, lostSolve: false, lostRestore: false });
   assert.equal(machine.opening, null);
   assert.equal(machine.mesh, null);
   assert.equal(machine.canRemesh, false);
@@ -213,4 +214,55 @@ test('a result solved again by a new worker warm-starts again, unless the design
   assert.equal(machine.openSent(token, 4), true);
   assert.equal(machine.loadingInWorker, true);
   assert.equal(machine.heldAgain(again), false);
+});
+
+test('the panels the worker keeps: kept once shown, lost with the worker, restored quietly once', () => {
+  const machine = loadedMachine({ solved: true });
+  const solved = machine.solved;
+  assert.equal(machine.workerPanels(), 'lost', 'not kept until the page says it shows them');
+  machine.keep(2);
+  assert.equal(machine.workerPanels(), 'kept');
+  assert.equal(machine.restoreTarget(), null, 'kept: nothing to restore');
+  machine.workerReplaced();
+  assert.equal(machine.workerPanels(), 'lost');
+  assert.equal(machine.restoreTarget(), solved);
+  machine.startRestore(5, solved);
+  assert.equal(machine.workerPanels(), 'pending', 'a fabrication request waits for the restore');
+  assert.equal(machine.restoreOf(5), solved);
+  assert.equal(machine.restoreOf(4), null);
+  assert.equal(machine.restoreTarget(), null, 'one at a time');
+  assert.equal(machine.restored(5, true), solved, 'the very panels: kept as the result on show');
+  assert.equal(machine.keptJob, 2);
+  assert.equal(machine.workerPanels(), 'kept');
+  assert.equal(machine.planRemesh(params({ panels: 50 })).fresh, false, 'and warm-started from');
+  // A crash during a restore: said (lostRestore), so the page does not restore again.
+  machine.workerReplaced();
+  machine.startRestore(6, solved);
+  assert.deepEqual(machine.crashed(true), { lostOpening: null, lostSolve: false, lostRestore: true });
+  assert.equal(machine.restoring, false);
+  // Other panels (never seen: the OBJ differs): not kept, not tried again.
+  machine.startRestore(7, solved);
+  assert.equal(machine.restored(7, false), null);
+  assert.equal(machine.restoreTarget(), null);
+  assert.equal(machine.workerPanels(), 'lost');
+});
+
+test('a restore is dropped by a solve, refused without a mark, and not kept when the design moved on', () => {
+  const machine = loadedMachine({ solved: true });
+  const solved = machine.solved;
+  machine.startRestore(5, solved);
+  machine.dropRestore();
+  assert.equal(machine.restoring, false);
+  assert.equal(machine.restored(5, true), null, 'an answer to a dropped restore changes nothing');
+  machine.startRestore(6, solved);
+  assert.equal(machine.restoreFailed(6), true);
+  assert.equal(machine.restoreTarget(), solved, 'refused: may be tried again');
+  machine.startRestore(7, solved);
+  machine.startSolve(8, params({ panels: 60 }), [params({ panels: 60 })], null);
+  assert.equal(machine.restoreTarget(), null, 'not while a solve goes on');
+  assert.equal(machine.restored(7, true), null, 'the design moved on: not kept');
+  assert.equal(machine.keptJob, null);
+  assert.equal(machine.workerPanels(), 'pending', 'the solve under way settles it');
+  machine.solverDied();
+  assert.equal(machine.workerPanels(), 'dead');
 });

@@ -6,7 +6,7 @@
 import { faceOfCollapsed } from './collapsedPanel.ts';
 import { countOutcome, element } from './dom.ts';
 import { DesignEditor } from './designEditor.ts';
-import { DesignMachine, type ChainLoss, type Solved } from './designMachine.ts';
+import { DesignMachine, type ChainLoss } from './designMachine.ts';
 import { DesignOpener, type LoadedMesh, type OpenInfo, type OpenOptions } from './designOpener.ts';
 import { ExamplePicker } from './examplePicker.ts';
 import { designStem } from './exports.ts';
@@ -51,9 +51,6 @@ export class App {
   // The solve whose panels the worker keeps for fabrication (its 'keep'): the result on show,
   // unless the worker was replaced since; and a new worker solving that result again, quietly
   // (restorePanels).
-  private keptJob: number | null = null;
-  private restoring: { job: number; solved: Solved<SolveResult> } | null = null;
-  private unrestorable: Solved<SolveResult> | null = null; // solved again to other panels
   private readonly viewer = new Viewer(element('viewport', HTMLElement));
   private readonly form = new ParamsForm();
   private readonly preparation = new PrepareControl();
@@ -75,7 +72,7 @@ export class App {
     selection: this.selection,
     panels: () => (this.machine.solving ? null : (this.machine.solved?.result ?? null)),
     panelsJob: () => this.machine.solved?.job ?? null,
-    workerPanels: () => this.workerPanels(),
+    workerPanels: () => this.machine.workerPanels(),
     stem: () => designStem(this.machine.mesh?.fileName ?? 'design'),
     error: (message) => this.status.error(message),
     settingsChanged: () => this.fabricationChanged(),
@@ -112,7 +109,7 @@ export class App {
     statsBox: this.statsBox,
     dropSolve: () => {
       this.dropSolve();
-      if (this.restoring) this.setRestoring(null); // the worker drops it for the load
+      this.dropRestore(); // the worker drops it for the load
     },
     startSolve: (run, fresh, chain, notice, sameDesign) => this.startSolve(run, fresh, chain, null, notice, sameDesign),
     save: (state) => this.save(state),
@@ -214,7 +211,7 @@ export class App {
   // this one prepared or repaired anew).
   private startSolve(run: DesignParams[], fresh: boolean, chain: DesignParams[] | null, lost: ChainLoss | null = null, notice: string | null = null, sameDesign: LoadedMesh | null = null): void {
     const params = run[run.length - 1]!;
-    if (this.restoring) this.setRestoring(null); // the worker drops it for this solve
+    this.dropRestore(); // the worker drops it for this solve
     const job = this.solver.solve(fresh, run.map((p) => this.editor.solveStep(p)));
     const unsaid = this.solveNotice;
     const replaced = unsaid && (unsaid.mesh === this.machine.mesh || (sameDesign !== null && unsaid.mesh === sameDesign)) ? unsaid.text : null;
@@ -272,7 +269,7 @@ export class App {
   }
 
   private onSolved(job: number, result: SolveResult): void {
-    if (this.restoring?.job === job) {
+    if (this.machine.restoreOf(job)) {
       this.panelsRestored(job, result);
       return;
     }
@@ -281,7 +278,7 @@ export class App {
     if (!solved || !mesh) return;
     countOutcome('solves');
     this.solver.keep(job); // before the fabrication request below
-    this.keptJob = job;
+    this.machine.keep(job);
     this.viewer.setSolving(false);
     this.viewer.setResult(result);
     renderQuality(this.statsBox, result);
@@ -337,9 +334,9 @@ export class App {
 
   // The core refused a mesh or parameters: the previous design stays loaded and usable.
   private onFailed(job: number, reason: string, largestPart?: { faces: number; of: number }): void {
-    if (this.restoring?.job === job) {
-      this.setRestoring(null); // a deferred fabrication is then refused: Remesh
-      this.fabrication.panelsRestored();
+    if (this.machine.restoreFailed(job)) {
+      this.showRestoring(); // a deferred fabrication is then refused: Remesh
+      this.fabrication.sendDeferred();
       return;
     }
     const failedOpen = this.machine.sentOpening(job);
@@ -387,11 +384,9 @@ export class App {
   // reloaded). What was under way is lost; the last result stays on show and exportable.
   private onCrash(crash: Crash): void {
     console.warn(`flatfacet: the solver worker crashed: ${crash.message}`);
-    const crashedRestoring = this.restoring !== null;
-    this.setRestoring(null);
-    this.keptJob = null;
     const notice = this.takeSolveNotice(this.machine.solving?.job ?? null);
     const lost = this.machine.crashed(crash.meshKept);
+    this.showRestoring();
     this.viewer.setSolving(false);
     const solved = this.machine.solved;
     if (solved) this.viewer.setClusters(solved.result.clusterIds);
@@ -405,8 +400,8 @@ export class App {
     const lostOpen = this.forgetLostOpen(lost.lostOpening, crash.meshKept);
     if (lostOpen) parts.push(lostOpen);
     this.status.error(`${parts.join('; ')}.${notice ? ` ${notice}` : ''}`);
-    if (crash.meshKept && !crashedRestoring) this.restorePanels(); // not again: no crash loop
-    else this.fabrication.panelsRestored(); // a deferred request is refused: Remesh
+    if (crash.meshKept && !lost.lostRestore) this.restorePanels(); // not again: no crash loop
+    else this.fabrication.sendDeferred(); // a deferred request is refused: Remesh
     this.updateButtons();
   }
 
@@ -419,10 +414,9 @@ export class App {
     const solved = this.machine.solved;
     if (solved) this.viewer.setClusters(solved.result.clusterIds);
     this.opener.pendingNotice = null;
-    this.setRestoring(null);
-    this.keptJob = null;
+    this.showRestoring();
     this.fabrication.workerLost();
-    this.fabrication.panelsRestored(); // a request waiting is told the solver is gone
+    this.fabrication.sendDeferred(); // a request waiting is told the solver is gone
     this.status.resetProgress();
     const parts = [message];
     const takenBack = this.editor.repreparationLost(true); // no answer will come
@@ -453,7 +447,7 @@ export class App {
   // A cancel replaced a worker that did not answer in time: a fabrication it was asked for
   // will not come, and the new one has the mesh but not the panels on show.
   private onReplaced(): void {
-    this.keptJob = null;
+    this.machine.workerReplaced();
     this.fabrication.workerLost();
     this.restorePanels();
   }
@@ -464,41 +458,34 @@ export class App {
   // work as before. Not for a result whose chain is lost (changed mid-solve, a long chain):
   // fabrication then asks for a Remesh.
   private restorePanels(): void {
-    if (this.restoring || this.machine.solverDead) return;
-    const solved = this.machine.solved;
-    if (solved?.chain && this.keptJob !== solved.job && solved !== this.unrestorable && !this.machine.solving && !this.machine.loadingInWorker && this.machine.mesh) {
-      this.setRestoring({ job: this.solver.solve(true, solved.chain.map((p) => this.editor.solveStep(p))), solved });
+    if (this.machine.restoring || this.machine.solverDead) return;
+    const solved = this.machine.restoreTarget();
+    if (solved?.chain) {
+      this.machine.startRestore(this.solver.solve(true, solved.chain.map((p) => this.editor.solveStep(p))), solved);
+      this.showRestoring();
       return;
     }
-    this.fabrication.panelsRestored(); // a deferred request goes: answered, refused (Remesh), or waits again
+    this.fabrication.sendDeferred(); // a deferred request goes: answered, refused (Remesh), or waits again
   }
 
-  // FabricationHost.workerPanels: whether a fabrication request can be answered now.
-  private workerPanels(): 'kept' | 'pending' | 'lost' | 'dead' {
-    if (this.machine.solverDead) return 'dead';
-    const solved = this.machine.solved;
-    if (solved && this.keptJob === solved.job) return 'kept';
-    // Each ends in new panels (a solve, a load) or in restorePanels (a cancel, a refusal).
-    if (this.restoring || this.machine.solving || this.machine.opening) return 'pending';
-    return 'lost';
-  }
-
+  // The very panels on show (checked by their OBJ), and the design has not moved on: the worker
+  // keeps them as the result on show (else a fabrication request is refused, which is then the
+  // truth).
   private panelsRestored(job: number, result: SolveResult): void {
-    const { solved } = this.restoring!;
-    this.setRestoring(null);
-    // The very panels on show, and the design has not moved on (else a fabrication request is
-    // refused, which is then the truth).
-    if (result.objText !== solved.result.objText) this.unrestorable = solved; // not tried again
-    else if (this.machine.heldAgain(solved)) {
-      this.solver.keep(job, solved.job); // before a deferred fabrication request
-      this.keptJob = solved.job;
-    }
-    this.fabrication.panelsRestored();
+    const restoring = this.machine.restoreOf(job)!;
+    const kept = this.machine.restored(job, result.objText === restoring.result.objText);
+    this.showRestoring();
+    if (kept) this.solver.keep(job, kept.job); // before a deferred fabrication request
+    this.fabrication.sendDeferred();
   }
 
-  private setRestoring(restoring: { job: number; solved: Solved<SolveResult> } | null): void {
-    this.restoring = restoring;
-    document.body.dataset.restoring = String(restoring !== null);
+  private dropRestore(): void {
+    this.machine.dropRestore();
+    this.showRestoring();
+  }
+
+  private showRestoring(): void {
+    document.body.dataset.restoring = String(this.machine.restoring);
   }
 
   // The notice said with solve `job`'s end, if it has one (it is said once).

@@ -8,7 +8,9 @@
 //   solving  the solve under way, if any
 //   solved   the last finished result (R): what the view, the stats and the exports show
 // and what the worker's session holds: a just-loaded mesh (`pristine`) or exactly `solved`
-// (`holdsSolved`, the condition for a warm start). Every worker answer is matched to the job
+// (`holdsSolved`, the condition for a warm start), and the panels it keeps for fabrication
+// (`kept`: a solve's, once the page said it shows them; `restoring`: the result on show solved
+// again in a worker that lost them). Every worker answer is matched to the job
 // that asked for it, so an answer to a job the page moved past changes nothing.
 import { compactChain } from './edits/panelEdits.ts';
 import { canWarmStart, sameParams, type DesignParams } from './params.ts';
@@ -54,6 +56,9 @@ export class DesignMachine<M, O, R> {
   private holdsSolved = false;
   private tokens = 0;
   private solverGone = false;
+  private kept: number | null = null;
+  private restoreValue: { job: number; solved: Solved<R> } | null = null;
+  private unrestorable: Solved<R> | null = null; // solved again to other panels: not tried again
 
   constructor(private readonly maxHistory: number) {}
 
@@ -231,18 +236,95 @@ export class DesignMachine<M, O, R> {
     return true;
   }
 
+  // ---- the panels the worker keeps for fabrication (Session.keepPanels)
+
+  // The page told the worker to keep solve `job`'s panels: the result on show.
+  keep(job: number): void {
+    this.kept = job;
+  }
+  get keptJob(): number | null {
+    return this.kept;
+  }
+
+  // A cancel replaced the worker: the new one holds the mesh, not the panels.
+  workerReplaced(): void {
+    this.kept = null;
+  }
+
+  get restoring(): boolean {
+    return this.restoreValue !== null;
+  }
+  // The result restore `job` solves again (null: `job` is no restore under way).
+  restoreOf(job: number): Solved<R> | null {
+    return this.restoreValue?.job === job ? this.restoreValue.solved : null;
+  }
+
+  // The result on show, when the worker should solve its chain again now, quietly, to keep its
+  // panels: the worker does not keep them, nothing under way will change what it holds (a
+  // solve, a load, a restore), and the chain is known (not lost to a change mid-solve) and has
+  // not solved to other panels before.
+  restoreTarget(): Solved<R> | null {
+    const solved = this.solvedValue;
+    if (!solved?.chain || this.kept === solved.job || solved === this.unrestorable) return null;
+    if (this.restoreValue || this.solvingValue || this.loadingInWorker || !this.meshValue || this.solverGone) return null;
+    return solved;
+  }
+  startRestore(job: number, solved: Solved<R>): void {
+    this.restoreValue = { job, solved };
+  }
+  // A solve or a load sent to the worker replaces the restore under way.
+  dropRestore(): void {
+    this.restoreValue = null;
+  }
+  // Restore `job` was refused (its worker answers no more for it): another may be tried.
+  restoreFailed(job: number): boolean {
+    if (!this.restoreOf(job)) return false;
+    this.restoreValue = null;
+    return true;
+  }
+  // Restore `job` ended with panels. With the very panels on show and the
+  // design where it was, they are kept as the result on show (returned: the page tells the
+  // worker) and the next change warm-starts from them; other panels are not tried again.
+  restored(job: number, samePanels: boolean): Solved<R> | null {
+    const solved = this.restoreOf(job);
+    if (!solved) return null;
+    this.restoreValue = null;
+    if (!samePanels) {
+      this.unrestorable = solved;
+      return null;
+    }
+    if (!this.heldAgain(solved)) return null;
+    this.kept = solved.job;
+    return solved;
+  }
+
+  // Whether a fabrication request can be answered now: the worker keeps the panels on show,
+  // or something under way will settle it (a restore, a solve or a load: each ends in new
+  // panels or in restoreTarget), or they are lost (Remesh), or no worker will answer.
+  workerPanels(): 'kept' | 'pending' | 'lost' | 'dead' {
+    if (this.solverGone) return 'dead';
+    if (this.solvedValue && this.kept === this.solvedValue.job) return 'kept';
+    if (this.restoreValue || this.solvingValue || this.opening) return 'pending';
+    return 'lost';
+  }
+
+  // ---- a worker lost
+
   // The worker crashed and a new one took its place (with the mesh reloaded when
   // `meshKept`): nothing sent to the old one survives (an open still being read on the page
-  // does), the last result stays on show.
-  crashed(meshKept: boolean): { lostOpening: O | null; lostSolve: boolean } {
+  // does), the last result stays on show. `lostRestore`: a restore was under way.
+  crashed(meshKept: boolean): { lostOpening: O | null; lostSolve: boolean; lostRestore: boolean } {
     const lostOpening = this.sent[this.sent.length - 1]?.info ?? null;
     this.sent = [];
     const lostSolve = this.solvingValue !== null;
+    const lostRestore = this.restoreValue !== null;
     this.solvingValue = null;
+    this.restoreValue = null;
+    this.kept = null;
     this.holdsSolved = false;
     this.pristine = false;
     if (!meshKept) this.meshValue = null;
-    return { lostOpening, lostSolve };
+    return { lostOpening, lostSolve, lostRestore };
   }
 
   // The worker could not start ('fatal'): it answers nothing, so nothing more is asked of it

@@ -103,7 +103,7 @@ export class FabricationPanel {
   }
 
   // The worker was replaced: an awaited answer will not come. It is asked for again once the
-  // new worker has the panels (panelsRestored); until then the outputs on show, of the
+  // new worker has the panels (sendDeferred); until then the outputs on show, of the
   // settings before, are not offered.
   workerLost(): void {
     if (this.job === null) return;
@@ -140,7 +140,7 @@ export class FabricationPanel {
 
   // What kept a request waiting has ended (App.restorePanels): it goes now, and is answered,
   // refused, or waits again.
-  panelsRestored(): void {
+  sendDeferred(): void {
     if (!this.deferred) return;
     this.deferred = false;
     if (this.hasPanels) this.request();
