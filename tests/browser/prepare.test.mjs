@@ -418,6 +418,26 @@ test('Redo to a prepared step prepares it whatever its edits name on the mesh on
   });
 });
 
+// A link whose paint has another length than its mesh's vertices (a hand-made or damaged one:
+// the key still matches its bytes) is said at once, by name, and neither solved nor saved over
+// the stored session (before: the brush and the density view took it for no paint, and only
+// the solve said it, in the core's words, after the design had been saved).
+test('a link whose density paint does not fit its mesh is said, not solved and not saved', () => {
+  const example = { v: 1, mesh: { example: 'saddle' }, params: { ...quick, panels: 12 }, history: [] };
+  const painted = Int8Array.from({ length: 100 }, () => 16);
+  const key = fieldKey(painted);
+  const bad = linkOf(suite.url, { ...example, params: { ...example.params, paint: key }, paint: [{ key, vertices: painted.length }] }, new Uint8Array(0), painted);
+  return suite.withPage(linkOf(suite.url, example, new Uint8Array(0), new Int8Array(0)), async (page) => {
+    assert.equal(await waitForDone(page), 12);
+    await page.waitForFunction(() => Number(document.body.dataset.saves ?? 0) >= 2, null, { timeout: 30_000 });
+    const saves = await page.evaluate(() => Number(document.body.dataset.saves ?? 0));
+    const message = await errorAfter(page, () => page.evaluate((href) => { location.href = href; }, bad));
+    assert.match(message, /The density paint has 100 values, but the mesh has 4,0\d\d vertices; not solved\.$/);
+    await page.waitForTimeout(300);
+    assert.equal(await page.evaluate(() => Number(document.body.dataset.saves ?? 0)), saves, 'not saved over the stored design');
+  });
+});
+
 // Which holes are filled renumbers the filled triangles: when the holes change, edits are
 // dropped (said) if one names a filled triangle (all of them: an edit dropped alone could leave
 // an earlier one that it undid), while the paint stays.

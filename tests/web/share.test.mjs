@@ -6,8 +6,10 @@ import { test } from 'node:test';
 import { zlibSync } from 'fflate';
 import { decodeBase64url, encodeBase64url } from '../../build/web-tests/base64url.js';
 import { DEFAULT_PARAMS, LIMITS, toRemeshParams, validateParams } from '../../build/web-tests/params.js';
+import { DEFAULT_FABRICATION } from '../../build/web-tests/fabricationParams.js';
 import { adler32, decodeState, inflateCapped, encodePayload, encodeState, hashToState, LINK_LIMITS, MAX_HISTORY, MAX_LINK_HASH_CHARS, MAX_SHARED_MESH_BYTES, shareHash, stateToHash } from '../../build/web-tests/share.js';
 
+const encodeFabricationDefaults = () => JSON.parse(JSON.stringify(DEFAULT_FABRICATION));
 const params = { ...DEFAULT_PARAMS, panels: 90, seed: 12345678901, weights: { euclidean: 1, l2: 0.5, l21: 2, boundary: 1 } };
 
 // A hash from raw JSON (and optional file bytes), bypassing the encoder's own checks.
@@ -121,6 +123,43 @@ test('wrong versions, types and ranges in the settings are refused', () => {
   refused(hashOf({ ...base, history: 'none' }), /history/);
   refused(hashOf({ ...base, history: Array(MAX_HISTORY + 1).fill(params) }), /history/);
   refused(hashOf({ ...base, history: [{ ...params, panels: -3 }] }), /history/);
+});
+
+// A link from a newer version must not half-apply: unknown fields are refused at the top and
+// in the mesh as in the parameters, a mesh naming an example and a file too, and a null is
+// not read as an absent field's default.
+test('unknown fields, a mesh that is two meshes, and nulls for absent fields are refused', () => {
+  const base = { v: 1, mesh: { example: 'saddle' }, params, history: [] };
+  assert.ok(hashToState(hashOf(base)).ok);
+  refused(hashOf({ ...base, future: { nested: [[[]]] } }), /the link has an unknown field "future"/);
+  refused(hashOf(`{"v":1,"mesh":{"example":"saddle"},"params":${JSON.stringify(params)},"history":[],"__proto__":{"panels":5}}`), /unknown field "__proto__"/);
+  refused(hashOf({ ...base, mesh: { example: 'saddle', units: 'ft' } }), /the link's mesh has an unknown field "units"/);
+  refused(hashOf({ ...base, mesh: { example: 'saddle', file: 'evil.obj', size: 10 } }), /both an example and a mesh file/);
+  const bytes = new TextEncoder().encode('OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n');
+  refused(hashOf({ ...base, mesh: { file: 'a.off', size: bytes.length, rhinoObject: 'Roof' } }, bytes), /mesh has an unknown field "rhinoObject"/);
+  refused(hashOf({ ...base, history: null }), /history/);
+  refused(hashOf({ ...base, params: { ...params, edits: null } }), /edit/i);
+  refused(hashOf({ ...base, params: { ...params, paint: null } }), /paint key/);
+  refused(hashOf({ ...base, params: { ...params, densityExpression: null } }), /xpression/);
+  refused(hashOf({ ...base, params: { ...params, anisotropy: null } }), /nisotropy/);
+  const fabrication = encodeFabricationDefaults();
+  refused(hashOf({ ...base, fabrication: { ...fabrication, boundaryCut: null } }), /oundary/);
+  refused(hashOf({ ...base, fabrication: { ...fabrication, upAxis: null } }), /xis/);
+});
+
+// The largest design the page can make travels: every step of a full history with thousands of
+// panel edits (its settings run to megabytes, which compress to little). Before, the decoder
+// capped the settings at 64 KiB and called such a link of the page's own "damaged".
+test('a design with a full history of panel edits travels in a link', () => {
+  const edits = Array.from({ length: 3000 }, (_, i) => ({ op: 'lock', face: i }));
+  const step = { ...params, edits };
+  const state = { mesh: { kind: 'example', id: 'saddle' }, params: step, history: Array(MAX_HISTORY).fill(step) };
+  const hash = shareHash(state);
+  assert.ok(hash.ok, hash.message);
+  const decoded = hashToState(hash.value);
+  assert.ok(decoded.ok, decoded.message);
+  assert.equal(decoded.value.history.length, MAX_HISTORY);
+  assert.equal(decoded.value.params.edits.length, 3000);
 });
 
 test('file meshes: sizes, names and extra data are checked', () => {

@@ -331,13 +331,13 @@ export class DesignOpener {
     // Overtaken by a later open: shown, since the worker holds it now, but that open goes on.
     if (!loaded.newest) return;
     this.syncExampleSelect();
-    this.host.save({ mesh: opening.design, params, history: [], fabrication: this.host.fabrication.current });
-    // Panel edits name triangles: a link's must exist in the mesh it opened.
-    const misfit = [...opening.history, params].map((p) => checkEditsFit(p.edits, info.triangles)).find((c) => !c.ok);
-    if (opening.solve && misfit && !misfit.ok) {
-      this.host.status.error(`${misfit.message}; not solved.`);
+    const chain = [...opening.history, params];
+    // A design that does not fit its mesh is neither saved over the stored one nor solved.
+    const misfit = designMisfit(chain, info, (key) => this.host.editor.field(key));
+    if (!misfit) this.host.save({ mesh: opening.design, params, history: [], fabrication: this.host.fabrication.current });
+    if (opening.solve && misfit) {
+      this.host.status.error(`${misfit}; not solved.`);
     } else if (opening.solve) {
-      const chain = [...opening.history, params];
       this.host.startSolve(chain, false, chain, notice, opening.repairOf ? previous : null);
     } else {
       this.host.status.show(`${opening.label} is loaded. Remesh to make panels.`);
@@ -420,6 +420,18 @@ function keptThroughRepair(params: DesignParams, before: MeshBeforeRepair, after
   const text = parts.join(' and ');
   const why = renumbered ? `${plural ? 'they' : 'it'} named the mesh before the holes changed` : `${plural ? 'one' : 'it'} named a filled triangle, which filling numbers anew`;
   return { params: { ...params, paint, edits }, notice: `${text[0]!.toUpperCase()}${text.slice(1)} ${plural ? 'were' : 'was'} dropped: ${why}.` };
+}
+
+// Why the panel edits (which name triangles) or the density paint (a level per vertex) of a
+// design opened from a link do not fit the mesh it opened (null: they do).
+function designMisfit(chain: DesignParams[], info: MeshInfo, field: (key: string) => Int8Array | null): string | null {
+  for (const params of chain) {
+    const edits = checkEditsFit(params.edits, info.triangles);
+    if (!edits.ok) return edits.message;
+    const paint = params.paint === '' ? null : field(params.paint);
+    if (paint && paint.length !== info.vertices) return `The density paint has ${paint.length.toLocaleString('en-US')} values, but the mesh has ${info.vertices.toLocaleString('en-US')} vertices`;
+  }
+  return null;
 }
 
 // The design's mesh with this repair (none: the field left out, as links before it had).

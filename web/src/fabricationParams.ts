@@ -2,7 +2,7 @@
 // one validator for the form, links and the stored session; the limits are LIMITS (params.ts).
 // No DOM: unit-tested in Node.
 import type { FabricationParams, LengthUnitName } from '@flatfacet/wasm';
-import { checkNumber, failure, isRecord, LIMITS, type Checked } from './params.ts';
+import { absentOr, checkNumber, failure, isRecord, LIMITS, type Checked } from './params.ts';
 
 export const UNIT_NAMES: readonly LengthUnitName[] = ['mm', 'cm', 'm', 'in', 'ft'];
 
@@ -81,11 +81,11 @@ export function validateFabrication(value: unknown, where = 'fabrication'): Chec
   const panelThickness = checkPanelThickness(value.panelThickness);
   if (!panelThickness.ok) return panelThickness;
   // Absent in links and sessions made before these came to the page: the defaults.
-  const boundaryCut = value.boundaryCut ?? 'square';
+  const boundaryCut = absentOr(value.boundaryCut, 'square');
   if (!(BOUNDARY_CUTS as readonly unknown[]).includes(boundaryCut)) return failure('Boundary edges must be "square", "plumb" or "bevel"');
   const bevel = value.boundaryBevelDeg === undefined ? { ok: true as const, value: 0 } : checkNumber(value.boundaryBevelDeg, 'Boundary bevel', LIMITS.boundaryBevelDeg);
   if (!bevel.ok) return bevel;
-  const upAxis = value.upAxis ?? 'z';
+  const upAxis = absentOr(value.upAxis, 'z');
   if (upAxis !== 'x' && upAxis !== 'y' && upAxis !== 'z') return failure('Up axis must be x, y or z');
   return {
     ok: true,

@@ -197,7 +197,7 @@ export function checkAnisotropy(value: unknown): Checked<Anisotropy> {
     if ('expression' in value) return failure('anisotropy: an expression goes with the Expression direction only');
     return { ok: true, value: { direction, stretch: stretch.value } };
   }
-  const expression = checkDirectionExpression(value.expression ?? '');
+  const expression = checkDirectionExpression(absentOr(value.expression, ''));
   if (!expression.ok) return expression;
   return { ok: true, value: { direction, stretch: stretch.value, expression: expression.value } };
 }
@@ -208,6 +208,13 @@ export type Checked<T> = { ok: true; value: T } | { ok: false; message: string }
 
 export function failure<T>(message: string): Checked<T> {
   return { ok: false, message };
+}
+
+// An optional field of a link or stored session: `fallback` when absent (made before the field
+// existed). Only when absent: a null is checked as the value it is (and refused), not read as
+// the default.
+export function absentOr(value: unknown, fallback: unknown): unknown {
+  return value === undefined ? fallback : value;
 }
 
 export function isRecord(value: unknown): value is Record<string, unknown> {
@@ -279,14 +286,14 @@ export function validateParams(value: unknown, where = 'parameters'): Checked<De
   }
   if (weights.euclidean + weights.l2 + weights.l21 === 0) return failure('At least one of the euclidean, L2 and L2,1 weights must be above 0');
   // Absent in links and sessions made before density and anisotropy came to the page.
-  const expression = checkExpression(value.densityExpression ?? '');
+  const expression = checkExpression(absentOr(value.densityExpression, ''));
   if (!expression.ok) return expression;
-  const anisotropy = checkAnisotropy(value.anisotropy ?? DEFAULT_PARAMS.anisotropy);
+  const anisotropy = checkAnisotropy(absentOr(value.anisotropy, DEFAULT_PARAMS.anisotropy));
   if (!anisotropy.ok) return anisotropy;
-  const paint = value.paint ?? '';
+  const paint = absentOr(value.paint, '');
   if (typeof paint !== 'string' || (paint !== '' && !PAINT_KEY.test(paint))) return failure(`${where}: the density paint key is not valid`);
   // Absent in links and sessions made before panel edits came to the page.
-  const edits = checkEdits(value.edits ?? []);
+  const edits = checkEdits(absentOr(value.edits, []));
   if (!edits.ok) return edits;
   return {
     ok: true,

@@ -17,7 +17,7 @@ import { findExample } from './examples.ts';
 import { fabricationOrDefault, type FabricationSettings } from './fabricationParams.ts';
 import { checkRepair, repairJson, type MeshRepair } from './meshRepair.ts';
 import { checkPaintFields, checkPaintTable, paintEntries, type PaintFields } from './paintFields.ts';
-import { failure, LIMITS, validateParams, type Checked, type DesignParams } from './params.ts';
+import { absentOr, failure, LIMITS, validateParams, type Checked, type DesignParams } from './params.ts';
 
 export const SHARE_VERSION = 1;
 // The hash, "#v1=" included: Chromium's URL limit is 2,097,152 characters, and the page's own
@@ -28,7 +28,14 @@ export const MAX_LINK_HASH_CHARS = 1_900_000;
 export const MAX_SHARED_MESH_BYTES = 8 * 1024 * 1024;
 export const LINK_TOO_LARGE = 'the mesh is too large to travel in a link; share an example or a smaller file';
 export const MAX_HISTORY = 8;
-const MAX_JSON_BYTES = 64 * 1024;
+// The settings' JSON: the largest design (MAX_EDITS panel edits in each of the parameters and
+// the MAX_HISTORY steps before them, about 0.3 MB each) fits, which compresses to little.
+const MAX_JSON_BYTES = 4 * 1024 * 1024;
+// A link's fields, and its mesh's (an example or a file, each with its preparation and repair):
+// a link from a newer version must not half-apply, as in the parameters (params.ts).
+const LINK_FIELDS = ['v', 'mesh', 'params', 'history', 'fabrication', 'paint'];
+const EXAMPLE_MESH_FIELDS = ['example', 'prepare', 'repair'];
+const FILE_MESH_FIELDS = ['file', 'size', 'prepare', 'repair'];
 const MAX_FILE_NAME = 200;
 const HASH_PREFIX = `v${SHARE_VERSION}=`;
 
@@ -243,7 +250,8 @@ export function inflateCapped(compressed: Uint8Array, cap: number): Checked<Uint
 export function decodePayload(payload: Uint8Array, limits: DecodeLimits): Checked<DesignState> {
   if (payload.length < 4) return failure('the link is too short to hold a design');
   const jsonLength = new DataView(payload.buffer, payload.byteOffset, payload.byteLength).getUint32(0, true);
-  if (jsonLength > MAX_JSON_BYTES || jsonLength > payload.length - 4) return failure('the link is damaged (bad header)');
+  if (jsonLength > payload.length - 4) return failure('the link is damaged (bad header)');
+  if (jsonLength > MAX_JSON_BYTES) return failure(`the link's settings are larger than ${MAX_JSON_BYTES / 1024} KiB`);
   let parsed: unknown;
   try {
     parsed = JSON.parse(new TextDecoder('utf-8', { fatal: true }).decode(payload.subarray(4, 4 + jsonLength)));
@@ -254,6 +262,8 @@ export function decodePayload(payload: Uint8Array, limits: DecodeLimits): Checke
   if (parsed.v !== SHARE_VERSION) {
     return failure(typeof parsed.v === 'number' ? `the link has format version ${parsed.v}; this page reads version ${SHARE_VERSION}` : 'the link has no format version');
   }
+  const unknown = unknownField(parsed, LINK_FIELDS);
+  if (unknown !== null) return failure(`the link has an unknown field "${unknown}"`);
   // The paint's bytes come last; what is before them is the mesh's.
   const table = checkPaintTable(parsed.paint, 'the link');
   if (!table.ok) return table;
@@ -265,6 +275,9 @@ export function decodePayload(payload: Uint8Array, limits: DecodeLimits): Checke
   const meshValue = parsed.mesh;
   if (!isRecord(meshValue)) return failure('the link names no mesh');
   let mesh: DesignMesh;
+  if ('example' in meshValue && 'file' in meshValue) return failure('the link names both an example and a mesh file');
+  const unknownMesh = unknownField(meshValue, 'example' in meshValue ? EXAMPLE_MESH_FIELDS : FILE_MESH_FIELDS);
+  if (unknownMesh !== null) return failure(`the link's mesh has an unknown field "${unknownMesh}"`);
   if (typeof meshValue.example === 'string') {
     const example = findExample(meshValue.example);
     if (!example) return failure(`the link names an unknown example "${meshValue.example.slice(0, 40)}"`);
@@ -299,11 +312,17 @@ export function decodePayload(payload: Uint8Array, limits: DecodeLimits): Checke
   return { ok: true, value: { mesh, ...checked.value, ...fabrication.value, ...paint.value } };
 }
 
+// The first key of `record` not among `known` (shortened), or null.
+function unknownField(record: Record<string, unknown>, known: readonly string[]): string | null {
+  const key = Object.keys(record).find((k) => !known.includes(k));
+  return key === undefined ? null : key.slice(0, 40);
+}
+
 // The parameters and the warm-start history of a link or a stored session.
 export function checkParamsAndHistory(paramsValue: unknown, historyValue: unknown, where: string): Checked<{ params: DesignParams; history: DesignParams[] }> {
   const params = validateParams(paramsValue, 'parameters');
   if (!params.ok) return failure(`in ${where}, ${params.message}`);
-  const list = historyValue ?? [];
+  const list = absentOr(historyValue, []);
   if (!Array.isArray(list) || list.length > MAX_HISTORY) return failure(`${where} is damaged (bad solve history)`);
   const history: DesignParams[] = [];
   for (const entry of list) {
@@ -329,7 +348,11 @@ export function decodeState(compressed: Uint8Array, limits: DecodeLimits): Check
 }
 
 export function stateToHash(state: DesignState): string {
-  return `#${HASH_PREFIX}${encodeBase64url(encodeState(state))}`;
+  return payloadToHash(encodePayload(state));
+}
+
+function payloadToHash(payload: Uint8Array): string {
+  return `#${HASH_PREFIX}${encodeBase64url(zlibSync(payload, { level: 9 }))}`;
 }
 
 // The hash of a design, or why it cannot travel in a link. The mesh size is checked before
@@ -341,7 +364,10 @@ export function shareHash(state: DesignState): Checked<string> {
   if (paintBytes > MAX_SHARED_PAINT_BYTES) return failure(PAINT_TOO_LARGE);
   let hash: string;
   try {
-    hash = stateToHash(state);
+    // What the decoder would refuse is not offered (it fits by the limits above; kept in step).
+    const payload = encodePayload(state);
+    if (new DataView(payload.buffer).getUint32(0, true) > MAX_JSON_BYTES) return failure(`the design's settings are larger than ${MAX_JSON_BYTES / 1024} KiB and cannot travel in a link`);
+    hash = payloadToHash(payload);
   } catch (error) {
     return failure(`the link could not be made (${error instanceof Error ? error.message : String(error)})`);
   }
