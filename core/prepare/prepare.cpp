@@ -16,6 +16,12 @@ namespace {
 
 size_t at(int i) { return static_cast<size_t>(i); }
 
+// An estimated triangle count in a message ("about 12,345", "at least 12,345"), bounded: an edge length of 1e-10
+// asks for 1e+22 triangles, past what llround can return, and one of 5e-324 for infinitely many.
+std::string count_text(const char* how, double estimate) {
+  return estimate < 1e15 ? how + (" " + with_commas(std::llround(estimate))) : "more than 1e+15";
+}
+
 // Area of an equilateral triangle with edge L.
 double equilateral_area(double L) { return std::sqrt(3.0) / 4.0 * L * L; }
 double edge_for_area(double a) { return std::sqrt(a / (std::sqrt(3.0) / 4.0)); }
@@ -147,7 +153,7 @@ PreparedSurface prepare_surface(const TriMesh& mesh, int panels, const std::vect
     target = options.edge_length;
     const double estimate = area / equilateral_area(target);
     if (estimate > kPrepareMaxTriangles)
-      throw InputError("an edge length of " + short_number(target) + " needs about " + with_commas(std::llround(estimate)) +
+      throw InputError("an edge length of " + short_number(target) + " needs " + count_text("about", estimate) +
                        " triangles, more than the " + with_commas(kPrepareMaxTriangles) + " the preparation makes");
     if (estimate < panels)
       throw InputError("an edge length of " + short_number(target) + " gives about " + with_commas(std::llround(estimate)) +
@@ -155,7 +161,7 @@ PreparedSurface prepare_surface(const TriMesh& mesh, int panels, const std::vect
     reason = " triangles each, at the edge length asked for";
   } else if (refining) {
     if (static_cast<double>(panels) * dense * kPrepareMinTrianglesPerPanel > kPrepareMaxTriangles)
-      throw InputError(panels_text + " need at least " + with_commas(std::llround(panels * dense * kPrepareMinTrianglesPerPanel)) +
+      throw InputError(panels_text + " need " + count_text("at least", panels * dense * kPrepareMinTrianglesPerPanel) +
                        " triangles (20 per panel), more than the " + with_commas(kPrepareMaxTriangles) +
                        " the preparation makes; ask for at most " +
                        with_commas(static_cast<long long>(kPrepareMaxTriangles / (dense * kPrepareMinTrianglesPerPanel))) +

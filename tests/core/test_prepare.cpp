@@ -220,6 +220,17 @@ TEST(Prepare, ImpossibleRequestsAreClearErrors) {
   EXPECT_THROW(prepare_surface(epcot, 100, {}, o), InputError);
   EXPECT_THROW(prepare_surface(epcot, 100, std::vector<double>(7, 1.0)), InputError);
   EXPECT_THROW(prepare_surface(epcot, 100, std::vector<double>(epcot.positions.size(), 0.0)), InputError);
+  o.mode = PrepareMode::Auto;
+  for (const double tiny : {1e-10, 1e-300, 5e-324}) {  // estimates far past what a long long holds
+    o.edge_length = tiny;
+    try {
+      prepare_surface(epcot, 100, {}, o);
+      ADD_FAILURE() << "an edge length of " << tiny << " was accepted";
+    } catch (const InputError& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find("needs more than 1e+15 triangles"), std::string::npos) << "no overflowed count: " << what;
+    }
+  }
   try {
     prepare_surface(epcot, 1000000, {});
   } catch (const InputError& e) {
