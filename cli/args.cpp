@@ -9,13 +9,36 @@
 
 namespace ff::cli {
 
+namespace {
+
+// A token as a message shows it: bytes that are not printable ASCII as \xNN (a binary file given
+// as numbers), and no longer than 40 characters.
+std::string printable(const std::string& text) {
+  std::string out;
+  for (const char c : text.substr(0, 40)) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte >= 0x20 && byte < 0x7f) {
+      out += c;
+    } else {
+      static const char* const hex = "0123456789abcdef";
+      out += "\\x";
+      out += hex[byte >> 4];
+      out += hex[byte & 15];
+    }
+  }
+  return text.size() > 40 ? out + "..." : out;
+}
+
+}  // namespace
+
 double parse_double(const std::string& text, const std::string& what) {
   if (text.empty()) throw UsageError(what + ": expected a number, got nothing");
   char* end = nullptr;
   errno = 0;
   const double v = std::strtod(text.c_str(), &end);
-  if (end != text.c_str() + text.size() || errno == ERANGE || !std::isfinite(v))
-    throw UsageError(what + ": '" + text + "' is not a finite number");
+  if (end != text.c_str() + text.size() || !std::isfinite(v))
+    throw UsageError(what + ": '" + printable(text) + "' is not a finite number");
+  if (errno == ERANGE) throw UsageError(what + ": '" + printable(text) + "' is too close to 0 to hold in a double");
   return v;
 }
 

@@ -129,6 +129,13 @@ int main(int argc, char** argv) {
   }
   const std::string command = args[0];
   args.erase(args.begin());
+  // "flatfacet remesh --help": the usage, not "unknown option --help".
+  for (const std::string& arg : args) {
+    if (arg == "--help" || arg == "-h") {
+      std::fputs(kUsage, stdout);
+      return 0;
+    }
+  }
   try {
     if (command == "remesh") return ff::cli::run_remesh(args);
     if (command == "cluster") return ff::cli::run_cluster(args);

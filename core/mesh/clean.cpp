@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <numeric>
 #include <utility>
 
@@ -16,6 +17,7 @@
 #include "core/mesh/vertex_spread.h"
 #include "core/mesh/weld.h"
 #include "core/util/error.h"
+#include "core/util/short_number.h"
 #include "core/util/union_find.h"
 
 namespace ff {
@@ -30,6 +32,30 @@ void require_finite(const std::vector<Vec3>& positions) {
       throw InputError("vertex " + std::to_string(v) + " has a non-finite coordinate " +
                        detail::format_point(positions[v]));
     }
+  }
+}
+
+// Areas, the sliver test and the metric's moments take squares and fourth powers of a model's
+// size, which leave a double's range beyond about 1e+77; well inside that, 1e-30 to 1e+30
+// across covers every real model in any unit. One outside was exported in a wrong unit or is
+// damaged: said, instead of sliver tests that pass every face (or none) and a silent mess.
+constexpr double kMinExtent = 1e-30, kMaxExtent = 1e30;
+
+void require_workable_extent(const TriMesh& input) {
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  for (const Triangle& t : input.triangles) {
+    for (int v : t) {
+      lo = lo.cwiseMin(input.positions[static_cast<size_t>(v)]);
+      hi = hi.cwiseMax(input.positions[static_cast<size_t>(v)]);
+    }
+  }
+  const double extent = 2.0 * (0.5 * hi - 0.5 * lo).maxCoeff();  // no overflow on the way
+  if (extent == 0.0) throw InputError("the mesh has no extent: all its vertices coincide");
+  // One corrupted coordinate (3e38 from a broken binary STL) is named as such first.
+  if (!(extent <= kMaxExtent)) require_no_stray_vertex(input, {});
+  if (!(extent <= kMaxExtent) || extent < kMinExtent) {
+    throw InputError("the mesh is " + short_number(extent) + " across, outside the 1e-30 to 1e+30 that can be measured " +
+                     "in double precision: rescale it (was it exported in another unit?)");
   }
 }
 
@@ -315,6 +341,7 @@ CleanMesh clean_mesh(const TriMesh& input, const CleanOptions& options) {
   }
   require_finite(input.positions);
   detail::require_valid_indices(input.triangles, n, /*require_distinct=*/false);
+  require_workable_extent(input);
 
   // Weld: representatives are input vertices, so messages below name input vertices.
   const std::vector<int> rep = weld(input, options.weld_tolerance);

@@ -123,6 +123,9 @@ PreparedSurface prepare_surface(const TriMesh& mesh, int panels, const std::vect
   const long long faces = mesh.num_faces();
   const double per_panel = static_cast<double>(faces) / panels;
   const double area = total_area(mesh);
+  // Every face degenerate (collinear corners): said as such, not as the edge length that a zero
+  // area would make (the metric says the same with the preparation off).
+  if (!(area > 0.0)) throw InputError("the surface has zero area: all " + with_commas(faces) + " faces are degenerate");
   const bool per_vertex = density.size() == mesh.positions.size();
   const std::vector<double> sizing = sizing_density(mesh, density, per_vertex);
   const double dense = dense_factor(mesh, sizing);

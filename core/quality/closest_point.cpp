@@ -80,21 +80,29 @@ struct TriangleTree::Item {
 TriangleTree::TriangleTree(const std::vector<Vec3>& vertices, const std::vector<Triangle>& triangles) {
   const size_t m = triangles.size();
   const int nv = static_cast<int>(vertices.size());
-  std::vector<Item> items(m);
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
   for (size_t t = 0; t < m; ++t) {
-    Vec3 sum = Vec3::Zero();
     for (int v : triangles[t]) {
       if (v < 0 || v >= nv) {
         throw InputError("closest point tree: triangle " + std::to_string(t) + " refers to vertex " +
                          std::to_string(v) + " of " + std::to_string(nv));
       }
-      if (!vertices[static_cast<size_t>(v)].allFinite()) {
-        throw InputError("closest point tree: vertex " + std::to_string(v) + " is not finite");
-      }
-      sum += vertices[static_cast<size_t>(v)];
+      const Vec3& p = vertices[static_cast<size_t>(v)];
+      if (!p.allFinite()) throw InputError("closest point tree: vertex " + std::to_string(v) + " is not finite");
+      lo = lo.cwiseMin(p);
+      hi = hi.cwiseMax(p);
     }
-    sum /= 3.0;
-    items[t] = {{static_cast<float>(sum.x()), static_cast<float>(sum.y()), static_cast<float>(sum.z())},
+  }
+  // Centroids in floats, in the box's own frame (about -0.5 to 0.5): a model at 1e39 or 1e-40
+  // in world units would otherwise overflow or vanish in a float, and the splits' bins with it.
+  const Vec3 center = m > 0 ? Vec3(0.5 * lo + 0.5 * hi) : Vec3::Zero();
+  const double extent = m > 0 ? (0.5 * hi - 0.5 * lo).maxCoeff() : 0.0;
+  const double to_unit = extent > 0.0 && std::isfinite(0.5 / extent) ? 0.5 / extent : 1.0;
+  std::vector<Item> items(m);
+  for (size_t t = 0; t < m; ++t) {
+    Vec3 centroid = Vec3::Zero();
+    for (int v : triangles[t]) centroid += (vertices[static_cast<size_t>(v)] - center) * (to_unit / 3.0);
+    items[t] = {{static_cast<float>(centroid.x()), static_cast<float>(centroid.y()), static_cast<float>(centroid.z())},
                 static_cast<int>(t)};
   }
   if (m > 0) {

@@ -434,6 +434,21 @@ expect_error 2 "edge-length.*not a finite number" remesh "$e" --panels 10 --edge
 expect_error 2 "edge-length.*prepare off" remesh "$e" --panels 10 --edge-length 0.1 --prepare off "${o[@]}"
 expect_error 2 "fewer than the 100 panels" remesh "$e" --panels 100 --edge-length 5 "${o[@]}"
 expect_error 2 "edits.*prepare auto" remesh "$e" --panels 10 --edits "$tmp/never.json" --edge-length 0.1 "${o[@]}"
+# An edge length no mesh can use: the estimate is bounded (it overflowed to "--9,223,...").
+expect_error 2 "edge length of 1e-10 needs more than 1e\+15 triangles" remesh "$e" --panels 10 --edge-length 1e-10 "${o[@]}"
+# A model exported in a wrong unit, far beyond what doubles measure: refused by name (it
+# crashed the quality report at 1e39, and clustered to nonsense with exit 0 at 1e200).
+awk 'NR > 2 && NF == 3 { $1 *= 1e39; $2 *= 1e39; $3 *= 1e39 } { print }' "$e" >"$tmp/huge.off"
+expect_error 2 "e\+39 across, outside the 1e-30 to 1e\+30" remesh "$tmp/huge.off" --panels 10 "${o[@]}"
+expect_error 2 "across, outside the 1e-30 to 1e\+30" cluster "$tmp/huge.off" --panels 10 --labels "$tmp/never.txt"
+# Every face degenerate (collinear corners): said as such.
+printf 'v 0 0 0\nv 1 0 0\nv 2 0 0\nv 3 0 0\nf 1 2 3\nf 2 3 4\n' >"$tmp/line.obj"
+expect_error 2 "zero area" remesh "$tmp/line.obj" --panels 1 "${o[@]}"
+# Bytes of a binary file given as numbers are shown escaped, not raw.
+printf '\x89PNG\r\n' >"$tmp/png.txt"
+expect_error 2 "'\\\\x89PNG' is not a finite number" remesh "$e" --panels 10 --density "$tmp/png.txt" "${o[@]}"
+# A command's --help is its usage (exit 0), not an unknown option.
+"$bin" remesh --help >"$tmp/help.txt" 2>&1 && grep -q "remesh INPUT --panels N" "$tmp/help.txt" && ok || bad "remesh --help"
 # Glass mode: epcot at 38 is valid with a 10-degree minimum (exit 0): no concave panel, no
 # corner below 10, the report says so, and the parts list labels pieces after their panel.
 "$bin" remesh "$e" --panels 38 --glass --min-angle 10 --report "$tmp/glass.json" --parts "$tmp/glass.csv" \

@@ -188,6 +188,28 @@ TEST(CleanMesh, NonFiniteCoordinateIsRefused) {
   EXPECT_EQ(clean_error(m), "vertex 2 has a non-finite coordinate (0, -inf, 0.5)");
 }
 
+// Squares and fourth powers of a model's size leave a double's range past about 1e+77 (the
+// sliver test then passed every face and clustering went on with a mess, exit 0); a model
+// outside 1e-30 to 1e+30 across is refused by name, one inside is cleaned at any scale alike.
+TEST(CleanMesh, AModelTooLargeOrTooSmallToMeasureIsRefused) {
+  for (const double scale : {1e31, 1e39, 1e200, 1e-31, 1e-40, 1e-200}) {
+    TriMesh m = test::tetrahedron();
+    for (Vec3& p : m.positions) p *= scale;
+    const std::string message = clean_error(m);
+    EXPECT_NE(message.find("across, outside the 1e-30 to 1e+30 that can be measured"), std::string::npos) << scale << ": " << message;
+  }
+  for (const double scale : {1e29, 1e-29}) {
+    TriMesh m = test::tetrahedron();
+    for (Vec3& p : m.positions) p *= scale;
+    const CleanMesh c = clean_mesh(m);
+    EXPECT_EQ(c.mesh.triangles, test::tetrahedron().triangles) << scale;
+    EXPECT_EQ(c.report.messages().size(), 0u) << scale;
+  }
+  TriMesh point = test::tetrahedron();
+  for (Vec3& p : point.positions) p = Vec3(1, 2, 3);
+  EXPECT_EQ(clean_error(point), "the mesh has no extent: all its vertices coincide");
+}
+
 TEST(CleanMesh, OutOfRangeIndexIsRefused) {
   TriMesh m = test::tetrahedron();
   m.triangles[1][2] = 7;

@@ -72,6 +72,22 @@ TEST(ClosestPoint, TreeMatchesBruteForce) {
   EXPECT_THROW(TriangleTree({Vec3::Zero()}, {Triangle{0, 0, 1}}), InputError);
 }
 
+// The tree splits on float centroids, taken in the box's own frame: in world units a model
+// at 1e39 overflowed a float (inf, then NaN bins: a crash) and one at 1e-44 vanished in it.
+TEST(ClosestPoint, TreeWorksAtAnyScale) {
+  for (const double scale : {1e39, 1e-44, 1e30, 1e-30}) {
+    const TriMesh unit = make_roof(12, 10);
+    TriMesh m = unit;
+    for (Vec3& p : m.positions) p *= scale;
+    const TriangleTree tree(m), reference(unit);
+    for (int i = 0; i < 50; ++i) {
+      const Vec3 q(20 + 25 * std::cos(i), 12 + 15 * std::sin(0.7 * i), 4 + 6 * std::cos(1.3 * i));
+      const ClosestPoint c = tree.closest_point(q * scale), r = reference.closest_point(q);
+      EXPECT_NEAR(c.distance / scale, r.distance, 1e-9) << scale;
+    }
+  }
+}
+
 TEST(ClosestPoint, OnTriangleIsTheMinimum) {
   SplitMix64 rng(5);
   const auto r = [&] { return Vec3(2 * rng.uniform() - 1, 2 * rng.uniform() - 1, 2 * rng.uniform() - 1); };
