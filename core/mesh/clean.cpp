@@ -54,7 +54,8 @@ void require_workable_extent(const TriMesh& input) {
   // One corrupted coordinate (3e38 from a broken binary STL) is named as such first.
   if (!(extent <= kMaxExtent)) require_no_stray_vertex(input, {});
   if (!(extent <= kMaxExtent) || extent < kMinExtent) {
-    throw InputError("the mesh is " + short_number(extent) + " across, outside the 1e-30 to 1e+30 that can be measured " +
+    throw InputError("the mesh is " + short_number(extent) +
+                     " across, outside the 1e-30 to 1e+30 that can be measured " +
                      "in double precision: rescale it (was it exported in another unit?)");
   }
 }

@@ -196,7 +196,8 @@ TEST(CleanMesh, AModelTooLargeOrTooSmallToMeasureIsRefused) {
     TriMesh m = test::tetrahedron();
     for (Vec3& p : m.positions) p *= scale;
     const std::string message = clean_error(m);
-    EXPECT_NE(message.find("across, outside the 1e-30 to 1e+30 that can be measured"), std::string::npos) << scale << ": " << message;
+    EXPECT_NE(message.find("across, outside the 1e-30 to 1e+30 that can be measured"), std::string::npos)
+        << scale << ": " << message;
   }
   for (const double scale : {1e29, 1e-29}) {
     TriMesh m = test::tetrahedron();
