@@ -164,11 +164,12 @@ PreparedSurface prepare_surface(const TriMesh& mesh, int panels, const std::vect
     reason = " triangles each, at the edge length asked for";
   } else if (refining) {
     if (static_cast<double>(panels) * dense * kPrepareMinTrianglesPerPanel > kPrepareMaxTriangles)
-      throw InputError(panels_text + " need " + count_text("at least", panels * dense * kPrepareMinTrianglesPerPanel) +
-                       " triangles (20 per panel), more than the " + with_commas(kPrepareMaxTriangles) +
-                       " the preparation makes; ask for at most " +
-                       with_commas(static_cast<long long>(kPrepareMaxTriangles / (dense * kPrepareMinTrianglesPerPanel))) +
-                       " panels");
+      throw InputError(
+          panels_text + " need " + count_text("at least", panels * dense * kPrepareMinTrianglesPerPanel) +
+          " triangles (20 per panel), more than the " + with_commas(kPrepareMaxTriangles) +
+          " the preparation makes; ask for at most " +
+          with_commas(static_cast<long long>(kPrepareMaxTriangles / (dense * kPrepareMinTrianglesPerPanel))) +
+          " panels");
     target = edge_for_area(area / refined_count(panels, dense));
     reason = " triangles each (" + short_number(dense_per_panel) +
              (dense > 1.0 ? " where the density is highest" : "") + " before; 30 to 100 work best)";
