@@ -129,12 +129,11 @@ int main(int argc, char** argv) {
   }
   const std::string command = args[0];
   args.erase(args.begin());
-  // "flatfacet remesh --help": the usage, not "unknown option --help".
-  for (const std::string& arg : args) {
-    if (arg == "--help" || arg == "-h") {
-      std::fputs(kUsage, stdout);
-      return 0;
-    }
+  // "flatfacet remesh --help": the usage, not "unknown option --help" (only as the command's
+  // first word: "--out -h" names a file).
+  if ((command == "remesh" || command == "cluster") && !args.empty() && (args[0] == "--help" || args[0] == "-h")) {
+    std::fputs(kUsage, stdout);
+    return 0;
   }
   try {
     if (command == "remesh") return ff::cli::run_remesh(args);

@@ -41,23 +41,41 @@ void require_finite(const std::vector<Vec3>& positions) {
 // damaged: said, instead of sliver tests that pass every face (or none) and a silent mess.
 constexpr double kMinExtent = 1e-30, kMaxExtent = 1e30;
 
-void require_workable_extent(const TriMesh& input) {
+void require_workable_extent(const std::vector<Vec3>& positions, const std::vector<Triangle>& triangles) {
   Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
-  for (const Triangle& t : input.triangles) {
+  for (const Triangle& t : triangles) {
     for (int v : t) {
-      lo = lo.cwiseMin(input.positions[static_cast<size_t>(v)]);
-      hi = hi.cwiseMax(input.positions[static_cast<size_t>(v)]);
+      lo = lo.cwiseMin(positions[static_cast<size_t>(v)]);
+      hi = hi.cwiseMax(positions[static_cast<size_t>(v)]);
     }
   }
   const double extent = 2.0 * (0.5 * hi - 0.5 * lo).maxCoeff();  // no overflow on the way
   if (extent == 0.0) throw InputError("the mesh has no extent: all its vertices coincide");
-  // One corrupted coordinate (3e38 from a broken binary STL) is named as such first.
-  if (!(extent <= kMaxExtent)) require_no_stray_vertex(input, {});
-  if (!(extent <= kMaxExtent) || extent < kMinExtent) {
-    throw InputError("the mesh is " + short_number(extent) +
-                     " across, outside the 1e-30 to 1e+30 that can be measured " +
-                     "in double precision: rescale it (was it exported in another unit?)");
+  if (extent >= kMinExtent && extent <= kMaxExtent) return;
+  if (!(extent <= kMaxExtent)) {
+    // Where one thing makes it so, it is named: a part far from the rest (which --largest-part
+    // drops before this), or one corrupted coordinate in a part (3e38 from a broken binary
+    // STL). On the vertices the faces use, numbered as in the input.
+    std::vector<int> index(positions.size(), -1), source;
+    TriMesh used;
+    for (Triangle t : triangles) {
+      for (int& v : t) {
+        int& i = index[static_cast<size_t>(v)];
+        if (i < 0) {
+          i = used.num_vertices();
+          used.positions.push_back(positions[static_cast<size_t>(v)]);
+          source.push_back(v);
+        }
+        v = i;
+      }
+      used.triangles.push_back(t);
+    }
+    const std::vector<int> roots = vertex_part_roots(used);
+    require_compact_parts(used, roots);
+    require_no_stray_vertex(used, source, roots);
   }
+  throw InputError("the mesh is " + short_number(extent) + " across, outside the 1e-30 to 1e+30 that can be measured " +
+                   "in double precision: rescale it (was it exported in another unit?)");
 }
 
 struct FaceFilter {
@@ -342,7 +360,6 @@ CleanMesh clean_mesh(const TriMesh& input, const CleanOptions& options) {
   }
   require_finite(input.positions);
   detail::require_valid_indices(input.triangles, n, /*require_distinct=*/false);
-  require_workable_extent(input);
 
   // Weld: representatives are input vertices, so messages below name input vertices.
   const std::vector<int> rep = weld(input, options.weld_tolerance);
@@ -366,6 +383,9 @@ CleanMesh clean_mesh(const TriMesh& input, const CleanOptions& options) {
   welded = {};
   const std::vector<char> used_before_cut = keep_manifold_part(tris, filter.kept, input.positions, options, report,
                                                                input.triangles.size(), out.input_face_outside_part);
+  // Welded (a soup's triangles joined) and down to the largest part when asked: only then is a
+  // far-off part or a stray vertex told from a model in a wrong unit.
+  require_workable_extent(input.positions, tris);
 
   const HalfEdgeGroups groups = detail::group_half_edges(tris, n);
 

@@ -36,7 +36,7 @@ Spread spread_of(const std::vector<Vec3>& positions, const std::vector<size_t>& 
     s.middle[axis] = kth_smallest(values, n / 2);
   }
   for (size_t i = 0; i < n; ++i) {
-    values[i] = (positions[part[i]] - s.middle).norm();
+    values[i] = (positions[part[i]] - s.middle).stableNorm();  // a model 1e154 across: no inf
     if (values[i] > s.reach) s.reach = values[i], s.farthest = part[i];
   }
   s.bulk = kth_smallest(values, (n - 1) * 9 / 10);

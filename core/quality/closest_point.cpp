@@ -184,9 +184,10 @@ int TriangleTree::build(int begin, int end, std::vector<Item>& items) {
     // Large ranges: split at the histogram bin boundary nearest the median, one streaming
     // partition instead of a branchy multi-pass selection (halves within a bin of equal).
     const int bins = end - begin > 4096 ? kMaxBins : 32;
-    const float origin = lo[axis], scale = static_cast<float>(bins) / (hi[axis] - lo[axis]);
+    // In double: a spread of float subnormals would make a float scale infinite (NaN bins).
+    const double origin = lo[axis], scale = bins / (static_cast<double>(hi[axis]) - origin);
     const auto bin = [&](const Item& item) {
-      return std::min(bins - 1, static_cast<int>((item.centroid[axis] - origin) * scale));
+      return std::min(bins - 1, static_cast<int>((static_cast<double>(item.centroid[axis]) - origin) * scale));
     };
     int counts[kMaxBins] = {};
     for (auto it = first; it != last; ++it) ++counts[bin(*it)];

@@ -209,6 +209,34 @@ TEST(CleanMesh, AModelTooLargeOrTooSmallToMeasureIsRefused) {
   TriMesh point = test::tetrahedron();
   for (Vec3& p : point.positions) p = Vec3(1, 2, 3);
   EXPECT_EQ(clean_error(point), "the mesh has no extent: all its vertices coincide");
+  // A dense model 2e154 across: its corners' distances overflow a plain norm, which called it
+  // a corrupted coordinate ("lies inf times farther"); it is a model in a wrong unit.
+  TriMesh huge = test::grid(20, 20);
+  for (Vec3& p : huge.positions) p *= 1e153;
+  EXPECT_NE(clean_error(huge).find("across, outside the 1e-30 to 1e+30"), std::string::npos) << clean_error(huge);
+}
+
+// What makes a model too large is named where one thing does, after welding and after the
+// largest part is kept when asked: one corner of a triangle soup (a binary STL) at 3e38 is a
+// corrupted coordinate, and a piece 1e31 away is a stray part.
+TEST(CleanMesh, WhatMakesAModelTooLargeIsNamed) {
+  const TriMesh epcot = test::load_clean("epcot.off");
+  TriMesh soup;
+  for (const Triangle& t : epcot.triangles) {
+    const int base = soup.num_vertices();
+    for (int v : t) soup.positions.push_back(epcot.positions[static_cast<size_t>(v)]);
+    soup.triangles.push_back({base, base + 1, base + 2});
+  }
+  soup.positions[40].x() = 3e38;
+  EXPECT_EQ(clean_error(soup).rfind("vertex 40 at (3e+38, ", 0), 0u) << clean_error(soup);
+
+  // (Doubles near 1e31 are 2e15 apart, so a triangle there is no smaller than that, and it is
+  // the larger part: part_spread names the other one as the stray piece, as it always has.)
+  TriMesh far = epcot;
+  const int base = far.num_vertices();
+  for (const Vec3& p : {Vec3(1e31, 0, 0), Vec3(1e31 + 1e16, 0, 0), Vec3(1e31, 1e16, 0)}) far.positions.push_back(p);
+  far.triangles.push_back({base, base + 1, base + 2});
+  EXPECT_NE(clean_error(far).find("a stray piece?"), std::string::npos) << clean_error(far);
 }
 
 TEST(CleanMesh, OutOfRangeIndexIsRefused) {

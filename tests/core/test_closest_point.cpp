@@ -88,6 +88,22 @@ TEST(ClosestPoint, TreeWorksAtAnyScale) {
   }
 }
 
+// Centroids a few float subnormals apart: the bins' scale overflowed a float (NaN bins).
+TEST(ClosestPoint, TreeSplitsCentroidsSubnormalsApart) {
+  TriMesh m;
+  m.positions = {Vec3(-1, -1, 0), Vec3(1, -1, 0), Vec3(0, 1, 0)};
+  m.triangles = {{0, 1, 2}};
+  for (int i = 0; i < 200; ++i) {
+    const int base = m.num_vertices();
+    m.positions.push_back(Vec3(i * 1e-40, 0, 0));
+    m.positions.push_back(Vec3((i + 1) * 1e-40, 0, 0));
+    m.positions.push_back(Vec3(i * 1e-40, 1e-40, 0));
+    m.triangles.push_back({base, base + 1, base + 2});
+  }
+  const TriangleTree tree(m);
+  EXPECT_NEAR(tree.closest_point(Vec3(0.5, 0, 1)).distance, 1.0, 1e-12);
+}
+
 TEST(ClosestPoint, OnTriangleIsTheMinimum) {
   SplitMix64 rng(5);
   const auto r = [&] { return Vec3(2 * rng.uniform() - 1, 2 * rng.uniform() - 1, 2 * rng.uniform() - 1); };
