@@ -79,6 +79,7 @@ int run_cluster(const std::vector<std::string>& argv) {
   if (args.flags.count("no-teleport")) params.teleport_interval = 0;
   params.make_panels = false;  // the Lloyd phase only
 
+  require_outputs_spare_inputs({args.get("labels"), args.get("summary")}, {args.positional[0], args.get("density")});
   const LoadedInput in = load_input(args.positional[0], parse_repair(args));
   if (args.has("density")) params.density = load_density(args.get("density"), in);
 

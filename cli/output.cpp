@@ -1,6 +1,7 @@
 #include "cli/output.h"
 
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 
 #include "cli/args.h"
@@ -30,6 +31,17 @@ void write_files_atomic(const std::vector<OutputFile>& files) {
       // Renames within one folder do not fail in practice; undo what is left.
       for (size_t j = i; j < written.size(); ++j) std::remove(written[j].c_str());
       throw UsageError("cannot write '" + files[i].path + "'");
+    }
+  }
+}
+
+void require_outputs_spare_inputs(const std::vector<std::string>& outputs, const std::vector<std::string>& inputs) {
+  for (const std::string& out : outputs) {
+    for (const std::string& in : inputs) {
+      if (out.empty() || in.empty()) continue;
+      std::error_code error;  // a name that does not exist yet is no input (equivalent: false)
+      if (std::filesystem::equivalent(out, in, error))
+        throw UsageError("the output '" + out + "' is the input '" + in + "': it would be overwritten; name another file");
     }
   }
 }

@@ -180,6 +180,7 @@ Options parse_options(const std::vector<std::string>& argv) {
   o.repair = parse_repair(args);
   // A density file holds values per input vertex or triangle; the subdivided mesh has others.
   if (o.subdivision.levels > 0 && !o.density.empty()) throw UsageError("--density cannot be combined with --subdivide");
+  require_outputs_spare_inputs({o.out, o.report, f.parts, f.sheets, f.solid}, {o.input, o.density, o.edits});
   return o;
 }
 

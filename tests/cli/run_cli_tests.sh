@@ -447,6 +447,13 @@ expect_error 2 "zero area" remesh "$tmp/line.obj" --panels 1 "${o[@]}"
 # Bytes of a binary file given as numbers are shown escaped, not raw.
 printf '\x89PNG\r\n' >"$tmp/png.txt"
 expect_error 2 "'\\\\x89PNG' is not a finite number" remesh "$e" --panels 10 --density "$tmp/png.txt" "${o[@]}"
+# An output naming the input (directly or through a link) is refused: it overwrote the mesh.
+cp "$e" "$tmp/mine.off"
+ln -s "$tmp/mine.off" "$tmp/link.off"
+expect_error 2 "is the input .*would be overwritten" remesh "$tmp/mine.off" --panels 10 --out "$tmp/mine.off"
+expect_error 2 "is the input .*would be overwritten" remesh "$tmp/link.off" --panels 10 --report "$tmp/mine.off"
+expect_error 2 "is the input .*would be overwritten" cluster "$tmp/mine.off" --panels 10 --labels "$tmp/mine.off"
+cmp -s "$e" "$tmp/mine.off" && ok || bad "the input was changed"
 # A command's --help is its usage (exit 0), not an unknown option.
 "$bin" remesh --help >"$tmp/help.txt" 2>&1 && grep -q "remesh INPUT --panels N" "$tmp/help.txt" && ok || bad "remesh --help"
 # Glass mode: epcot at 38 is valid with a 10-degree minimum (exit 0): no concave panel, no
