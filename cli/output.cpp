@@ -41,7 +41,8 @@ void require_outputs_spare_inputs(const std::vector<std::string>& outputs, const
       if (out.empty() || in.empty()) continue;
       std::error_code error;  // a name that does not exist yet is no input (equivalent: false)
       if (std::filesystem::equivalent(out, in, error))
-        throw UsageError("the output '" + out + "' is the input '" + in + "': it would be overwritten; name another file");
+        throw UsageError("the output '" + out + "' is the input '" + in +
+                         "': it would be overwritten; name another file");
     }
   }
 }
