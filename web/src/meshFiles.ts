@@ -17,9 +17,19 @@ export function extensionOf(name: string): string {
 }
 
 export async function payloadFromFile(name: string, bytes: Uint8Array): Promise<Checked<MeshPayload>> {
-  if (GLTF_EXTENSIONS.includes(extensionOf(name))) return gltfPayload(name, bytes);
+  // The page's own readers (glTF through three.js, Rhino through rhino3dm) meet hostile files:
+  // whatever one throws is a refusal of the file, never an open left "loading" for good.
+  const onPage = async (read: () => Promise<Checked<MeshPayload>>, kind: string): Promise<Checked<MeshPayload>> => {
+    try {
+      return await read();
+    } catch (error) {
+      const reason = error instanceof Error ? error.message : String(error);
+      return failure(`${name}: not a readable ${kind} file (${reason.slice(0, 160)})`);
+    }
+  };
+  if (GLTF_EXTENSIONS.includes(extensionOf(name))) return onPage(() => gltfPayload(name, bytes), 'glTF');
   // Rhino: parsed on the page by rhino3dm, itself loaded on the first .3dm (web/src/rhino/).
-  if (extensionOf(name) === '3dm') return rhinoPayload(name, bytes);
+  if (extensionOf(name) === '3dm') return onPage(() => rhinoPayload(name, bytes), 'Rhino');
   // Anything else goes to the core, which reads by extension or else by content and names
   // the problem when it cannot.
   return { ok: true, value: { kind: 'bytes', name, bytes } };
@@ -61,6 +71,9 @@ function isRecord(value: unknown): value is Record<string, unknown> {
   return typeof value === 'object' && value !== null && !Array.isArray(value);
 }
 
+// The vertices a glTF may place (all meshes, with every node that places them): well past what
+// the core prepares (2 million triangles), short of what fills the tab's memory.
+export const MAX_GLTF_VERTICES = 10_000_000;
 const GLB_MAGIC = 0x46546c67; // "glTF"
 const CHUNK_JSON = 0x4e4f534a;
 
@@ -102,6 +115,17 @@ export function selfContainedGltf(name: string, bytes: Uint8Array): Checked<Arra
       return failure(`${name} refers to a separate file ("${shown}"), which this page does not fetch: export a .glb, or a .gltf with its data embedded`);
     }
   }
+  // An accessor without data (zeros, unless sparse) costs its count, not the file's bytes: a
+  // 600-byte file asking for 30 million vertices filled 2.6 GB. Those with data are bounded by it.
+  const accessors = Array.isArray(json.accessors) ? (json.accessors as unknown[]) : [];
+  for (let a = 0; a < accessors.length; a++) {
+    const accessor = accessors[a];
+    if (!isRecord(accessor) || accessor.bufferView !== undefined) continue;
+    const count = accessor.count;
+    if (typeof count === 'number' && count > MAX_GLTF_VERTICES) {
+      return failure(`${name}: accessor ${a} asks for ${count.toLocaleString('en-US')} elements with no data, more than the ${MAX_GLTF_VERTICES.toLocaleString('en-US')} this page reads`);
+    }
+  }
   for (const key of ['materials', 'textures', 'images', 'samplers']) delete json[key];
   if (Array.isArray(json.meshes)) {
     for (const mesh of json.meshes as unknown[]) {
@@ -140,22 +164,35 @@ async function gltfPayload(name: string, bytes: Uint8Array): Promise<Checked<Mes
     if (!url.startsWith('data:')) throw new Error('a glTF may not refer to separate files');
     return url;
   });
-  let scene: Object3D;
+  let scene: Object3D | undefined;
   try {
     scene = (await new GLTFLoader(manager).parseAsync(input.value, '')).scene;
   } catch (error) {
     const reason = error instanceof Error ? error.message : String(error);
     return failure(`${name}: not a readable glTF file (${reason.replace(/^THREE\.GLTFLoader: /, '').slice(0, 160)})`);
   }
+  // No scene (valid glTF: meshes placed by none, or "scene" naming one that is not there).
+  if (!scene) return failure(`${name}: the glTF file has no scene that places its meshes`);
   scene.updateMatrixWorld(true);
   const positions: number[] = [];
   const indices: number[] = [];
   const point = new Vector3();
+  let problem: string | null = null;
   scene.traverse((object) => {
-    if (!(object instanceof Mesh)) return;
+    if (problem || !(object instanceof Mesh)) return;
     const geometry = object.geometry as BufferGeometry;
     const position = geometry.getAttribute('position');
     if (!position) return;
+    const what = `mesh "${String(object.name || geometry.name || 'unnamed').slice(0, 40)}"`;
+    // Three floats per vertex (or small integers, quantized); anything else is misread.
+    if (position.itemSize !== 3 || position.array instanceof Uint32Array || position.array instanceof Int32Array) {
+      problem = `${what} has positions that are not 3 numbers per vertex of a type glTF allows`;
+      return;
+    }
+    if (positions.length / 3 + position.count > MAX_GLTF_VERTICES) {
+      problem = `the glTF file places more than ${MAX_GLTF_VERTICES.toLocaleString('en-US')} vertices (its meshes, with every node that places them)`;
+      return;
+    }
     const base = positions.length / 3;
     for (let i = 0; i < position.count; i++) {
       point.fromBufferAttribute(position, i).applyMatrix4(object.matrixWorld);
@@ -164,9 +201,18 @@ async function gltfPayload(name: string, bytes: Uint8Array): Promise<Checked<Mes
     const index = geometry.getIndex();
     const count = index ? index.count : position.count;
     for (let i = 0; i + 2 < count; i += 3) {
-      for (let corner = 0; corner < 3; corner++) indices.push(base + (index ? index.getX(i + corner) : i + corner));
+      for (let corner = 0; corner < 3; corner++) {
+        const v = index ? index.getX(i + corner) : i + corner;
+        // Past its own vertices an index would land on the next mesh's: refused, not joined.
+        if (!(v >= 0 && v < position.count)) {
+          problem = `${what} has an index ${v} past its ${position.count} vertices`;
+          return;
+        }
+        indices.push(base + v);
+      }
     }
   });
+  if (problem) return failure(`${name}: ${problem}`);
   if (indices.length === 0) return failure(`${name}: the glTF file has no triangle meshes`);
   return { ok: true, value: { kind: 'arrays', name, positions: Float64Array.from(positions), indices: Uint32Array.from(indices) } };
 }

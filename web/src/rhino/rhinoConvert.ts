@@ -142,6 +142,9 @@ export function describeNurbs(surface: Rhino.NurbsSurface, name: string, flip: b
 class Soup {
   positions: number[] = [];
   indices: number[] = [];
+  // Faces left out for naming a vertex their mesh does not have (rhino3dm keeps such a face):
+  // joined, it would land on the next object's vertices.
+  faultyFaces = 0;
 
   addMesh(mesh: Rhino.Mesh): number {
     const vertices = mesh.vertices();
@@ -152,9 +155,14 @@ class Soup {
       this.positions.push(p[0]!, p[1]!, p[2]!);
     }
     let triangles = 0;
+    const inside = (v: number): boolean => Number.isInteger(v) && v >= 0 && v < vertices.count;
     for (let i = 0; i < faces.count; i++) {
       const f = faces.get(i) as unknown as number[];
       const [a, b, c, d] = [f[0]!, f[1]!, f[2]!, f[3] ?? f[2]!];
+      if (![a, b, c, d].every(inside)) {
+        this.faultyFaces += 1;
+        continue;
+      }
       this.indices.push(base + a, base + b, base + c);
       triangles += 1;
       if (d !== c) {
@@ -206,10 +214,11 @@ function addBrep(c: Collector, brep: Rhino.Brep, label: string): boolean {
   const missing: number[] = [];
   for (let k = 0; k < faces.count; k++) {
     const face = faces.get(k);
-    const single = face.duplicateFace(false);
+    // Null for a damaged face: then it is taken as trimmed (its render mesh, else left out, said).
+    const single = face.duplicateFace(false) as Rhino.Brep | null;
     // Trivially trimmed: the face is its whole surface (rhino3dm's own test).
-    const untrimmed = single.isSurface;
-    free(single);
+    const untrimmed = single?.isSurface ?? false;
+    if (single) free(single);
     if (untrimmed) {
       const nurbs = nurbsOf(face.underlyingSurface());
       if (nurbs) {
@@ -276,9 +285,16 @@ function addObject(c: Collector, doc: Rhino.File3dm, info: RhinoObjectInfo): boo
     return brep ? addBrep(c, brep, label) : false;
   }
   if (kind === 'Mesh') {
+    const faulty = c.soup.faultyFaces;
     const triangles = c.soup.addMesh(geometry as unknown as Rhino.Mesh);
+    const left = c.soup.faultyFaces - faulty;
+    if (left > 0) c.problems.push(`${label}: ${plural(left, 'face')} naming vertices the mesh does not have: left out`);
+    if (triangles === 0) {
+      c.problems.push(`${label} is a mesh with no usable faces: left out`);
+      return false;
+    }
     c.notes.push(`${label}: mesh of ${plural(triangles, 'triangle')} used as it is`);
-    return triangles > 0;
+    return true;
   }
   if (kind === 'SubD') return addSubD(c, geometry as unknown as Rhino.SubD, label);
   c.problems.push(`${label} is a ${info.type}, not a surface: left out`);
