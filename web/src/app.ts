@@ -42,15 +42,12 @@ export class App {
   private readonly machine = new DesignMachine<LoadedMesh, OpenInfo, SolveResult>(MAX_HISTORY);
   // Said with the summary of solve `job` (DesignOpener: what an open or re-preparation dropped),
   // or with whatever ends it otherwise (a cancel, a refusal, a crash); a solve that replaces it
-  // on the same mesh says it instead.
+  // on the same mesh, or on the same design prepared or repaired anew, says it instead.
   private solveNotice: { job: number; mesh: LoadedMesh | null; text: string } | null = null;
   private readonly solver = new SolverClient(
     { onMessage: (message) => this.onWorkerMessage(message), onCrash: (crash) => this.onCrash(crash), onReplaced: () => this.onReplaced() },
     solverTestHooks(),
   );
-  // The solve whose panels the worker keeps for fabrication (its 'keep'): the result on show,
-  // unless the worker was replaced since; and a new worker solving that result again, quietly
-  // (restorePanels).
   private readonly viewer = new Viewer(element('viewport', HTMLElement));
   private readonly form = new ParamsForm();
   private readonly preparation = new PrepareControl();
@@ -386,15 +383,9 @@ export class App {
     console.warn(`flatfacet: the solver worker crashed: ${crash.message}`);
     const notice = this.takeSolveNotice(this.machine.solving?.job ?? null);
     const lost = this.machine.crashed(crash.meshKept);
-    this.showRestoring();
-    this.viewer.setSolving(false);
-    const solved = this.machine.solved;
-    if (solved) this.viewer.setClusters(solved.result.clusterIds);
-    this.opener.pendingNotice = null;
-    this.fabrication.workerLost();
+    this.showWorkLost();
     this.editor.workerReplaced();
-    this.status.resetProgress();
-    const parts = [crashMessage(solved !== null, crash.meshKept)];
+    const parts = [crashMessage(this.machine.solved !== null, crash.meshKept)];
     const takenBack = this.editor.repreparationLost(this.machine.opening === null);
     if (takenBack && crash.meshKept) parts.push(takenBackNote(takenBack));
     const lostOpen = this.forgetLostOpen(lost.lostOpening, crash.meshKept);
@@ -410,14 +401,8 @@ export class App {
   private onSolverDead(message: string): void {
     const notice = this.takeSolveNotice(this.machine.solving?.job ?? null);
     const lost = this.machine.solverDied();
-    this.viewer.setSolving(false);
-    const solved = this.machine.solved;
-    if (solved) this.viewer.setClusters(solved.result.clusterIds);
-    this.opener.pendingNotice = null;
-    this.showRestoring();
-    this.fabrication.workerLost();
+    this.showWorkLost();
     this.fabrication.sendDeferred(); // a request waiting is told the solver is gone
-    this.status.resetProgress();
     const parts = [message];
     const takenBack = this.editor.repreparationLost(true); // no answer will come
     if (takenBack && this.machine.mesh) parts.push(takenBackNote(takenBack));
@@ -426,6 +411,18 @@ export class App {
     const exportable = this.machine.canExport ? '; the panels on show can still be exported and shared' : '';
     this.status.error(`${parts.join('; ')}. Reload the page${exportable}.${notice ? ` ${notice}` : ''}`);
     this.updateButtons();
+  }
+
+  // What a lost worker was doing is gone from the page: the solve's live view (the result on
+  // show's clusters again), a message waiting for an open, a restore, a fabrication awaited.
+  private showWorkLost(): void {
+    this.viewer.setSolving(false);
+    const solved = this.machine.solved;
+    if (solved) this.viewer.setClusters(solved.result.clusterIds);
+    this.opener.pendingNotice = null;
+    this.showRestoring();
+    this.fabrication.workerLost();
+    this.status.resetProgress();
   }
 
   // After a worker was lost, the page shows the design on show again where an open lost with it

@@ -175,7 +175,11 @@ export function encodePayload(state: DesignState): Uint8Array {
 }
 
 export function encodeState(state: DesignState): Uint8Array {
-  return zlibSync(encodePayload(state), { level: 9 });
+  return compressPayload(encodePayload(state));
+}
+
+function compressPayload(payload: Uint8Array): Uint8Array {
+  return zlibSync(payload, { level: 9 });
 }
 
 // Adler-32 (RFC 1950), updated piece by piece; fflate's streaming Unzlib does not check it.
@@ -352,7 +356,7 @@ export function stateToHash(state: DesignState): string {
 }
 
 function payloadToHash(payload: Uint8Array): string {
-  return `#${HASH_PREFIX}${encodeBase64url(zlibSync(payload, { level: 9 }))}`;
+  return `#${HASH_PREFIX}${encodeBase64url(compressPayload(payload))}`;
 }
 
 // The hash of a design, or why it cannot travel in a link. The mesh size is checked before

@@ -239,8 +239,9 @@ export class SolverClient {
 // (the path a long step takes); ?crashAfterSteps=N makes the first worker crash N steps into
 // its second solve; ?crashOnPrepare=N or ?refuseOnPrepare=N (the latter wins when both are
 // given) makes its Nth 'prepare' request crash or be refused; ?failRestart=1 makes every
-// replacement worker fail to start; ?stepDelay=MS slows the first worker's solve steps. Only on a page served from this
-// machine (the tests', scripts/start.sh): a link to the site carrying one does nothing.
+// replacement worker fail to start; ?stepDelay=MS slows the first worker's solve steps. Only
+// on a page served from this machine (the tests', scripts/start.sh): a link to the site
+// carrying one does nothing.
 const LOOPBACK_HOSTS = new Set(['127.0.0.1', 'localhost', '[::1]']);
 
 export function solverTestHooks(): SolverOptions {
