@@ -258,6 +258,21 @@ test('a glTF never makes the page fetch: external URIs are refused, textures ski
     assert.deepEqual(requests.filter((url) => /mesh\.bin|texture\.png/.test(url)), [], 'not even to its own server');
   }));
 
+test('what the page leaves out of a glTF is said under the mesh', () =>
+  withPage(suite.url, async (page) => {
+    await waitForDone(page);
+    await setPanels(page, 4);
+    // The grid's vertices again as points, beside its triangles: they make no panels.
+    const meshes = [{ name: 'Grid', primitives: [{ attributes: { POSITION: 0 }, indices: 1 }, { attributes: { POSITION: 0 }, mode: 0 }] }];
+    const open = () => page.getByLabel('Open mesh').setInputFiles({ name: 'survey.gltf', mimeType: 'model/gltf+json', buffer: quadGltf({ meshes }) });
+    assert.equal(await solveAfter(page, open), 4);
+    assert.equal(await page.locator('#mesh-cleanup').textContent(), 'Read from the file: left out 1 point or line primitive (only triangles make panels).');
+    assert.ok(await page.locator('#mesh-cleanup').isVisible());
+    // Another file without anything left out: the sentence goes.
+    await solveAfter(page, () => page.getByLabel('Open mesh').setInputFiles({ name: 'grid.gltf', mimeType: 'model/gltf+json', buffer: quadGltf() }));
+    assert.equal(await page.locator('#mesh-cleanup').isVisible(), false);
+  }));
+
 test('a mesh too large for a link gets a clear message and no link', () =>
   withPage(suite.url, async (page) => {
     await waitForDone(page);

@@ -34,6 +34,7 @@ export interface LoadedMesh {
   label: string;
   fileName: string;
   info: MeshInfo;
+  read: string[]; // what the page's reader left out or applied (MeshPayload.read)
 }
 
 export interface OpenInfo {
@@ -53,6 +54,8 @@ export interface OpenInfo {
   // A link's fabrication settings, written once its mesh is on show (a refused link leaves
   // those of the design on show).
   fabrication?: FabricationSettings;
+  // MeshPayload.read, once the page has read the file (a re-preparation keeps its mesh's).
+  read?: string[];
 }
 
 export interface MeshBeforeRepair {
@@ -224,7 +227,7 @@ export class DesignOpener {
       return false;
     }
     const design = withPrepare(mesh.design, prepare);
-    const token = this.host.machine.beginOpen({ design, label: mesh.label, fileName: mesh.fileName, up: 'guess', params, history, solve: true, reprepare: how });
+    const token = this.host.machine.beginOpen({ design, label: mesh.label, fileName: mesh.fileName, up: 'guess', params, history, solve: true, reprepare: how, read: mesh.read });
     this.host.outputs.forgetLink();
     this.host.dropSolve();
     const job = this.host.solver.prepare(prepare ?? null, carry);
@@ -254,7 +257,8 @@ export class DesignOpener {
 
   private async open(design: DesignMesh, params: DesignParams, history: DesignParams[], options: OpenOptions): Promise<void> {
     const { example, label, fileName, up } = describeDesign(design);
-    const token = this.host.machine.beginOpen({ design, label, fileName, up, params, history, solve: options.solve, ...(options.repairOf ? { repairOf: options.repairOf } : {}), ...(options.fabrication ? { fabrication: options.fabrication } : {}) });
+    const info: OpenInfo = { design, label, fileName, up, params, history, solve: options.solve, ...(options.repairOf ? { repairOf: options.repairOf } : {}), ...(options.fabrication ? { fabrication: options.fabrication } : {}) };
+    const token = this.host.machine.beginOpen(info);
     this.lastOpen = { design, params, history, options };
     this.host.repair.hideOffer();
     if (!options.fromLink) this.host.outputs.forgetLink();
@@ -264,6 +268,7 @@ export class DesignOpener {
     if (!this.host.machine.isCurrentOpen(token)) return; // a later open won
     if (payload?.ok && design.prepare) payload.value.prepare = { ...design.prepare };
     if (payload?.ok && design.repair) payload.value.repair = { ...design.repair };
+    if (payload?.ok && payload.value.read) info.read = payload.value.read;
     if (!payload || !payload.ok) {
       this.host.machine.abandonOpen(token);
       this.failOpen(payload ? payload.message : 'nothing to open');
@@ -303,7 +308,7 @@ export class DesignOpener {
     // Prepared again: what the load said beyond the counts (a Rhino file's surfaces) stays.
     const previous = this.host.machine.mesh;
     const before = previous?.info;
-    const loaded = this.host.machine.loaded(job, (opening) => ({ design: opening.design, label: opening.label, fileName: opening.fileName, info: opening.reprepare && before ? { ...before, ...info } : info }));
+    const loaded = this.host.machine.loaded(job, (opening) => ({ design: opening.design, label: opening.label, fileName: opening.fileName, info: opening.reprepare && before ? { ...before, ...info } : info, read: opening.read ?? [] }));
     if (!loaded) return;
     const opening = loaded.info;
     this.host.viewer.setSurface(positions, indices, opening.up === 'guess' ? guessUpAxis(positions) : opening.up, opening.reprepare !== undefined);
@@ -322,7 +327,7 @@ export class DesignOpener {
     this.host.editor.meshLoaded(params, opening.design.prepare);
     this.host.preparation.show(opening.design); // what this mesh was prepared and repaired with
     this.host.repair.show(opening.design);
-    showMeshInfo(loaded.mesh.label, loaded.mesh.info);
+    showMeshInfo(loaded.mesh.label, loaded.mesh.info, loaded.mesh.read);
     rhinoLoaded(loaded.mesh.fileName, loaded.mesh.info);
     renderQuality(this.host.statsBox, null);
     this.host.fabrication.panelsChanged(false);
@@ -353,7 +358,7 @@ export class DesignOpener {
   // history step, and the solve (from the prepared mesh: no warm start across meshes).
   private preparedAgain(opening: OpenInfo, newest: boolean, carried: Carry | undefined, previous: LoadedMesh | null): void {
     const mesh = this.host.machine.mesh!;
-    showMeshInfo(mesh.label, mesh.info);
+    showMeshInfo(mesh.label, mesh.info, mesh.read);
     this.host.preparation.show(opening.design);
     this.host.repair.show(opening.design);
     renderQuality(this.host.statsBox, null);

@@ -43,14 +43,18 @@ export class ExamplePicker {
   }
 }
 
-// The caption over the view and the repairs the core made on load.
-export function showMeshInfo(label: string, info: MeshInfo): void {
+// The caption over the view, what the page's reader left out or applied (a glTF's lines, its
+// other scenes) and the repairs the core made on load.
+export function showMeshInfo(label: string, info: MeshInfo, read: string[]): void {
   element('mesh-title', HTMLSpanElement).textContent = label;
   const loops = info.boundaryLoops === 1 ? '1 boundary loop' : `${info.boundaryLoops} boundary loops`;
   element('mesh-details', HTMLSpanElement).textContent = `${info.triangles.toLocaleString('en')} triangles · ${info.vertices.toLocaleString('en')} vertices · ${loops} · genus ${info.genus}`;
   const cleanup = element('mesh-cleanup', HTMLParagraphElement);
-  cleanup.textContent = info.cleanup.length > 0 ? `Repaired on load: ${info.cleanup.join('; ')}.` : '';
-  cleanup.hidden = info.cleanup.length === 0;
+  const sentences = [];
+  if (read.length > 0) sentences.push(`Read from the file: ${read.join('; ')}.`);
+  if (info.cleanup.length > 0) sentences.push(`Repaired on load: ${info.cleanup.join('; ')}.`);
+  cleanup.textContent = sentences.join(' ');
+  cleanup.hidden = sentences.length === 0;
   const prepared = element('mesh-prepared', HTMLParagraphElement);
   prepared.textContent = info.prepared.length > 0 ? `Prepared for the panels: ${info.prepared.join('; ')}.` : '';
   prepared.hidden = info.prepared.length === 0;

@@ -23,6 +23,9 @@ export type MeshPayload = (
   // How the load repairs the mesh (Session.setRepair; absent: no holes filled, non-manifold
   // edges refused). Part of the payload for the same reason.
   repair?: MeshRepair;
+  // What the page's own reader left out or applied (a glTF's lines, its other scenes, its
+  // instances), one phrase each, said under the mesh. The worker does not read it.
+  read?: string[];
 };
 
 // What a re-preparation carries from the mesh before to the new one: the painted density
