@@ -1,7 +1,8 @@
 // The page's Rhino reading (web/src/rhino/rhinoConvert.ts, compiled to build/web-tests by
 // `npm run test:web`) on hostile files, with rhino3dm itself: a mesh face naming a vertex its
 // mesh does not have (rhino3dm keeps such a face) is left out, said, instead of joining the
-// next object's vertices, and a mesh with no usable face is not said to be "used as it is".
+// next object's vertices, a mesh with no usable face is not said to be "used as it is", and an
+// empty Brep or an extrusion with no Brep form is said, not dropped without a word.
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
 import rhino3dm from 'rhino3dm';
@@ -30,4 +31,25 @@ test('a Rhino mesh face naming a vertex its mesh lacks is left out and said', ()
   const none = prepareRhino(rh, fileOf([{ vertices: first.vertices, faces: [[0, 1, 9]] }]), 'none.3dm', 'all', 1000);
   assert.equal(none.ok, false);
   assert.match(none.message, /none\.3dm: nothing to panel: .*'Mesh 1' is a mesh with no usable faces: left out/);
+});
+
+test('an empty Brep and an extrusion with no Brep form are said, not dropped without a word', () => {
+  const doc = new rh.File3dm();
+  doc.objects().add(new rh.Brep(), new rh.ObjectAttributes());
+  doc.objects().add(new rh.Extrusion(), new rh.ObjectAttributes());
+  const mesh = new rh.Mesh();
+  for (const v of [[0, 0, 0], [1, 0, 0], [0, 1, 0]]) mesh.vertices().add(...v);
+  mesh.faces().addTriFace(0, 1, 2);
+  doc.objects().add(mesh, new rh.ObjectAttributes());
+  const file = rh.File3dm.fromByteArray(doc.toByteArray());
+  const prepared = prepareRhino(rh, file, 'hollow.3dm', 'all', 1000);
+  assert.ok(prepared.ok, prepared.message);
+  const notes = prepared.value.notes.join(' | ');
+  assert.match(notes, /'Brep 1' is a Brep with no faces: left out/);
+  assert.match(notes, /'Extrusion 1' is an extrusion rhino3dm cannot turn into a Brep: left out/);
+  assert.equal(prepared.value.objects, 1);
+  // Alone, they are the refusal's reason.
+  const alone = prepareRhino(rh, file, 'hollow.3dm', 0, 1000);
+  assert.equal(alone.ok, false);
+  assert.match(alone.message, /hollow\.3dm: nothing to panel: 'Brep 1' is a Brep with no faces/);
 });

@@ -194,6 +194,10 @@ function renderMesh(c: Collector, face: Rhino.BrepFace): Rhino.Mesh | null {
 
 function addBrep(c: Collector, brep: Rhino.Brep, label: string): boolean {
   const faces = brep.faces();
+  if (faces.count === 0) {
+    c.problems.push(`${label} is a Brep with no faces: left out`);
+    return false;
+  }
   // A polysurface the file has meshed in full: Rhino's render meshes of neighbouring faces share
   // their edge vertices, so they join, which separately tessellated faces would not.
   if (faces.count > 1) {
@@ -205,8 +209,12 @@ function addBrep(c: Collector, brep: Rhino.Brep, label: string): boolean {
     if (meshes.length === faces.count) {
       let triangles = 0;
       for (const mesh of meshes) triangles += c.soup.addMesh(mesh);
+      if (triangles === 0) {
+        c.problems.push(`${label}: the render meshes of its ${faces.count} faces have no usable triangles: left out`);
+        return false;
+      }
       c.notes.push(`${label}: the render meshes of its ${faces.count} faces from the file (${plural(triangles, 'triangle')}; Rhino meshes a polysurface so that its faces meet)`);
-      return triangles > 0;
+      return true;
     }
   }
   const used: number[] = [];
@@ -281,8 +289,16 @@ function addObject(c: Collector, doc: Rhino.File3dm, info: RhinoObjectInfo): boo
   }
   if (kind === 'Brep') return addBrep(c, geometry as unknown as Rhino.Brep, label);
   if (kind === 'Extrusion') {
-    const brep = (geometry as unknown as Rhino.Extrusion).toBrep(true);
-    return brep ? addBrep(c, brep, label) : false;
+    const brep = (geometry as unknown as Rhino.Extrusion).toBrep(true) as Rhino.Brep | null;
+    if (!brep) {
+      c.problems.push(`${label} is an extrusion rhino3dm cannot turn into a Brep: left out (convert it to a polysurface in Rhino)`);
+      return false;
+    }
+    try {
+      return addBrep(c, brep, label);
+    } finally {
+      free(brep);
+    }
   }
   if (kind === 'Mesh') {
     const faulty = c.soup.faultyFaces;
