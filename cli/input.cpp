@@ -1,6 +1,7 @@
 #include "cli/input.h"
 
 #include <chrono>
+#include <cstdio>
 
 #include "cli/args.h"
 #include "core/mesh/face_map.h"
@@ -51,6 +52,9 @@ LoadedInput load_input(const std::string& path, const CleanOptions& options) {
                      std::to_string(e.largest_part_faces) + " of " + std::to_string(e.total_faces) + " faces)");
   }
   in.clean_seconds = seconds_since(t0);
+  // Said at once, not only in the report: the run would otherwise panel the wrong part in silence.
+  const std::string doubt = in.clean.report.kept_part_doubt();
+  if (!doubt.empty()) std::fprintf(stderr, "flatfacet: warning: --largest-part: %s\n", doubt.c_str());
   return in;
 }
 

@@ -268,6 +268,7 @@ std::vector<char> keep_manifold_part(std::vector<Triangle>& tris, std::vector<in
   report.faces_before_cut = total;
   report.faces_outside_part = total - part_faces;
   report.parts_dropped = part.sheets - 1;
+  report.most_faces_dropped_part = part.most_faces_left_out;
   std::vector<Triangle> part_tris(part.faces.size());
   std::vector<int> part_kept(part.faces.size());
   for (size_t k = 0; k < part.faces.size(); ++k) {
@@ -292,6 +293,15 @@ std::string count_of(int n, const char* singular, const char* plural) {
 
 }  // namespace
 
+std::string CleanReport::kept_part_doubt() const {
+  const int kept_faces = faces_before_cut - faces_outside_part;
+  if (parts_dropped == 0 || most_faces_dropped_part <= kept_faces) return {};
+  return "the part kept is the largest by area, yet a dropped part has " +
+         count_of(most_faces_dropped_part, "face", "faces") + " to its " + std::to_string(kept_faces) +
+         ": if that part is the model, the one kept is a stray piece (far off, or a corrupted coordinate) to "
+         "delete in the modeller";
+}
+
 std::vector<std::string> CleanReport::messages() const {
   std::vector<std::string> out;
   if (welded_vertices > 0) {
@@ -314,6 +324,8 @@ std::vector<std::string> CleanReport::messages() const {
                        : std::string()) +
                   "dropped " + count_of(faces_outside_part, "face", "faces") + " in " +
                   count_of(parts_dropped, "other part", "other parts"));
+    const std::string doubt = kept_part_doubt();
+    if (!doubt.empty()) out.back() += "; " + doubt;
   }
   if (slivers_removed > 0) {
     out.push_back("removed " + count_of(slivers_removed, "sliver face", "sliver faces") +

@@ -54,6 +54,7 @@ struct CleanReport {
   int faces_before_cut = 0;
   int faces_outside_part = 0;
   int parts_dropped = 0;
+  int most_faces_dropped_part = 0;  // the faces of the dropped part with the most of them
   int nonmanifold_vertices_split = 0;
   int faces_flipped = 0;  // to make orientation consistent
   int unreferenced_vertices_removed = 0;
@@ -61,6 +62,10 @@ struct CleanReport {
 
   // One human sentence per repair that happened, e.g. "welded 12 duplicate vertices".
   std::vector<std::string> messages() const;
+  // Largest means largest by area, so a stray triangle far off (or one corrupted coordinate)
+  // outweighs the model itself: then the part kept has fewer faces than one dropped, and
+  // this says so (empty otherwise; also the end of messages()' sentence on the part).
+  std::string kept_part_doubt() const;
 };
 
 struct CleanMesh {

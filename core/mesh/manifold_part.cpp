@@ -1,9 +1,12 @@
 #include "core/mesh/manifold_part.h"
 
 #include <Eigen/Geometry>
+#include <algorithm>
+#include <limits>
 #include <numeric>
 
 #include "core/mesh/half_edges.h"
+#include "core/mesh/part_spread.h"
 #include "core/util/union_find.h"
 
 namespace ff::detail {
@@ -51,12 +54,35 @@ ManifoldPart largest_manifold_part(const std::vector<Triangle>& tris, const std:
       sheets += count[r]++ == 0 ? 1 : 0;
     }
     if (first_round) result.sheets = sheets;
+    // A sheet more than kMaxPartSpread times the size of the sheet with the most faces is a
+    // stray piece (a triangle with a corner typed 1e6 away), however large its area: not kept.
+    std::vector<Vec3> lo(sub.size(), Vec3::Constant(std::numeric_limits<double>::infinity()));
+    std::vector<Vec3> hi(sub.size(), -Vec3::Constant(std::numeric_limits<double>::infinity()));
+    int most = -1;
+    for (size_t f = 0; f < sub.size(); ++f) {
+      if (drop[f]) continue;
+      const auto r = static_cast<size_t>(union_find_root(parent, static_cast<int>(f)));
+      for (const int v : sub[f]) {
+        lo[r] = lo[r].cwiseMin(positions[static_cast<size_t>(v)]);
+        hi[r] = hi[r].cwiseMax(positions[static_cast<size_t>(v)]);
+      }
+    }
+    for (size_t r = 0; r < sub.size(); ++r) {
+      if (count[r] > 0 && (most < 0 || count[r] > count[static_cast<size_t>(most)])) most = static_cast<int>(r);
+    }
+    const auto diagonal = [&](size_t r) { return (hi[r] - lo[r]).norm(); };
+    const double sane = most < 0 ? 0.0 : kMaxPartSpread * diagonal(static_cast<size_t>(most));
     // Roots are the lowest face of their sheet, so scanning up breaks ties by it.
     int best = -1;
     for (size_t r = 0; r < sub.size(); ++r) {
-      if (count[r] == 0) continue;
+      if (count[r] == 0 || diagonal(r) > sane) continue;
       const auto b = static_cast<size_t>(best);
       if (best < 0 || area[r] > area[b] || (area[r] == area[b] && count[r] > count[b])) best = static_cast<int>(r);
+    }
+    if (first_round) {
+      for (size_t r = 0; r < sub.size(); ++r) {
+        if (static_cast<int>(r) != best) result.most_faces_left_out = std::max(result.most_faces_left_out, count[r]);
+      }
     }
     std::vector<int> kept;
     for (size_t f = 0; f < sub.size(); ++f) {

@@ -52,9 +52,14 @@ void require_compact_parts(const TriMesh& mesh, const std::vector<int>& root) {
       part.hi = part.hi.cwiseMax(mesh.positions[static_cast<size_t>(v)]);
     }
   }
+  // The model is the part with the most triangles (ties: the larger): a stray triangle can be
+  // larger than the model itself (one corner typed 1e6 away), and measured from it the model
+  // looked close.
   size_t largest = 0;
-  for (size_t p = 0; p < parts.size(); ++p)
-    if (parts[p].diagonal() > parts[largest].diagonal()) largest = p;
+  for (size_t p = 0; p < parts.size(); ++p) {
+    const Part &a = parts[p], &b = parts[largest];
+    if (a.triangles > b.triangles || (a.triangles == b.triangles && a.diagonal() > b.diagonal())) largest = p;
+  }
   const double size = parts[largest].diagonal();
   if (!(size > 0.0) || !(whole > kMaxPartSpread * size)) return;
   size_t farthest = largest;
@@ -68,9 +73,10 @@ void require_compact_parts(const TriMesh& mesh, const std::vector<int>& root) {
   const std::string message = "a part of " + std::to_string(far.triangles) +
                               (far.triangles == 1 ? " triangle" : " triangles") + " near " +
                               detail::format_point(far.middle()) + " lies " + short_number(distance / size) +
-                              " times the largest part's size (" + short_number(size) +
-                              ") away from it: a stray piece? The mesh may span at most " +
-                              short_number(kMaxPartSpread) + " times its largest part; delete the far-off part";
+                              " times the main part's size (" + short_number(size) +
+                              ", the part with the most triangles) away from it: a stray piece? The mesh may span "
+                              "at most " +
+                              short_number(kMaxPartSpread) + " times its main part; delete the far-off part";
   // What keeping the largest part would keep: the part of largest area (manifold_part.h).
   const size_t kept = detail::largest_manifold_part(mesh.triangles, mesh.positions).faces.size();
   throw LargestPartError(message, static_cast<int>(kept), static_cast<int>(mesh.triangles.size()));

@@ -54,7 +54,7 @@ test('a stray part far off is named and offered the largest part, which solves',
     await waitForDone(page);
     const offer = page.getByRole('button', { name: 'Use largest manifold part' });
     const message = await errorAfter(page, () => upload(page, 'stray.obj', cubeAndFarTriangleObj()));
-    assert.match(message, /a part of 1 triangle near \(1e\+08, 0\.005, 0\) lies .* times the largest part's size/);
+    assert.match(message, /a part of 1 triangle near \(1e\+08, 0\.005, 0\) lies .* times the main part's size/);
     assert.match(message, /Use the largest manifold part \(12 of 13 faces\)\?/);
     assert.equal(await offer.isVisible(), true);
     assert.equal(await solveAfter(page, () => offer.click()), PANELS);

@@ -723,7 +723,7 @@ for _ in range(nf):
 faces.append(f"3 {nv} {nv + 1} {nv + 2}")
 open(sys.argv[1], "w").write(f"OFF\n{nv + 3} {nf + 1} 0\n" + "\n".join(rows + faces) + "\n")
 PY
-expect_error 2 "a part of 1 triangle near \(1e\+08, 0.005, 0\) lies .* times the largest part's size .*delete the far-off part, or rerun with --largest-part to keep only the largest part \(1536 of 1537 faces\)$" \
+expect_error 2 "a part of 1 triangle near \(1e\+08, 0.005, 0\) lies .* times the main part's size .*delete the far-off part, or rerun with --largest-part to keep only the largest part \(1536 of 1537 faces\)$" \
   remesh "$tmp/farpart.off" --panels 30 --out "$tmp/never.obj" --report "$tmp/never.json"
 # The offer works: --largest-part drops the stray triangle and solves epcot (its 1536 triangles).
 "$bin" remesh "$tmp/farpart.off" --panels 30 --largest-part --report "$tmp/farpart.json" >/dev/null 2>"$tmp/err.txt" &&
@@ -734,6 +734,25 @@ assert r['triangles'] == 1536 and r['components'] == 1 and r['status'] == 'valid
 assert r['repair']['parts_dropped'] == 1 and r['repair']['faces_outside_part'] == 1 and r['repair']['nonmanifold_edges_cut'] == 0, r['repair']
 assert r['cleanup'] == ['kept the largest part (1536 of 1537 faces): dropped 1 face in 1 other part'], r['cleanup']
 " "$tmp/farpart.json" && ok || bad "--largest-part on a far-off part: $(cat "$tmp/err.txt")"
+
+# A stray triangle larger than the model (corners typed 100 apart, epcot is 3.6 across): the
+# largest part by area, so --largest-part keeps it, and says at once that a dropped part has
+# more faces (it panelled the triangle in silence, exit 0).
+cp "$e" "$tmp/bigpart.off"
+python3 - "$tmp/bigpart.off" <<'PY'
+import sys
+t = open(sys.argv[1]).read().split()
+nv, nf = int(t[1]), int(t[2])
+rows = [" ".join(t[4 + 3 * i:7 + 3 * i]) for i in range(nv)] + ["100 0 0", "0 100 0", "0 0 100"]
+faces, p = [], 4 + 3 * nv
+for _ in range(nf):
+    k = int(t[p]); faces.append(" ".join(t[p:p + 1 + k])); p += 1 + k
+faces.append(f"3 {nv} {nv + 1} {nv + 2}")
+open(sys.argv[1], "w").write(f"OFF\n{nv + 3} {nf + 1} 0\n" + "\n".join(rows + faces) + "\n")
+PY
+"$bin" remesh "$tmp/bigpart.off" --panels 30 --largest-part --out "$tmp/bigpart.obj" 2>"$tmp/err.txt" >/dev/null
+grep -q "^flatfacet: warning: --largest-part: the part kept is the largest by area, yet a dropped part has 1536 faces to its 1: if that part is the model, the one kept is a stray piece" "$tmp/err.txt" &&
+  ok || bad "--largest-part keeping a stray triangle: stderr '$(cat "$tmp/err.txt")'"
 
 # A missing triangle between two panels stays a hole (fuzz_cli.py found it closed, exit 0).
 python3 - "$e" "$tmp/holed1.off" <<'PY'
