@@ -5,6 +5,7 @@
 #include <cmath>
 #include <utility>
 
+#include "core/fabricate/number_text.h"
 #include "core/fabricate/solid_panels.h"
 #include "core/fabricate/units.h"
 #include "core/util/error.h"
@@ -47,6 +48,10 @@ std::vector<std::pair<std::string, double>> panel_thickness_option(const std::st
       throw UsageError("--panel-thickness: expected LABEL=T,... (e.g. P3=0.05,P7=0.03), got '" + item + "'");
     const double t = parse_double(item.substr(eq + 1), "--panel-thickness " + item.substr(0, eq));
     if (!(t > 0.0)) throw UsageError("--panel-thickness: expected a positive thickness for " + item.substr(0, eq));
+    for (const auto& [label, given] : out)
+      if (label == item.substr(0, eq))
+        throw UsageError("--panel-thickness: " + label + " is given twice (" + number_text(given, 6) + " and " +
+                         number_text(t, 6) + ")");
     out.emplace_back(item.substr(0, eq), t);
     start = comma + 1;
   }

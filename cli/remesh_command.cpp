@@ -185,9 +185,12 @@ Options parse_options(const std::vector<std::string>& argv) {
 }
 
 // One stderr line naming the parts whose inner face folds over (the first eight of them).
-std::string folded_parts_line(const std::vector<std::string>& labels, double thickness, const std::string& units) {
+std::string folded_parts_line(const std::vector<std::string>& labels, double thickness, const std::string& units,
+                              bool per_panel) {
+  // With --panel-thickness a folded part may have its own thickness, not the default.
   std::string line = "flatfacet remesh: at a thickness of " + number_text(thickness, 6) + " " + units +
-                     " the inner face folds over on " + std::to_string(labels.size()) +
+                     (per_panel ? " (and those of --panel-thickness)" : "") + " the inner face folds over on " +
+                     std::to_string(labels.size()) +
                      (labels.size() == 1 ? " part (" : " parts (");
   for (size_t k = 0; k < labels.size() && k < 8; ++k) line += (k ? ", " : "") + labels[k];
   if (labels.size() > 8) line += ", ...";
@@ -274,7 +277,8 @@ int run_remesh(const std::vector<std::string>& argv) {
   // thinner material or larger panels.
   if (!folded.empty()) {
     const FabricationOptions& fab = o.fabrication.options;
-    std::fputs(folded_parts_line(folded, fab.thickness, unit_name(fab.units)).c_str(), stderr);
+    std::fputs(folded_parts_line(folded, fab.thickness, unit_name(fab.units), !fab.panel_thickness.empty()).c_str(),
+               stderr);
   }
   return result_valid(remesher.panels(), quality) && folded.empty() ? 0 : 3;
 }

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <string>
 
+#include "core/fabricate/number_text.h"
 #include "core/fabricate/sheet_drawing.h"
 #include "core/fabricate/sheet_nesting.h"
 #include "core/fabricate/sheet_packing.h"
@@ -15,20 +16,28 @@
 namespace ff {
 namespace {
 
+// The largest sheet side, in the sheet's units: a kilometre even in millimetres.
+constexpr double kMaxSheetSide = 1e9;
+
 void check_options(const SheetOptions& o) {
   auto bad = [](double v) { return !std::isfinite(v); };
   if (bad(o.width) || bad(o.height) || o.width <= 0.0 || o.height <= 0.0) {
-    throw InputError("sheet size must be two positive numbers, got " + format_number(o.width, 6) + " x " +
-                     format_number(o.height, 6));
+    throw InputError("sheet size must be two positive numbers, got " + number_text(o.width, 6) + " x " +
+                     number_text(o.height, 6));
+  }
+  // Past this the drawing's numbers (mm in the SVG) leave what a double holds; no sheet is so big.
+  if (o.width > kMaxSheetSide || o.height > kMaxSheetSide) {
+    throw InputError("sheet size " + number_text(o.width, 6) + " x " + number_text(o.height, 6) +
+                     " is larger than any sheet (at most " + number_text(kMaxSheetSide, 6) + " on a side)");
   }
   if (bad(o.margin) || o.margin < 0.0)
-    throw InputError("sheet margin must be zero or more, got " + format_number(o.margin, 6));
+    throw InputError("sheet margin must be zero or more, got " + number_text(o.margin, 6));
   if (bad(o.spacing) || o.spacing < 0.0) {
-    throw InputError("spacing between parts must be zero or more, got " + format_number(o.spacing, 6));
+    throw InputError("spacing between parts must be zero or more, got " + number_text(o.spacing, 6));
   }
   if (2.0 * o.margin >= std::min(o.width, o.height)) {
-    throw InputError("sheet margin " + format_number(o.margin, 6) + " leaves no room on a " +
-                     format_number(o.width, 6) + " x " + format_number(o.height, 6) + " sheet");
+    throw InputError("sheet margin " + number_text(o.margin, 6) + " leaves no room on a " +
+                     number_text(o.width, 6) + " x " + number_text(o.height, 6) + " sheet");
   }
 }
 
@@ -97,10 +106,12 @@ SheetLayout pack_outlines(const std::vector<PanelOutline>& outlines, const Sheet
     const BoxPlacement& b = boxes[i];
     if (b.sheet < 0) {
       const PartOrientation& o = parts[i][0];
-      throw InputError(name_of(outlines[i], i) + " (" + format_number(o.size.x(), 1) + " x " +
-                       format_number(o.size.y(), 1) + " " + options.units + " at its best orientation) fits no " +
-                       format_number(options.width, 1) + " x " + format_number(options.height, 1) + " " +
-                       options.units + " sheet with a margin of " + format_number(options.margin, 1));
+      // Four significant digits: rounded to one decimal, 1.343 x 1.229 m read as fitting 2.44 x 1.22.
+      throw InputError(name_of(outlines[i], i) + " (" + number_text(o.size.x(), 4) + " x " +
+                       number_text(o.size.y(), 4) + " " + options.units + " at its best orientation) fits no " +
+                       number_text(options.width, 4) + " x " + number_text(options.height, 4) + " " +
+                       options.units + " sheet with a margin of " + number_text(options.margin, 4) + " " +
+                       options.units);
     }
     layout.placed.push_back(to_placement(static_cast<int>(i), b, parts[i][b.orientation], options.margin));
     layout.sheets = std::max(layout.sheets, b.sheet + 1);

@@ -26,6 +26,22 @@ std::vector<double> corner_angles(const std::vector<Vec2>& poly) {
   return angles;
 }
 
+// Whether the inner face, drawn one corner per outer corner, cannot be cut as drawn: offset by
+// more than the panel can take, its edges pass each other. Then it turns clockwise or crosses
+// itself (bunny.off at 58 panels, 2 cm thick: 36 of 58), or, on a thin panel, an inner edge
+// runs against its outer edge while the face stays simple and counter-clockwise: a sliver
+// triangle's inner face is itself turned half round (YasIsland.off at 120 panels in glass,
+// 1 cm: the inner face of P74a 2.6 times its outer one), and one short edge of a larger panel
+// can flip alone (hyperboloid_s4.off at 150 panels, 1 unit outside: an inner corner 3 cm off).
+bool inner_face_folds(const std::vector<Vec2>& outer, const std::vector<Vec2>& inner) {
+  if (!(signed_area(inner) > 0.0) || !is_simple(inner, 0.0)) return true;
+  const size_t k = outer.size();
+  for (size_t i = 0; i < k; ++i) {
+    if (!((inner[(i + 1) % k] - inner[i]).dot(outer[(i + 1) % k] - outer[i]) > 0.0)) return true;
+  }
+  return false;
+}
+
 bool is_piece_of(const std::string& label, const std::string& base) {
   if (label.size() <= base.size() || label.compare(0, base.size(), base) != 0) return false;
   for (size_t i = base.size(); i < label.size(); ++i)
@@ -121,9 +137,7 @@ PartsList make_parts_list(const PanelMesh& pm, const FabricationOptions& options
     // projection onto the panel's plane.
     if (has_thickness) {
       for (const Vec3& x : thick.inner[p]) o.inner.push_back(frame.to_2d(x) * scale);
-      // Offset by more than the panel can take, its edges pass each other: the inner face
-      // turns clockwise or crosses itself (bunny.off at 58 panels, 2 cm thick: 36 of 58).
-      if (!(signed_area(o.inner) > 0.0) || !is_simple(o.inner, 0.0)) list.folded_inner_faces.push_back(o.label);
+      if (inner_face_folds(o.outer, o.inner)) list.folded_inner_faces.push_back(o.label);
     }
     for (size_t i = 0; i < poly.size(); ++i) {
       OutlineEdge e;

@@ -29,9 +29,11 @@ double readable_deg(double deg) {
 }  // namespace
 
 std::string format_number(double value, int decimals) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
-  std::string s(buffer);
+  // Sized to the number: "%.*f" of a large value has as many digits as its magnitude.
+  const int length = std::snprintf(nullptr, 0, "%.*f", decimals, value);
+  std::string s(static_cast<size_t>(std::max(length, 0)) + 1, '\0');
+  std::snprintf(s.data(), s.size(), "%.*f", decimals, value);
+  s.resize(static_cast<size_t>(std::max(length, 0)));
   if (s.find('.') != std::string::npos) {
     while (s.back() == '0') s.pop_back();
     if (s.back() == '.') s.pop_back();

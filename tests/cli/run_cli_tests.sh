@@ -414,7 +414,15 @@ expect_error 2 "sheets.*svg or .dxf" remesh "$e" --panels 10 --sheets "$tmp/neve
 expect_error 2 "sheet-size.*W,H" remesh "$e" --panels 10 --sheets "$tmp/never.svg" --sheet-size 100
 expect_error 2 "sheet-size needs --sheets" remesh "$e" --panels 10 --sheet-size 100,50 "${o[@]}"
 expect_error 2 "solid needs --thickness" remesh "$e" --panels 10 --solid "$tmp/never.obj"
-expect_error 2 "fits no" remesh "$e" --panels 10 --sheets "$tmp/never.svg" --sheet-size 0.3,0.3
+# Four significant digits and the unit, not one decimal: "1.3 x 1.2 m fits no 2.4 x 1.2 m sheet
+# with a margin of 0" contradicted itself (an audit of the fabrication outputs).
+expect_error 2 "panel P[0-9]+ \\([0-9.]+ x [0-9.]+ m at its best orientation\\) fits no 0.3 x 0.3 m sheet with a margin of 0.01 m$" \
+  remesh "$e" --panels 10 --sheets "$tmp/never.svg" --sheet-size 0.3,0.3
+# A sheet of 1e308 wrote width="infmm" and coordinates cut off at 63 digits, exit 0.
+expect_error 2 "sheet size 1e\\+308 x 1e\\+308 is larger than any sheet \\(at most 1e\\+09 on a side\\)" \
+  remesh "$e" --panels 10 --sheets "$tmp/never.svg" --sheet-size 1e308,1e308
+expect_error 2 "panel-thickness: P1 is given twice \\(0.002 and 0.003\\)" \
+  remesh "$e" --panels 10 --thickness 0.001 --panel-thickness P1=0.002,P1=0.003 --parts "$tmp/never.csv"
 expect_error 2 "same file" remesh "$e" --panels 10 --parts "$tmp/never.svg" --sheets "$tmp/never.svg"
 expect_error 2 "min-angle.*between 0 and 60" remesh "$e" --panels 10 --glass --min-angle=61 "${o[@]}"
 expect_error 2 "min-angle.*between 0 and 60" remesh "$e" --panels 10 --min-angle -1 "${o[@]}"

@@ -114,13 +114,38 @@ TEST(PartsList, CsvAndJson) {
 // bunny.off at 58 panels (about 3 cm each, chamfers up to 80 degrees at the ears): 2 cm
 // folds most of them, 20 micrometres none. (0.2 mm folds one: a corner of 178 degrees whose
 // two edges have chamfers of 46 and 76 degrees, where the exact inner corner runs 2 cm out.)
+// A thin triangle's inner face can turn half round and stay simple and counter-clockwise:
+// cow.off at 60 panels, 3 units thick, P35 (9.0, 15.9 and 24.6 long) was drawn with an inner
+// face 2.7 times its own area, every inner edge against its outer one, and not named folded
+// (found by an audit of the fabrication outputs).
+TEST(PartsList, AnInnerFaceTurnedHalfRoundIsFolded) {
+  const auto r = test::remeshed("cow.off", 60, 1);
+  FabricationOptions opt;
+  opt.thickness = 3.0;
+  const PartsList list = make_parts_list(r->panels(), opt);
+  const auto it = std::find_if(list.rows.begin(), list.rows.end(), [](const PartRow& row) { return row.outline.label == "P35"; });
+  ASSERT_NE(it, list.rows.end());
+  const PanelOutline& o = it->outline;
+  ASSERT_EQ(o.outer.size(), 3u);
+  EXPECT_GT(signed_area(o.inner), signed_area(o.outer));  // larger than the panel
+  EXPECT_TRUE(is_simple(o.inner, 0.0));                    // and still simple, counter-clockwise
+  for (size_t i = 0; i < 3; ++i) EXPECT_LT((o.inner[(i + 1) % 3] - o.inner[i]).dot(o.outer[(i + 1) % 3] - o.outer[i]), 0.0);
+  EXPECT_NE(std::find(list.folded_inner_faces.begin(), list.folded_inner_faces.end(), "P35"), list.folded_inner_faces.end());
+}
+
 TEST(PartsList, NamesThePartsWhoseInnerFaceFoldsOver) {
   const auto r = test::remeshed("bunny.off", 58, 1);
   const auto folded_by_hand = [](const PartsList& list) {
     std::vector<std::string> out;
     for (const PartRow& row : list.rows) {
       const std::vector<Vec2>& inner = row.outline.inner;
-      if (!(signed_area(inner) > 0.0) || !is_simple(inner, 0.0)) out.push_back(row.outline.label);
+      const std::vector<Vec2>& outer = row.outline.outer;
+      bool folded = !(signed_area(inner) > 0.0) || !is_simple(inner, 0.0);
+      for (size_t i = 0; i < outer.size(); ++i) {
+        const size_t j = (i + 1) % outer.size();
+        folded = folded || !((inner[j] - inner[i]).dot(outer[j] - outer[i]) > 0.0);
+      }
+      if (folded) out.push_back(row.outline.label);
     }
     return out;
   };
