@@ -408,3 +408,36 @@ test('a model far from the origin: the status line and the Planarity row say why
     assert.match(await row.getAttribute('title'), /far from the origin .* moved near the origin, the model gives flat panels/);
     await screenshot(page, 'planarity-far-from-origin');
   }));
+
+// Cancel during a solve on a mesh prepared for it (more panels than the mesh on show could
+// serve) left the page with no panels: the clusters half-way, Export OBJ off, "Cancelled."
+// (a review of the page). The design before comes back, prepared back and solved, as Undo
+// brings it: the very panels of before.
+test('Cancel after a preparation for more panels brings the last finished design back', () =>
+  withPage(suite.url, async (page) => {
+    assert.equal(await waitForDone(page), 300);
+    const before = (await download(page, 'Export OBJ')).text;
+    await setPanels(page, 3000);
+    await remesh(page);
+    await waitForProgress(page);
+    const since = await outcomes(page);
+    await page.getByRole('button', { name: 'Cancel' }).click();
+    await waitForStatus(page, /^Cancelled\. The last finished design is coming back/, 5000);
+    assert.equal(await waitForDone(page, since), 300);
+    assert.equal((await download(page, 'Export OBJ')).text, before);
+    assert.equal(await page.getByLabel('Panels', { exact: true }).inputValue(), '300');
+  }));
+
+// An Undo to a step that was never solved (typed, no Remesh) moves only the form: it says so,
+// or the move looks like it did nothing.
+test('an Undo to a step never solved says that only the form moved', () =>
+  withPage(suite.url, async (page) => {
+    assert.equal(await waitForDone(page), 300);
+    await setPanels(page, 200);
+    await page.getByLabel('Panels', { exact: true }).dispatchEvent('change');
+    await setPanels(page, 250);
+    assert.equal(await solveAfter(page, () => remesh(page)), 250);
+    await page.getByRole('button', { name: 'Undo' }).click();
+    assert.equal(await page.getByLabel('Panels', { exact: true }).inputValue(), '200');
+    assert.match(await statusText(page), /^Undo: the form is back to a step that was never solved; Remesh to solve it\. The panels on show stay as they are\.$/);
+  }));

@@ -458,7 +458,7 @@ test('the needle rounds are named in the progress line', async () => {
     assert.equal(await solveAfter(page, () => remesh(page), 120_000), 77);
     assert.equal(await statusText(page), 'Done: 77 panels');
     const texts = await page.evaluate(() => window.statusTexts);
-    const needle = texts.findIndex((text) => /^Solving: panels \d+ of \d+ · valid, but a corner is below 1°: more rounds to widen it · /.test(text));
+    const needle = texts.findIndex((text) => /^Solving: panel round \d+ of \d+ · valid, but a corner is below 1°: more rounds to widen it · /.test(text));
     assert.ok(needle >= 0, `the needle rounds are named in the progress line (${texts.length} texts)`);
     assert.ok(!texts.slice(0, needle).some((text) => text.includes('below 1°')), 'not before');
     // A needle counts as a problem in these rounds, but the line never says "invalid" beside "valid".

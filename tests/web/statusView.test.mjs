@@ -2,7 +2,7 @@
 // `npm run test:web`).
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
-import { invalidNote, needleNote, retryNote, solvedSummary } from '../../build/web-tests/statusView.js';
+import { invalidNote, needleNote, retryNote, solvedSummary, stageName } from '../../build/web-tests/statusView.js';
 
 // A retry from a new seeding (RemeshParams.retries) starts the stages over: the progress line
 // says why, so the bar going back does not look like a fault. The first solve says nothing.
@@ -50,4 +50,13 @@ test('the summary ends with "Done: N panels", the problems in front', () => {
     warning: true,
   });
   assert.deepEqual(solvedSummary({ ...result(0, 0), report: { panels: 40, invalid: [] } }), { text: 'Done: 40 panels', warning: false });
+});
+
+// "Solving: panels 1 of 100 · 1414 invalid" while solving 2,000 panels read as a panel count
+// (a review of the page): the stage counts rounds, and says so.
+test('the progress line names what its stage counts', () => {
+  assert.equal(stageName('Panels'), 'panel round');
+  assert.equal(stageName('Lloyd'), 'Lloyd iteration');
+  assert.equal(stageName('Seeding'), 'seeding');
+  assert.equal(stageName('Optimize'), 'optimize');
 });

@@ -81,6 +81,7 @@ export class App {
     selection: this.selection,
     requestExpression: (expression) => this.solver.expressionDensity(expression),
     error: (message) => this.status.error(message),
+    note: (message) => this.status.show(message),
     canEdit: () => this.machine.canRemesh,
     solvedChain: () => this.machine.solved?.chain ?? null,
     solving: () => this.machine.solving !== null,
@@ -248,6 +249,9 @@ export class App {
     this.status.show(`${notice ? `${notice} ` : ''}${solved ? 'Cancelled. The last finished design is shown.' : 'Cancelled.'}`);
     this.restorePanels(); // when the cancelled solve had replaced a restore
     this.updateButtons();
+    // No panels on show: the mesh was prepared anew for the cancelled step (more panels than
+    // it could serve). The design before it comes back as Undo brings it: prepared back, solved.
+    if (!solved && this.editor.backToSolved()) this.status.show(`${notice ? `${notice} ` : ''}Cancelled. The last finished design is coming back…`);
   }
 
   // A committed change during a solve goes to the worker at once and warm-starts there.

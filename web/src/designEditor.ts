@@ -40,6 +40,7 @@ export interface EditorHost {
   selection: PanelSelection; // the page's one selected panel
   requestExpression(expression: string): void; // its values per vertex, for the density map
   error(message: string): void;
+  note(message: string): void; // said in the status line
   canEdit(): boolean; // a mesh loaded, none opening
   solvedChain(): DesignParams[] | null; // the chain of the result on show, if reproducible
   solving(): boolean;
@@ -335,6 +336,19 @@ export class DesignEditor {
     // the edit list from the design before the first edit), the chain the same as replayed.
     if (step.chain && shown && !this.host.solving() && sameChain(compactChain([...shown, step.params]), step.chain)) this.host.remesh();
     else if (step.chain) this.host.replay(step.chain);
+    // Only the form moved: say so, or the move looks like it did nothing.
+    else this.host.note(`${move.move}: the form is back to a step that was never solved; Remesh to solve it. The panels on show stay as they are.`);
+  }
+
+  // A cancelled solve left no panels on show (its mesh was prepared for it) and its step was
+  // never solved: back to the step before it, as Undo, when that one was solved. False when
+  // there is none such.
+  backToSolved(): boolean {
+    const current = this.history.current;
+    const before = this.history.all[this.history.index - 1];
+    if (!current || current.chain !== null || !before?.chain) return false;
+    this.undo();
+    return this.repreparing !== null || this.host.solving();
   }
 
   private key(event: KeyboardEvent): void {

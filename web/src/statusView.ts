@@ -43,6 +43,19 @@ export function invalidNote(progress: Pick<Progress, 'invalidPanels' | 'needleRo
   return ` · ${count} ${count === 1 ? 'panel' : 'panels'} to mend (a corner below 1° counts)`;
 }
 
+// The stage as the progress line names it: the core's "Panels" counts panel rounds, which read
+// as a count of panels ("panels 1 of 100 · 1414 invalid" while solving 2,000 panels).
+export function stageName(stage: Progress['stage']): string {
+  switch (stage) {
+    case 'Lloyd':
+      return 'Lloyd iteration';
+    case 'Panels':
+      return 'panel round';
+    default:
+      return stage.toLowerCase();
+  }
+}
+
 export type StatusTone = 'info' | 'done' | 'error';
 
 export class StatusView {
@@ -97,8 +110,9 @@ export class StatusView {
     for (let i = 0; i < stageIndex && i < weights.length; i++) value += weights[i]!;
     if (stageIndex < weights.length) value += weights[stageIndex]! * within;
     this.progress.value = progress.done ? 1 : value;
-    this.label.textContent = progress.done ? 'done' : `${progress.stage} ${progress.iteration}/${progress.of}`;
-    this.show(`Solving: ${progress.stage.toLowerCase()} ${progress.iteration} of ${progress.of}${needleNote(progress)}${invalidNote(progress)}${retryNote(progress)} · ${elapsedSeconds.toFixed(1)} s`);
+    const stage = stageName(progress.stage);
+    this.label.textContent = progress.done ? 'done' : `${stage} ${progress.iteration}/${progress.of}`;
+    this.show(`Solving: ${stage} ${progress.iteration} of ${progress.of}${needleNote(progress)}${invalidNote(progress)}${retryNote(progress)} · ${elapsedSeconds.toFixed(1)} s`);
   }
 
   resetProgress(label = 'idle'): void {
