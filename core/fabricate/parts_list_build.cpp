@@ -3,6 +3,7 @@
 #include <string>
 
 #include "core/fabricate/parts_list.h"
+#include "core/fabricate/units.h"
 #include "core/panels/polygon2d.h"
 #include "core/util/angles.h"
 #include "core/util/error.h"
@@ -32,15 +33,21 @@ std::vector<double> corner_angles(const std::vector<Vec2>& poly) {
 // runs against its outer edge while the face stays simple and counter-clockwise: a sliver
 // triangle's inner face is itself turned half round (YasIsland.off at 120 panels in glass,
 // 1 cm: the inner face of P74a 2.6 times its outer one), and one short edge of a larger panel
-// can flip alone (hyperboloid_s4.off at 150 panels, 1 unit outside: an inner corner 3 cm off).
-bool inner_face_folds(const std::vector<Vec2>& outer, const std::vector<Vec2>& inner) {
+// can flip alone (hyperboloid_s4.off at 150 panels, 1 m outside: an inner corner 3 cm off).
+// A reversed edge up to `tolerance` long is a crossing of that size at one corner, within what
+// a cut is made to (a 0.26 mm edge of the helicoid at 40 panels, 20 mm thick: 0.5 mm).
+bool inner_face_folds(const std::vector<Vec2>& outer, const std::vector<Vec2>& inner, double tolerance) {
   if (!(signed_area(inner) > 0.0) || !is_simple(inner, 0.0)) return true;
   const size_t k = outer.size();
   for (size_t i = 0; i < k; ++i) {
-    if (!((inner[(i + 1) % k] - inner[i]).dot(outer[(i + 1) % k] - outer[i]) > 0.0)) return true;
+    const Vec2 along = inner[(i + 1) % k] - inner[i];
+    if (!(along.dot(outer[(i + 1) % k] - outer[i]) > 0.0) && !(along.norm() <= tolerance)) return true;
   }
   return false;
 }
+
+// The crossing a reversed inner edge may have (inner_face_folds): 1 mm, a cutting tolerance.
+constexpr double kFoldToleranceMm = 1.0;
 
 bool is_piece_of(const std::string& label, const std::string& base) {
   if (label.size() <= base.size() || label.compare(0, base.size(), base) != 0) return false;
@@ -137,7 +144,8 @@ PartsList make_parts_list(const PanelMesh& pm, const FabricationOptions& options
     // projection onto the panel's plane.
     if (has_thickness) {
       for (const Vec3& x : thick.inner[p]) o.inner.push_back(frame.to_2d(x) * scale);
-      if (inner_face_folds(o.outer, o.inner)) list.folded_inner_faces.push_back(o.label);
+      const double tolerance = kFoldToleranceMm * unit_scale(LengthUnit::Millimetre, options.units);
+      if (inner_face_folds(o.outer, o.inner, tolerance)) list.folded_inner_faces.push_back(o.label);
     }
     for (size_t i = 0; i < poly.size(); ++i) {
       OutlineEdge e;

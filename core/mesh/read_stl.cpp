@@ -195,11 +195,12 @@ RawMesh read_stl(std::string_view data) {
     return AsciiParser(skip_bom(data)).parse();
   }
   if (is_blank(data)) fail(kFormat, "file is empty");
+  // Text first: a short text file is not a truncated binary one (a note named .stl said so).
+  if (!binary_bytes) fail(kFormat, "text file does not start with 'solid' (not an ASCII STL)");
   if (data.size() < kHeaderBytes) {
     fail(kFormat, "truncated binary STL: expected at least " + std::to_string(kHeaderBytes) + " bytes, got " +
                       std::to_string(data.size()));
   }
-  if (!binary_bytes) fail(kFormat, "text file does not start with 'solid' (not an ASCII STL)");
   return read_binary(data);
 }
 

@@ -534,7 +534,7 @@ std::vector<BadInput> stl_cases() {
   return {
       {"Stl_Empty", M, "", "STL: file is empty", ""},
       {"Stl_Garbage", M, random_bytes(4096), "STL: truncated binary STL", "got 4096"},
-      {"Stl_TooShort", M, "short", "STL: truncated binary STL", "expected at least 84 bytes, got 5"},
+      {"Stl_TooShort", M, std::string("sh\0rt", 5), "STL: truncated binary STL", "expected at least 84 bytes, got 5"},
       {"Stl_TruncatedBinary", M, good.substr(0, good.size() - 7), "STL: truncated binary STL",
        "expected 134 bytes, got 127"},
       {"Stl_TrailingBytes", M, good + "xx", "STL: binary STL size mismatch", "expected 134 bytes, got 136"},
@@ -555,6 +555,9 @@ std::vector<BadInput> stl_cases() {
       {"Stl_NotStl", M,
        "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n# an OBJ file with an .stl name, long enough for a "
        "header\n",
+       "STL: text file does not start with 'solid'", ""},
+      // Short text: it said "truncated binary STL: expected at least 84 bytes, got 51".
+      {"Stl_ShortText", M, "notes about the roof, not a mesh\nsecond line\n",
        "STL: text file does not start with 'solid'", ""},
   };
 }

@@ -143,7 +143,8 @@ TEST(PartsList, NamesThePartsWhoseInnerFaceFoldsOver) {
       bool folded = !(signed_area(inner) > 0.0) || !is_simple(inner, 0.0);
       for (size_t i = 0; i < outer.size(); ++i) {
         const size_t j = (i + 1) % outer.size();
-        folded = folded || !((inner[j] - inner[i]).dot(outer[j] - outer[i]) > 0.0);
+        // Reversed by more than the 1 mm a cut is made to (the units are metres here).
+        folded = folded || (!((inner[j] - inner[i]).dot(outer[j] - outer[i]) > 0.0) && (inner[j] - inner[i]).norm() > 0.001);
       }
       if (folded) out.push_back(row.outline.label);
     }

@@ -169,7 +169,16 @@ test('parts folded by a thickness too large are listed by label and by panel', (
     const innerRing = [];
     for (let c = offsets[p]; c < offsets[p + 1]; c++) innerRing.push([0, 1, 2].map((k) => inner[3 * c + k]));
     const normal = newellNormal(outer);
-    const folded = !(signedArea(innerRing, normal) > 0 && isSimple(innerRing, normal));
+    // Clockwise, self-crossing, or an inner edge running against its outer edge (a thin part's
+    // inner face turned half round stays simple and counter-clockwise).
+    const reversed = outer.some((a, i) => {
+      const b = outer[(i + 1) % outer.length];
+      const c = innerRing[i];
+      const d = innerRing[(i + 1) % innerRing.length];
+      // By more than the 1 mm a cut is made to (the mesh is in metres).
+      return !((d[0] - c[0]) * (b[0] - a[0]) + (d[1] - c[1]) * (b[1] - a[1]) + (d[2] - c[2]) * (b[2] - a[2]) > 0) && Math.hypot(d[0] - c[0], d[1] - c[1], d[2] - c[2]) > 0.001;
+    });
+    const folded = !(signedArea(innerRing, normal) > 0 && isSimple(innerRing, normal)) || reversed;
     assert.equal(spread.foldedPanels.includes(p), folded, `panel P${p + 1}`);
   }
   s.delete();
