@@ -154,6 +154,10 @@ test('density presets fill the expression, undo takes it back without a solve, a
     message = await errorAfter(page, () => remesh(page));
     assert.match(message, /Density expression uses an unknown name "alert"/);
     assert.equal(await expression.getAttribute('aria-invalid'), 'true');
+    // Said when committed, not only at Remesh (a review of the page: an outline, no words).
+    await expression.fill('1 + nope');
+    message = await errorAfter(page, () => expression.press('Tab'));
+    assert.match(message, /Density expression uses an unknown name "nope"/);
     assert.equal(await page.evaluate(() => document.body.dataset.solving), 'false', 'nothing went to the solver');
     await screenshot(page, 'density-expression');
   });

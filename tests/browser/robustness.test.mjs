@@ -441,3 +441,14 @@ test('an Undo to a step never solved says that only the form moved', () =>
     assert.equal(await page.getByLabel('Panels', { exact: true }).inputValue(), '200');
     assert.match(await statusText(page), /^Undo: the form is back to a step that was never solved; Remesh to solve it\. The panels on show stay as they are\.$/);
   }));
+
+// A photo said "expected .obj, .off, .stl or .ply" (the core's formats), though the page reads
+// glTF and Rhino too (a review of the page): the page refuses it by its own list.
+test('a file of another kind is refused with the formats the page reads', () =>
+  withPage(suite.url, async (page) => {
+    assert.equal(await waitForDone(page), 300);
+    const png = Buffer.from([0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a, 0, 0, 0, 13]);
+    const message = await errorAfter(page, () => page.getByLabel('Open mesh').setInputFiles({ name: 'photo.png', mimeType: 'image/png', buffer: png }));
+    assert.equal(message, 'Error: photo.png: not a mesh file this page reads (OBJ, OFF, STL, PLY, glTF/GLB or Rhino .3dm)');
+    assert.match(await page.locator('#mesh-title').textContent(), /Hyperboloid/, 'the design on show stays');
+  }));

@@ -52,6 +52,16 @@ test('the summary ends with "Done: N panels", the problems in front', () => {
   assert.deepEqual(solvedSummary({ ...result(0, 0), report: { panels: 40, invalid: [] } }), { text: 'Done: 40 panels', warning: false });
 });
 
+// "Done: 197 panels" after a solve for 120 in glass mode read as a fault (a review of the page).
+test('glass mode says that it cut panels into pieces', () => {
+  const clusterIds = Int32Array.from([0, 0, 1, 2, 2, -1]);
+  const glass = { report: { panels: 5, glass: true }, clusterIds, panelOffsets: [], problems: { invalidPanels: [], unbuiltClusters: [] } };
+  assert.deepEqual(solvedSummary(glass), { text: 'Glass mode cut the concave ones of 3 panels into convex pieces. Done: 5 panels', warning: false });
+  // Nothing cut (every panel convex), or no glass mode: nothing said.
+  assert.equal(solvedSummary({ ...glass, report: { panels: 3, glass: true } }).text, 'Done: 3 panels');
+  assert.equal(solvedSummary({ ...glass, report: { panels: 5, glass: false } }).text, 'Done: 5 panels');
+});
+
 // "Solving: panels 1 of 100 · 1414 invalid" while solving 2,000 panels read as a panel count
 // (a review of the page): the stage counts rounds, and says so.
 test('the progress line names what its stage counts', () => {

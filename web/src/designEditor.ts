@@ -278,6 +278,9 @@ export class DesignEditor {
     // parameters. After an Undo or Redo, surfaceChanged records it once the mesh is on show;
     // an open starts its own history, and Remesh reads the form either way.
     if (this.repreparing || !this.host.canEdit()) return;
+    // A value refused is said when it is committed (its input is marked), not only at Remesh;
+    // during a solve App.parametersChanged says it.
+    if (!read.ok && !this.host.solving()) this.host.error(read.message);
     if (!read.ok || !current || sameParams(current.params, read.value)) return;
     this.history.push({ kind: 'params', params: read.value, chain: null, count: null, prepare: this.host.prepared() });
     this.prune();

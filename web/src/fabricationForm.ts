@@ -16,6 +16,7 @@ export class FabricationForm {
   private readonly boundaryCut = element('fab-boundary-cut', HTMLSelectElement);
   private readonly boundaryBevel = element('fab-boundary-bevel', HTMLInputElement);
   private readonly upAxis = element('fab-up-axis', HTMLSelectElement);
+  private readonly error = element('fab-form-error', HTMLParagraphElement);
   private panelThickness: Record<string, number> = {}; // set by clicking panels (panelThickness.ts)
 
   constructor() {
@@ -36,7 +37,24 @@ export class FabricationForm {
     for (const input of [this.thickness, this.units, this.meshUnits, this.side, this.sheetWidth, this.sheetHeight, this.boundaryCut, this.boundaryBevel, this.upAxis]) input.addEventListener('change', callback);
   }
 
+  // A value refused is marked on its input and said under the inputs (the status line is in
+  // the Solve section, out of sight here); a valid read clears both.
   read(): Checked<FabricationSettings> {
+    const checked = this.readValues();
+    const inputs: [string, HTMLInputElement][] = [
+      ['Thickness', this.thickness],
+      ['Sheet width', this.sheetWidth],
+      ['Sheet height', this.sheetHeight],
+      ['Boundary bevel', this.boundaryBevel],
+    ];
+    for (const [, input] of inputs) input.removeAttribute('aria-invalid');
+    if (!checked.ok) inputs.find(([name]) => checked.message.startsWith(name))?.[1].setAttribute('aria-invalid', 'true');
+    this.error.textContent = checked.ok ? '' : `${checked.message}: the outputs keep the settings before.`;
+    this.error.hidden = checked.ok;
+    return checked;
+  }
+
+  private readValues(): Checked<FabricationSettings> {
     const number = readNumber;
     return validateFabrication({
       thickness: number(this.thickness),

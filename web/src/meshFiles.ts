@@ -31,8 +31,13 @@ export async function payloadFromFile(name: string, bytes: Uint8Array): Promise<
   if (GLTF_EXTENSIONS.includes(extensionOf(name))) return onPage(() => gltfPayload(name, bytes), 'glTF');
   // Rhino: parsed on the page by rhino3dm, itself loaded on the first .3dm (web/src/rhino/).
   if (extensionOf(name) === '3dm') return onPage(() => rhinoPayload(name, bytes), 'Rhino');
-  // Anything else goes to the core, which reads by extension or else by content and names
-  // the problem when it cannot.
+  // An extension that names another kind of file (a photo, a PDF) is refused here: the core's
+  // own message lists only the formats it reads itself. Without an extension the core reads
+  // by content and names the problem when it cannot.
+  const extension = extensionOf(name);
+  if (extension !== '' && !ACCEPTED_EXTENSIONS.includes(extension)) {
+    return failure(`${name}: not a mesh file this page reads (OBJ, OFF, STL, PLY, glTF/GLB or Rhino .3dm)`);
+  }
   return { ok: true, value: { kind: 'bytes', name, bytes } };
 }
 

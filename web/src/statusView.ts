@@ -18,7 +18,16 @@ export function solvedSummary(result: SolveResult): { text: string; warning: boo
     problems: [],
   };
   const warning = invalidPhrase(summary) || planarityWarning(result.report);
-  return { text: warning ? `${warning}. Done: ${panels} panels` : `Done: ${panels} panels`, warning: warning !== '' };
+  const done = `${glassNote(result, panels)}Done: ${panels} panels`;
+  return { text: warning ? `${warning}. ${done}` : done, warning: warning !== '' };
+}
+
+// Glass mode cuts concave panels into convex pieces, so a solve for 120 panels ends "Done: 197
+// panels": said, or the count looks like a fault.
+function glassNote(result: Pick<SolveResult, 'report' | 'clusterIds'>, panels: number): string {
+  if (result.report.glass !== true || !result.clusterIds) return '';
+  const clusters = new Set(Array.from(result.clusterIds).filter((c) => c >= 0)).size;
+  return panels > clusters ? `Glass mode cut the concave ones of ${clusters} panels into convex pieces. ` : '';
 }
 
 // A retry starts the stages over (RemeshParams.retries): say so, or the bar going back looks
