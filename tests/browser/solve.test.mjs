@@ -488,3 +488,41 @@ test('panels that stay invalid are named with their problems and what to try', a
     await screenshot(page, 'yas-4-invalid-named');
   });
 });
+
+// The view frames the model by the narrower of its two view angles (and frames it again when
+// the window changes shape while the designer has not moved the view): in a narrow window
+// (800 x 700: the view taller than wide) the saddle was cut off at both sides, framed by the
+// vertical angle alone (a review of the page).
+test('a narrow window frames the whole model', async () => {
+  const { context, page, errors } = await openPage(suite.browser, suite.url, { width: 800, height: 700 });
+  try {
+    assert.equal(await waitForDone(page), 300);
+    assert.equal(await solveAfter(page, () => selectExample(page, 'saddle')), 120);
+    await screenshot(page, 'narrow-window');
+    // The legend lines over the view are not the model.
+    await page.evaluate(() => document.querySelector('.view-legends').style.setProperty('visibility', 'hidden'));
+    const png = await page.locator('#viewport canvas').screenshot();
+    // Pixels of the model (not the background, 0x24272c) in the outermost columns of the view.
+    const atSides = await page.evaluate(async (data) => {
+      const image = new Image();
+      image.src = `data:image/png;base64,${data}`;
+      await image.decode();
+      const canvas = new OffscreenCanvas(image.width, image.height);
+      const context2d = canvas.getContext('2d');
+      context2d.drawImage(image, 0, 0);
+      const pixels = context2d.getImageData(0, 0, image.width, image.height).data;
+      let count = 0;
+      for (let y = 0; y < image.height; y++)
+        for (const x of [0, 1, image.width - 2, image.width - 1]) {
+          const i = 4 * (y * image.width + x);
+          if (Math.abs(pixels[i] - 0x24) + Math.abs(pixels[i + 1] - 0x27) + Math.abs(pixels[i + 2] - 0x2c) > 24) count++;
+        }
+      return { count, width: image.width, height: image.height };
+    }, png.toString('base64'));
+    assert.ok(atSides.width < atSides.height, `the view is taller than wide (${atSides.width} x ${atSides.height})`);
+    assert.equal(atSides.count, 0, 'no part of the model at the view\'s left and right edges');
+    assert.deepEqual(errors, []);
+  } finally {
+    await context.close();
+  }
+});

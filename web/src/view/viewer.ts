@@ -29,6 +29,8 @@ export class Viewer {
   private readonly scene = new THREE.Scene();
   private readonly camera = new THREE.PerspectiveCamera(40, 1, 0.01, 1000);
   private readonly controls: OrbitControls;
+  // The framing of the model while the designer has not moved the view (frame()), else null.
+  private framed: { box: THREE.Box3; upAxis: 'y' | 'z' } | null = null;
   private readonly input = new InputLayer();
   private readonly panels = new PanelLayer();
   private readonly problems = new ProblemLayer();
@@ -72,6 +74,7 @@ export class Viewer {
 
     this.controls = new OrbitControls(this.camera, this.renderer.domElement);
     this.controls.addEventListener('change', () => this.requestRender());
+    this.controls.addEventListener('start', () => (this.framed = null)); // the designer's view now
     new ResizeObserver(() => this.resize()).observe(container);
     this.resize();
     this.applyVisibility();
@@ -123,6 +126,9 @@ export class Viewer {
     this.renderer.setSize(width, height, false);
     this.camera.aspect = width / height;
     this.camera.updateProjectionMatrix();
+    // Framed by the page and not moved since: framed again for the new shape (a window made
+    // narrow after the model opened cut it off at both sides).
+    if (this.framed) this.frame(this.framed.box, this.framed.upAxis);
     const buffer = this.renderer.getDrawingBufferSize(new THREE.Vector2());
     this.problems.setResolution(buffer.x, buffer.y);
     this.thick.setResolution(buffer.x, buffer.y);
@@ -146,10 +152,15 @@ export class Viewer {
   }
 
   private frame(box: THREE.Box3, upAxis: 'y' | 'z'): void {
+    this.framed = { box: box.clone(), upAxis };
     const radius = Math.max(1e-9, box.getSize(new THREE.Vector3()).length() / 2);
     this.camera.up.set(0, upAxis === 'y' ? 1 : 0, upAxis === 'z' ? 1 : 0);
     const direction = upAxis === 'y' ? new THREE.Vector3(0.9, 0.55, 1.1) : new THREE.Vector3(1.1, -0.9, 0.6);
-    const distance = radius / Math.sin(THREE.MathUtils.degToRad(this.camera.fov / 2)) * 1.02;
+    // The narrower of the two view angles: in a view taller than wide (a narrow window) the
+    // horizontal one is, and framing by the vertical one cut the model off at both sides.
+    const halfVertical = THREE.MathUtils.degToRad(this.camera.fov / 2);
+    const halfHorizontal = Math.atan(Math.tan(halfVertical) * this.camera.aspect);
+    const distance = (radius / Math.sin(Math.min(halfVertical, halfHorizontal))) * 1.02;
     this.camera.position.copy(direction.normalize().multiplyScalar(distance));
     this.camera.near = distance / 200;
     this.camera.far = distance * 20;
