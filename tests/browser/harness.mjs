@@ -318,11 +318,12 @@ export async function distinctColours(page, selector) {
   }, png.toString('base64'));
 }
 
-// Pixels of the view within 24 of an RGB colour per channel (markers drawn in a colour of
-// their own), decoded by the page itself; the legend lines over the view (whose swatches have
-// those colours) are hidden for the screenshot. Returns their count and their centre as
-// fractions of the view's size (NaN without pixels), for clickView-style clicks near a marker.
-export async function viewColour(page, [r, g, b]) {
+// The view's pixels against an RGB colour, decoded by the page itself, with the legend lines
+// over the view (whose swatches have marker colours) hidden for the screenshot: those within
+// 24 of it per channel (their count and centre as fractions of the view's size, NaN without
+// pixels), and those in the two outermost columns at each side not within 24 of it in sum
+// (with the view's size).
+async function matchView(page, [r, g, b]) {
   const legends = (visibility) =>
     page.evaluate((v) => document.querySelector('.view-legends').style.setProperty('visibility', v), visibility);
   await legends('hidden');
@@ -337,19 +338,43 @@ export async function viewColour(page, [r, g, b]) {
       const context = canvas.getContext('2d');
       context.drawImage(image, 0, 0);
       const pixels = context.getImageData(0, 0, image.width, image.height).data;
+      const off = (i) => [Math.abs(pixels[i] - rgb[0]), Math.abs(pixels[i + 1] - rgb[1]), Math.abs(pixels[i + 2] - rgb[2])];
       let count = 0;
       let x = 0;
       let y = 0;
-      for (let i = 0; i < pixels.length; i += 4)
-        if (Math.abs(pixels[i] - rgb[0]) < 24 && Math.abs(pixels[i + 1] - rgb[1]) < 24 && Math.abs(pixels[i + 2] - rgb[2]) < 24) {
+      for (let i = 0; i < pixels.length; i += 4) {
+        const [dr, dg, db] = off(i);
+        if (dr < 24 && dg < 24 && db < 24) {
           count++;
           x += (i / 4) % image.width;
           y += Math.floor(i / 4 / image.width);
         }
-      return { count, fx: (x / count + 0.5) / image.width, fy: (y / count + 0.5) / image.height };
+      }
+      let sides = 0;
+      for (let row = 0; row < image.height; row++)
+        for (const column of [0, 1, image.width - 2, image.width - 1]) {
+          const [dr, dg, db] = off(4 * (row * image.width + column));
+          if (dr + dg + db > 24) sides++;
+        }
+      return { count, fx: (x / count + 0.5) / image.width, fy: (y / count + 0.5) / image.height, sides, width: image.width, height: image.height };
     },
     { data: png.toString('base64'), rgb: [r, g, b] },
   );
+}
+
+// Pixels of the view within 24 of an RGB colour per channel (markers drawn in a colour of
+// their own): their count and their centre as fractions of the view's size (NaN without
+// pixels), for clickView-style clicks near a marker.
+export async function viewColour(page, rgb) {
+  const { count, fx, fy } = await matchView(page, rgb);
+  return { count, fx, fy };
+}
+
+// Pixels in the view's outermost columns that are not the background colour `rgb`: 0 when the
+// model is framed whole across the view. With the view's size.
+export async function viewSidePixels(page, rgb) {
+  const { sides, width, height } = await matchView(page, rgb);
+  return { count: sides, width, height };
 }
 
 export async function viewPixels(page, rgb) {

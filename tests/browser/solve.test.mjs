@@ -21,6 +21,7 @@ import {
   setPanels,
   sharedMeshes,
   solveAfter,
+  viewSidePixels,
   statusText,
   viewColour,
   viewPixels,
@@ -499,26 +500,8 @@ test('a narrow window frames the whole model', async () => {
     assert.equal(await waitForDone(page), 300);
     assert.equal(await solveAfter(page, () => selectExample(page, 'saddle')), 120);
     await screenshot(page, 'narrow-window');
-    // The legend lines over the view are not the model.
-    await page.evaluate(() => document.querySelector('.view-legends').style.setProperty('visibility', 'hidden'));
-    const png = await page.locator('#viewport canvas').screenshot();
-    // Pixels of the model (not the background, 0x24272c) in the outermost columns of the view.
-    const atSides = await page.evaluate(async (data) => {
-      const image = new Image();
-      image.src = `data:image/png;base64,${data}`;
-      await image.decode();
-      const canvas = new OffscreenCanvas(image.width, image.height);
-      const context2d = canvas.getContext('2d');
-      context2d.drawImage(image, 0, 0);
-      const pixels = context2d.getImageData(0, 0, image.width, image.height).data;
-      let count = 0;
-      for (let y = 0; y < image.height; y++)
-        for (const x of [0, 1, image.width - 2, image.width - 1]) {
-          const i = 4 * (y * image.width + x);
-          if (Math.abs(pixels[i] - 0x24) + Math.abs(pixels[i + 1] - 0x27) + Math.abs(pixels[i + 2] - 0x2c) > 24) count++;
-        }
-      return { count, width: image.width, height: image.height };
-    }, png.toString('base64'));
+    // The background is 0x24272c (viewer.ts).
+    const atSides = await viewSidePixels(page, [0x24, 0x27, 0x2c]);
     assert.ok(atSides.width < atSides.height, `the view is taller than wide (${atSides.width} x ${atSides.height})`);
     assert.equal(atSides.count, 0, 'no part of the model at the view\'s left and right edges');
     assert.deepEqual(errors, []);

@@ -719,18 +719,22 @@ assert r['max_planarity_panel'] >= 0 and r['status'] == 'valid', r
   bad "near the origin: stderr '$(cat "$tmp/err.txt")'"
 
 # A part far from the rest (one triangle 1e8 away from epcot): refused by name, nothing written.
-cp "$e" "$tmp/farpart.off"
-python3 - "$tmp/farpart.off" <<'PY'
+# with_triangle SRC DST A B C: the OFF mesh SRC with one more triangle (corners "x y z"), as DST.
+with_triangle() {
+  python3 - "$@" <<'PY'
 import sys
-t = open(sys.argv[1]).read().split()
+src, dst, corners = sys.argv[1], sys.argv[2], sys.argv[3:6]
+t = open(src).read().split()
 nv, nf = int(t[1]), int(t[2])
-rows = [" ".join(t[4 + 3 * i:7 + 3 * i]) for i in range(nv)] + ["1e8 0 0", "100000000.01 0 0", "1e8 0.01 0"]
+rows = [" ".join(t[4 + 3 * i:7 + 3 * i]) for i in range(nv)] + corners
 faces, p = [], 4 + 3 * nv
 for _ in range(nf):
     k = int(t[p]); faces.append(" ".join(t[p:p + 1 + k])); p += 1 + k
 faces.append(f"3 {nv} {nv + 1} {nv + 2}")
-open(sys.argv[1], "w").write(f"OFF\n{nv + 3} {nf + 1} 0\n" + "\n".join(rows + faces) + "\n")
+open(dst, "w").write(f"OFF\n{nv + 3} {nf + 1} 0\n" + "\n".join(rows + faces) + "\n")
 PY
+}
+with_triangle "$e" "$tmp/farpart.off" "1e8 0 0" "100000000.01 0 0" "1e8 0.01 0"
 expect_error 2 "a part of 1 triangle near \(1e\+08, 0.005, 0\) lies .* times the main part's size .*delete the far-off part, or rerun with --largest-part to keep only the largest part \(1536 of 1537 faces\)$" \
   remesh "$tmp/farpart.off" --panels 30 --out "$tmp/never.obj" --report "$tmp/never.json"
 # The offer works: --largest-part drops the stray triangle and solves epcot (its 1536 triangles).
@@ -746,18 +750,7 @@ assert r['cleanup'] == ['kept the largest part (1536 of 1537 faces): dropped 1 f
 # A stray triangle larger than the model (corners typed 100 apart, epcot is 3.6 across): the
 # largest part by area, so --largest-part keeps it, and says at once that a dropped part has
 # more faces (it panelled the triangle in silence, exit 0).
-cp "$e" "$tmp/bigpart.off"
-python3 - "$tmp/bigpart.off" <<'PY'
-import sys
-t = open(sys.argv[1]).read().split()
-nv, nf = int(t[1]), int(t[2])
-rows = [" ".join(t[4 + 3 * i:7 + 3 * i]) for i in range(nv)] + ["100 0 0", "0 100 0", "0 0 100"]
-faces, p = [], 4 + 3 * nv
-for _ in range(nf):
-    k = int(t[p]); faces.append(" ".join(t[p:p + 1 + k])); p += 1 + k
-faces.append(f"3 {nv} {nv + 1} {nv + 2}")
-open(sys.argv[1], "w").write(f"OFF\n{nv + 3} {nf + 1} 0\n" + "\n".join(rows + faces) + "\n")
-PY
+with_triangle "$e" "$tmp/bigpart.off" "100 0 0" "0 100 0" "0 0 100"
 "$bin" remesh "$tmp/bigpart.off" --panels 30 --largest-part --out "$tmp/bigpart.obj" 2>"$tmp/err.txt" >/dev/null
 grep -q "^flatfacet: warning: --largest-part: the part kept is the largest by area, yet a dropped part has 1536 faces to its 1: if that part is the model, the one kept is a stray piece" "$tmp/err.txt" &&
   ok || bad "--largest-part keeping a stray triangle: stderr '$(cat "$tmp/err.txt")'"
