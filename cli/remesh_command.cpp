@@ -190,8 +190,7 @@ std::string folded_parts_line(const std::vector<std::string>& labels, double thi
   // With --panel-thickness a folded part may have its own thickness, not the default.
   std::string line = "flatfacet remesh: at a thickness of " + number_text(thickness, 6) + " " + units +
                      (per_panel ? " (and those of --panel-thickness)" : "") + " the inner face folds over on " +
-                     std::to_string(labels.size()) +
-                     (labels.size() == 1 ? " part (" : " parts (");
+                     std::to_string(labels.size()) + (labels.size() == 1 ? " part (" : " parts (");
   for (size_t k = 0; k < labels.size() && k < 8; ++k) line += (k ? ", " : "") + labels[k];
   if (labels.size() > 8) line += ", ...";
   return line + "), which cannot be cut as drawn: use thinner material, or fewer and larger panels\n";

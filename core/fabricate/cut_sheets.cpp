@@ -36,8 +36,8 @@ void check_options(const SheetOptions& o) {
     throw InputError("spacing between parts must be zero or more, got " + number_text(o.spacing, 6));
   }
   if (2.0 * o.margin >= std::min(o.width, o.height)) {
-    throw InputError("sheet margin " + number_text(o.margin, 6) + " leaves no room on a " +
-                     number_text(o.width, 6) + " x " + number_text(o.height, 6) + " sheet");
+    throw InputError("sheet margin " + number_text(o.margin, 6) + " leaves no room on a " + number_text(o.width, 6) +
+                     " x " + number_text(o.height, 6) + " sheet");
   }
 }
 
@@ -109,9 +109,8 @@ SheetLayout pack_outlines(const std::vector<PanelOutline>& outlines, const Sheet
       // Four significant digits: rounded to one decimal, 1.343 x 1.229 m read as fitting 2.44 x 1.22.
       throw InputError(name_of(outlines[i], i) + " (" + number_text(o.size.x(), 4) + " x " +
                        number_text(o.size.y(), 4) + " " + options.units + " at its best orientation) fits no " +
-                       number_text(options.width, 4) + " x " + number_text(options.height, 4) + " " +
-                       options.units + " sheet with a margin of " + number_text(options.margin, 4) + " " +
-                       options.units);
+                       number_text(options.width, 4) + " x " + number_text(options.height, 4) + " " + options.units +
+                       " sheet with a margin of " + number_text(options.margin, 4) + " " + options.units);
     }
     layout.placed.push_back(to_placement(static_cast<int>(i), b, parts[i][b.orientation], options.margin));
     layout.sheets = std::max(layout.sheets, b.sheet + 1);

@@ -97,15 +97,15 @@ TEST(PartSpread, KeepingALargerStrayTriangleIsSaid) {
   const TriMesh epcot = test::load_clean("epcot.off");
   CleanOptions largest;
   largest.largest_manifold_part = true;
-  const CleanMesh kept =
-      clean_mesh(with_triangle(epcot, Vec3(100, 0, 0), Vec3(0, 100, 0), Vec3(0, 0, 100)), largest);
+  const CleanMesh kept = clean_mesh(with_triangle(epcot, Vec3(100, 0, 0), Vec3(0, 100, 0), Vec3(0, 0, 100)), largest);
   EXPECT_EQ(kept.mesh.num_faces(), 1);
   EXPECT_EQ(kept.report.most_faces_dropped_part, 1536);
   const std::string doubt = kept.report.kept_part_doubt();
   EXPECT_NE(doubt.find("a dropped part has 1536 faces to its 1"), std::string::npos) << doubt;
   const auto messages = kept.report.messages();
   ASSERT_FALSE(messages.empty());
-  EXPECT_NE(messages.front().find("; the part kept is the largest by area, yet"), std::string::npos) << messages.front();
+  EXPECT_NE(messages.front().find("; the part kept is the largest by area, yet"), std::string::npos)
+      << messages.front();
   // The usual case says nothing more.
   EXPECT_TRUE(clean_mesh(with_triangle_at(epcot, 1e3), largest).report.kept_part_doubt().empty());
 }

@@ -123,14 +123,17 @@ TEST(PartsList, AnInnerFaceTurnedHalfRoundIsFolded) {
   FabricationOptions opt;
   opt.thickness = 3.0;
   const PartsList list = make_parts_list(r->panels(), opt);
-  const auto it = std::find_if(list.rows.begin(), list.rows.end(), [](const PartRow& row) { return row.outline.label == "P35"; });
+  const auto it =
+      std::find_if(list.rows.begin(), list.rows.end(), [](const PartRow& row) { return row.outline.label == "P35"; });
   ASSERT_NE(it, list.rows.end());
   const PanelOutline& o = it->outline;
   ASSERT_EQ(o.outer.size(), 3u);
   EXPECT_GT(signed_area(o.inner), signed_area(o.outer));  // larger than the panel
-  EXPECT_TRUE(is_simple(o.inner, 0.0));                    // and still simple, counter-clockwise
-  for (size_t i = 0; i < 3; ++i) EXPECT_LT((o.inner[(i + 1) % 3] - o.inner[i]).dot(o.outer[(i + 1) % 3] - o.outer[i]), 0.0);
-  EXPECT_NE(std::find(list.folded_inner_faces.begin(), list.folded_inner_faces.end(), "P35"), list.folded_inner_faces.end());
+  EXPECT_TRUE(is_simple(o.inner, 0.0));                   // and still simple, counter-clockwise
+  for (size_t i = 0; i < 3; ++i)
+    EXPECT_LT((o.inner[(i + 1) % 3] - o.inner[i]).dot(o.outer[(i + 1) % 3] - o.outer[i]), 0.0);
+  EXPECT_NE(std::find(list.folded_inner_faces.begin(), list.folded_inner_faces.end(), "P35"),
+            list.folded_inner_faces.end());
 }
 
 TEST(PartsList, NamesThePartsWhoseInnerFaceFoldsOver) {
@@ -144,7 +147,8 @@ TEST(PartsList, NamesThePartsWhoseInnerFaceFoldsOver) {
       for (size_t i = 0; i < outer.size(); ++i) {
         const size_t j = (i + 1) % outer.size();
         // Reversed by more than the 1 mm a cut is made to (the units are metres here).
-        folded = folded || (!((inner[j] - inner[i]).dot(outer[j] - outer[i]) > 0.0) && (inner[j] - inner[i]).norm() > 0.001);
+        folded =
+            folded || (!((inner[j] - inner[i]).dot(outer[j] - outer[i]) > 0.0) && (inner[j] - inner[i]).norm() > 0.001);
       }
       if (folded) out.push_back(row.outline.label);
     }
