@@ -1,6 +1,7 @@
 #include "core/cluster/face_data.h"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -25,18 +26,30 @@ std::vector<double> face_density(const TriMesh& mesh, const std::vector<double>&
                        "; densities must be finite and greater than 0");
     }
   }
+  // A density of 1e308 overflowed the sums below and the area-weighted mean (it crashed the
+  // seeding); 1e-320 underflowed.
+  const std::vector<double> shifted = density_ratios(values);
   // When the counts coincide, per vertex wins: it is what painting and --density produce.
-  if (values.size() != vertices) return values;
+  if (values.size() != vertices) return shifted;
   for (size_t f = 0; f < faces; ++f) {
     const Triangle& t = mesh.triangles[f];
-    density[f] =
-        (values[static_cast<size_t>(t[0])] + values[static_cast<size_t>(t[1])] + values[static_cast<size_t>(t[2])]) /
-        3.0;
+    density[f] = (shifted[static_cast<size_t>(t[0])] + shifted[static_cast<size_t>(t[1])] +
+                  shifted[static_cast<size_t>(t[2])]) /
+                 3.0;
   }
   return density;
 }
 
 }  // namespace
+
+std::vector<double> density_ratios(const std::vector<double>& values) {
+  if (values.empty()) return {};
+  int exponent = 0;
+  std::frexp(*std::max_element(values.begin(), values.end()), &exponent);
+  std::vector<double> shifted(values.size());
+  for (size_t i = 0; i < values.size(); ++i) shifted[i] = std::ldexp(values[i], -exponent);
+  return shifted;
+}
 
 FaceData make_face_data(const TriMesh& mesh, const std::vector<double>& density) {
   FaceData data;

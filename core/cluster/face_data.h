@@ -46,6 +46,11 @@ struct FaceData {
   const FaceRecord& operator[](size_t face) const { return records[face]; }
 };
 
+// Positive densities shifted by one power of two so that the largest lies in [0.5, 1): the
+// same ratios exactly (only ratios matter: make_face_data normalises the mean to 1), in a
+// range where sums and products of a few of them neither overflow nor underflow.
+std::vector<double> density_ratios(const std::vector<double>& values);
+
 // Builds FaceData. `density` is empty (uniform), one value per vertex (a face gets the mean
 // of its corners) or one per face; values must be finite and > 0. Throws InputError with
 // the count or the first bad value otherwise.

@@ -86,15 +86,26 @@ std::vector<double> expression_density(const TriMesh& mesh, const MeshTopology& 
 FaceData make_shaped_face_data(const TriMesh& mesh, const MeshTopology& topology, const std::vector<double>& painted,
                                const std::string& expression, const Anisotropy& anisotropy) {
   validate_anisotropy(anisotropy);
+  // The painted or file density within the range the expression has to keep (a file of 1 and
+  // 1e300 was taken, the same field as an expression refused).
+  if (!painted.empty()) {
+    const auto [lo, hi] = std::minmax_element(painted.begin(), painted.end());
+    if (std::isfinite(*hi) && *lo > 0.0 && *hi > kMaxRatio * *lo) {
+      throw InputError("density ranges from " + number_text(*lo) + " to " + number_text(*hi) +
+                       "; keep the largest value within 1e6 times the smallest");
+    }
+  }
   std::optional<Expression> parsed;
   if (!expression.empty()) parsed = Expression::parse(expression);
+  // Before the product with the expression's values (1e308 times 4 overflowed).
+  const std::vector<double> paint = density_ratios(painted);
   const bool need_curvature =
       (parsed && parsed->uses_curvature()) || (anisotropy.active() && anisotropy.uses_curvature());
   std::optional<VertexCurvature> curvature;
   if (need_curvature) curvature = vertex_curvature(mesh, topology);
   const VertexCurvature* k = curvature ? &*curvature : nullptr;
   if (!parsed) {
-    FaceData data = make_face_data(mesh, painted);
+    FaceData data = make_face_data(mesh, paint);
     data.stretch = face_stretch_vectors(mesh, anisotropy, k);
     return data;
   }
@@ -111,11 +122,11 @@ FaceData make_shaped_face_data(const TriMesh& mesh, const MeshTopology& topology
       const double mean = (density[static_cast<size_t>(t[0])] + density[static_cast<size_t>(t[1])] +
                            density[static_cast<size_t>(t[2])]) /
                           3.0;
-      per_face[f] = painted[f] * mean;
+      per_face[f] = paint[f] * mean;
     }
     density = std::move(per_face);
   } else if (!painted.empty()) {
-    for (size_t v = 0; v < vertices; ++v) density[v] *= painted[v];
+    for (size_t v = 0; v < vertices; ++v) density[v] *= paint[v];
   }
   FaceData data = make_face_data(mesh, density);
   data.stretch = face_stretch_vectors(mesh, anisotropy, k);

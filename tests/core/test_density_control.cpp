@@ -308,3 +308,51 @@ TEST(DensityControl, ParamsJsonContract) {
 
 }  // namespace
 }  // namespace ff
+
+namespace ff {
+namespace {
+
+// Only a density's ratios count: a constant 1e308 (or 1e-320, or an expression of either)
+// gives the densities of none. 1e308 overflowed the face means and the area-weighted mean and
+// crashed the seeding (SIGSEGV in place_seeds), found by an audit of the density inputs; a
+// field times an expression overflowed the same way.
+TEST(DensityControl, HugeOrTinyConstantDensitiesChangeNothing) {
+  const TriMesh mesh = make_grid_surface(12, 10, [](double s, double t) { return Vec3(s, t, 0.3 * s * t); });
+  const MeshTopology topology = build_topology(mesh);
+  const FaceData plain = make_shaped_face_data(mesh, topology, {}, "", Anisotropy{});
+  // The same densities up to the last digits (the mean's normalisation rounds).
+  const auto expect_same = [](const FaceData& a, const FaceData& b, const std::string& what) {
+    ASSERT_EQ(a.records.size(), b.records.size());
+    for (size_t f = 0; f < a.records.size(); ++f) {
+      ASSERT_TRUE(std::isfinite(a.records[f].density)) << what;
+      EXPECT_NEAR(a.records[f].density, b.records[f].density, 1e-14 * b.records[f].density) << what << ", face " << f;
+    }
+  };
+  for (const double value : {1e308, 1.7e308, 1e-320, 4.9e-324}) {
+    const std::vector<double> constant(mesh.positions.size(), value);
+    expect_same(make_shaped_face_data(mesh, topology, constant, "", Anisotropy{}), plain, std::to_string(value));
+  }
+  expect_same(make_shaped_face_data(mesh, topology, {}, "1e308", Anisotropy{}), plain, "expression 1e308");
+  // A field of 1e308 times an expression: the expression's ratios, as for a field of 1.
+  const std::vector<double> huge(mesh.positions.size(), 1e308), ones(mesh.positions.size(), 1.0);
+  expect_same(make_shaped_face_data(mesh, topology, huge, "1 + 3 * u", Anisotropy{}),
+              make_shaped_face_data(mesh, topology, ones, "1 + 3 * u", Anisotropy{}), "1e308 times 1 + 3u");
+}
+
+// A painted or file density is held to the expression's range (1e6): a file of 1 and 1e300 was
+// taken while the same field as an expression was refused.
+TEST(DensityControl, APaintedDensityOverAMillionToOneIsRefused) {
+  const TriMesh mesh = make_grid_surface(6, 6, [](double s, double t) { return Vec3(s, t, 0.0); });
+  std::vector<double> field(mesh.positions.size(), 1.0);
+  field[3] = 1e300;
+  const std::string message =
+      test::input_error_message([&] { make_shaped_face_data(mesh, build_topology(mesh), field, "", Anisotropy{}); });
+  EXPECT_NE(message.find("density ranges from 1 to 1e+300; keep the largest value within 1e6 times the smallest"),
+            std::string::npos)
+      << message;
+  field[3] = 1e6;  // at the limit: taken
+  EXPECT_NO_THROW(make_shaped_face_data(mesh, build_topology(mesh), field, "", Anisotropy{}));
+}
+
+}  // namespace
+}  // namespace ff
