@@ -108,10 +108,12 @@ MetricWeights parse_weights(const std::string& text) {
   MetricWeights w;
   std::stringstream ss(text);
   std::string item;
+  std::set<std::string> given;  // a term given twice was taken silently, the last value winning
   while (std::getline(ss, item, ',')) {
     const size_t eq = item.find('=');
     if (eq == std::string::npos) throw UsageError("--weights: expected name=value, got '" + item + "'");
     const std::string name = item.substr(0, eq);
+    if (!given.insert(name).second) throw UsageError("--weights: " + name + " is given twice");
     const double v = parse_double(item.substr(eq + 1), "--weights " + name);
     if (v < 0.0) throw UsageError("--weights " + name + ": weights must be >= 0");
     if (name == "euclidean")

@@ -421,6 +421,7 @@ expect_error 2 "panel P[0-9]+ \\([0-9.]+ x [0-9.]+ m at its best orientation\\) 
 # A sheet of 1e308 wrote width="infmm" and coordinates cut off at 63 digits, exit 0.
 expect_error 2 "sheet size 1e\\+308 x 1e\\+308 is larger than any sheet \\(at most 1e\\+09 on a side\\)" \
   remesh "$e" --panels 10 --sheets "$tmp/never.svg" --sheet-size 1e308,1e308
+expect_error 2 "weights: euclidean is given twice" remesh "$e" --panels 10 --weights euclidean=1,euclidean=5 "${o[@]}"
 expect_error 2 "panel-thickness: P1 is given twice \\(0.002 and 0.003\\)" \
   remesh "$e" --panels 10 --thickness 0.001 --panel-thickness P1=0.002,P1=0.003 --parts "$tmp/never.csv"
 expect_error 2 "same file" remesh "$e" --panels 10 --parts "$tmp/never.svg" --sheets "$tmp/never.svg"
