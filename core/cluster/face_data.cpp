@@ -33,9 +33,9 @@ std::vector<double> face_density(const TriMesh& mesh, const std::vector<double>&
   if (values.size() != vertices) return shifted;
   for (size_t f = 0; f < faces; ++f) {
     const Triangle& t = mesh.triangles[f];
-    density[f] = (shifted[static_cast<size_t>(t[0])] + shifted[static_cast<size_t>(t[1])] +
-                  shifted[static_cast<size_t>(t[2])]) /
-                 3.0;
+    density[f] =
+        (shifted[static_cast<size_t>(t[0])] + shifted[static_cast<size_t>(t[1])] + shifted[static_cast<size_t>(t[2])]) /
+        3.0;
   }
   return density;
 }
