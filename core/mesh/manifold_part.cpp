@@ -43,8 +43,11 @@ ManifoldPart largest_manifold_part(const std::vector<Triangle>& tris, const std:
       const int a = union_find_root(parent, fa), b = union_find_root(parent, fb);
       if (a != b) parent[static_cast<size_t>(std::max(a, b))] = std::min(a, b);
     }
+    // Per sheet (at its root): area, faces and bounding box.
     std::vector<double> area(sub.size(), 0.0);
     std::vector<int> count(sub.size(), 0);
+    std::vector<Vec3> lo(sub.size(), Vec3::Constant(std::numeric_limits<double>::infinity()));
+    std::vector<Vec3> hi(sub.size(), -Vec3::Constant(std::numeric_limits<double>::infinity()));
     int sheets = 0;
     for (size_t f = 0; f < sub.size(); ++f) {
       if (drop[f]) continue;
@@ -52,21 +55,15 @@ ManifoldPart largest_manifold_part(const std::vector<Triangle>& tris, const std:
       const Vec3& a = positions[static_cast<size_t>(sub[f][0])];
       area[r] += 0.5 * (positions[static_cast<size_t>(sub[f][1])] - a).cross(positions[static_cast<size_t>(sub[f][2])] - a).norm();
       sheets += count[r]++ == 0 ? 1 : 0;
-    }
-    if (first_round) result.sheets = sheets;
-    // A sheet more than kMaxPartSpread times the size of the sheet with the most faces is a
-    // stray piece (a triangle with a corner typed 1e6 away), however large its area: not kept.
-    std::vector<Vec3> lo(sub.size(), Vec3::Constant(std::numeric_limits<double>::infinity()));
-    std::vector<Vec3> hi(sub.size(), -Vec3::Constant(std::numeric_limits<double>::infinity()));
-    int most = -1;
-    for (size_t f = 0; f < sub.size(); ++f) {
-      if (drop[f]) continue;
-      const auto r = static_cast<size_t>(union_find_root(parent, static_cast<int>(f)));
       for (const int v : sub[f]) {
         lo[r] = lo[r].cwiseMin(positions[static_cast<size_t>(v)]);
         hi[r] = hi[r].cwiseMax(positions[static_cast<size_t>(v)]);
       }
     }
+    if (first_round) result.sheets = sheets;
+    // A sheet more than kMaxPartSpread times the size of the sheet with the most faces is a
+    // stray piece (a triangle with a corner typed 1e6 away), however large its area: not kept.
+    int most = -1;
     for (size_t r = 0; r < sub.size(); ++r) {
       if (count[r] > 0 && (most < 0 || count[r] > count[static_cast<size_t>(most)])) most = static_cast<int>(r);
     }

@@ -4,7 +4,7 @@
 // instances (EXT_mesh_gpu_instancing), morph target weights and skins applied. What the page
 // leaves out (points and lines, other scenes) is said, never dropped without a word.
 import { InstancedMesh, Line, LoadingManager, Matrix4, Mesh, Points, Vector3, type BufferGeometry, type Object3D } from 'three';
-import { failure, type Checked } from './params.ts';
+import { failure, isRecord, type Checked } from './params.ts';
 import type { MeshPayload } from './protocol.ts';
 
 // Each mesh's own label, written into its extras by selfContainedGltf: the loader copies
@@ -12,10 +12,6 @@ import type { MeshPayload } from './protocol.ts';
 // numbers the copies placed by several nodes ("Shell_instance_0"), and keeps its associations
 // for the last scene loaded only.
 const LABEL_KEY = 'flatfacetLabel';
-
-function isRecord(value: unknown): value is Record<string, unknown> {
-  return typeof value === 'object' && value !== null && !Array.isArray(value);
-}
 
 // The vertices a glTF may place (all meshes, with every node that places them): well past what
 // the core prepares (2 million triangles), short of what fills the tab's memory.
@@ -76,12 +72,9 @@ export function selfContainedGltf(name: string, bytes: Uint8Array): Checked<Arra
   if (tree) return failure(`${name}: ${tree}`);
   for (const key of ['materials', 'textures', 'images', 'samplers']) delete json[key];
   if (Array.isArray(json.meshes)) {
-    for (const mesh of json.meshes as unknown[]) {
-      if (!isRecord(mesh) || !Array.isArray(mesh.primitives)) continue;
-      for (const primitive of mesh.primitives as unknown[]) if (isRecord(primitive)) delete primitive.material;
-    }
     json.meshes.forEach((mesh: unknown, index: number) => {
       if (!isRecord(mesh)) return;
+      if (Array.isArray(mesh.primitives)) for (const primitive of mesh.primitives as unknown[]) if (isRecord(primitive)) delete primitive.material;
       const named = typeof mesh.name === 'string' && mesh.name !== '';
       mesh.extras = { [LABEL_KEY]: named ? `mesh "${(mesh.name as string).slice(0, 40)}"` : `mesh ${index}` };
     });
@@ -128,10 +121,10 @@ export function nodeTreeProblem(nodes: unknown): string | null {
   // One parent each: walking up from every node either ends at a root or comes back round.
   const walkedFrom = new Array<number>(nodes.length).fill(-1);
   for (let start = 0; start < nodes.length; start++) {
-    for (let n = start; n !== -1 && walkedFrom[n] !== start; n = parent[n]!) {
+    for (let n = start; n !== -1; n = parent[n]!) {
+      if (walkedFrom[n] === start) return `node ${n} is its own ancestor (the glTF file's node tree has a cycle)`;
       if (walkedFrom[n] !== -1) break; // walked before, from another start: no cycle above
       walkedFrom[n] = start;
-      if (parent[n] !== -1 && walkedFrom[parent[n]!] === start) return `node ${n} is its own ancestor (the glTF file's node tree has a cycle)`;
     }
   }
   return null;
