@@ -115,11 +115,7 @@ void Remesher::record_planes() {
   cluster_planes_ = best_->cluster_planes();
   const PanelLayout& layout = best_->layout();
   cluster_nodes_.assign(cluster_planes_.size(), {});
-  for (int c = 0; c < layout.num_clusters(); ++c) {
-    for (int node : layout.polygon(c).node) {
-      if (node >= 0) cluster_nodes_[static_cast<size_t>(c)].push_back(layout.node_clusters(node));
-    }
-  }
+  for (int c = 0; c < layout.num_clusters(); ++c) cluster_nodes_[static_cast<size_t>(c)] = layout.corner_nodes(c);
 }
 
 void Remesher::start_edited_panels(const std::vector<int>& edited) {
@@ -188,8 +184,19 @@ void Remesher::apply_edit(const PanelEdit& e, size_t index) {
     case PanelEdit::Op::Lock: {
       if (find_lock() != locks_.end()) break;  // locked already
       Lock lock;
-      std::vector<int> clusters{c};
-      for (int r : cluster_ring(mesh_, topology_, labels, c)) clusters.push_back(r);
+      // The clusters around it on the mesh, and every cluster of its outline's nodes: where
+      // four clusters meet at a corner, the node pairing can give the panel an edge with a
+      // cluster its faces do not touch (nor share a vertex with), whose plane makes two of
+      // its corners.
+      std::vector<int> clusters = cluster_ring(mesh_, topology_, labels, c);
+      for (const std::array<int, 3>& t : cluster_nodes_[static_cast<size_t>(c)]) {
+        for (int k : t) {
+          if (k != kBoundary && k != c) clusters.push_back(k);
+        }
+      }
+      std::sort(clusters.begin(), clusters.end());
+      clusters.erase(std::unique(clusters.begin(), clusters.end()), clusters.end());
+      clusters.insert(clusters.begin(), c);
       for (int k : clusters) {
         Held h;
         for (size_t f = 0; f < labels.size(); ++f) {
@@ -201,14 +208,12 @@ void Remesher::apply_edit(const PanelEdit& e, size_t index) {
       }
       for (const std::array<int, 3>& t : cluster_nodes_[static_cast<size_t>(c)]) {
         std::array<int, 3> named{-1, -1, -1};
-        bool known = true;
         for (size_t k = 0; k < 3; ++k) {
           if (t[k] == kBoundary) continue;
           const auto it = std::find(clusters.begin(), clusters.end(), t[k]);
-          known = known && it != clusters.end();
-          if (known) named[k] = lock.held[static_cast<size_t>(it - clusters.begin())].face;
+          named[k] = lock.held[static_cast<size_t>(it - clusters.begin())].face;
         }
-        if (known) lock.nodes.push_back(named);
+        lock.nodes.push_back(named);
       }
       lock.spike_distance = panels_.spike_distance;
       lock.diameter = metric_.diameter() * faces_.scale;

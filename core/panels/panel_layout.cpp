@@ -129,6 +129,18 @@ std::array<int, 3> PanelLayout::node_clusters(int node) const {
   return out;
 }
 
+std::vector<std::array<int, 3>> PanelLayout::corner_nodes(int cluster) const {
+  std::vector<std::array<int, 3>> out;
+  std::vector<int> around;
+  for (int g : groups_of_cluster_[static_cast<size_t>(cluster)]) {
+    const NodeGroup& group = groups_.groups[static_cast<size_t>(g)];
+    const int size = static_cast<int>(group.clusters.size());
+    triangles_around(pairing_[static_cast<size_t>(g)], size, position_of(group.clusters, cluster), around);
+    for (int t : around) out.push_back(node_clusters(node_offset_[static_cast<size_t>(g)] + t));
+  }
+  return out;
+}
+
 int PanelLayout::num_invalid() const { return faults().invalid; }
 
 PanelLayout::Faults PanelLayout::faults() const {

@@ -81,6 +81,11 @@ class PanelLayout {
   const PanelPolygon& polygon(int cluster) const { return polygons_[static_cast<size_t>(cluster)]; }
   // The clusters of a node (PanelPolygon::node), sorted (kBoundary first when there).
   std::array<int, 3> node_clusters(int node) const;
+  // The clusters of every node at the corners of the panel of `cluster`, each node as its
+  // own: where a group's nodes meet in one point, its outline shows the group's first node,
+  // which may not be one of this panel's (node_clusters of PanelPolygon::node would name a
+  // cluster across the point).
+  std::vector<std::array<int, 3>> corner_nodes(int cluster) const;
   // The mesh vertices where the panel of `cluster` has a problem (spikes, or every corner of
   // a panel that is flipped or not star-shaped): where a split should seed.
   std::vector<int> problem_corners(int cluster) const;
