@@ -16,6 +16,7 @@
 #include "cli/input.h"
 #include "cli/output.h"
 #include "cli/remesh_report.h"
+#include "core/density/density_field.h"
 #include "core/density/direction_expression.h"
 #include "core/density/expression.h"
 #include "core/fabricate/number_text.h"
@@ -215,6 +216,10 @@ int run_remesh(const std::vector<std::string>& argv) {
   }
   const int requested = o.params.panels;
   // Preparation: the resolution the panel count needs (prepare.h); the density follows.
+  // A density expression sizes the triangles as a density file does (the Remesher evaluates
+  // it again on the prepared mesh).
+  if (!o.params.density_expression.empty() && o.prepare.mode == PrepareMode::Auto)
+    o.prepare.sizing_density = expression_density(in.clean.mesh, o.params.density_expression);
   PreparedSurface prepared = prepare_surface(in.clean.mesh, o.params.panels, o.params.density, o.prepare);
   o.params.density = std::move(prepared.density);
   // Building the Remesher builds the topology and the face data: part of preparing.

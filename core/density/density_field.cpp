@@ -83,6 +83,14 @@ std::vector<double> expression_density(const TriMesh& mesh, const MeshTopology& 
   return out;
 }
 
+std::vector<double> expression_density(const TriMesh& mesh, const std::string& expression) {
+  const Expression parsed = Expression::parse(expression);
+  const MeshTopology topology = build_topology(mesh);
+  std::optional<VertexCurvature> curvature;
+  if (parsed.uses_curvature()) curvature = vertex_curvature(mesh, topology);
+  return expression_density(mesh, topology, parsed, curvature ? &*curvature : nullptr);
+}
+
 FaceData make_shaped_face_data(const TriMesh& mesh, const MeshTopology& topology, const std::vector<double>& painted,
                                const std::string& expression, const Anisotropy& anisotropy) {
   validate_anisotropy(anisotropy);

@@ -22,6 +22,12 @@ namespace ff {
 std::vector<double> expression_density(const TriMesh& mesh, const MeshTopology& topology, const Expression& expression,
                                        const VertexCurvature* curvature);
 
+// The same from the expression's text, the topology and curvature (when it needs it) built
+// here: what the preparation sizes by (PrepareOptions::sizing_density) before the Remesher
+// evaluates the expression on the prepared mesh. Throws InputError as above, and for an
+// expression that does not parse.
+std::vector<double> expression_density(const TriMesh& mesh, const std::string& expression);
+
 // FaceData for the Remesher. `painted`: empty, per vertex or per face (make_face_data);
 // `expression`: empty for none, else parsed and evaluated per vertex and multiplied in (a
 // per-face painted value takes the mean of its corners' expression values).

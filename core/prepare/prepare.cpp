@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "core/prepare/isotropic_remesh.h"
+#include "core/prepare/mesh_transfer.h"
 #include "core/quality/hausdorff.h"
 #include "core/util/error.h"
 #include "core/util/short_number.h"
@@ -55,6 +56,18 @@ std::vector<double> sizing_density(const TriMesh& mesh, const std::vector<double
   return out;
 }
 
+// The sizing times the designer's sizing density (PrepareOptions::sizing_density), each
+// divided by its largest value first (only ratios size the triangles, and two large
+// densities' product could overflow).
+std::vector<double> with_sizing(std::vector<double> sizing, const std::vector<double>& extra) {
+  if (extra.empty()) return sizing;
+  const double extra_max = *std::max_element(extra.begin(), extra.end());
+  if (sizing.empty()) sizing.assign(extra.size(), 1.0);
+  const double sizing_max = *std::max_element(sizing.begin(), sizing.end());
+  for (size_t v = 0; v < sizing.size(); ++v) sizing[v] = (sizing[v] / sizing_max) * (extra[v] / extra_max);
+  return sizing;
+}
+
 // How much denser than average the dense panels are: the area-weighted 90th percentile of
 // density / mean density (1 for a uniform or missing density).
 double dense_factor(const TriMesh& mesh, const std::vector<double>& vertex_density) {
@@ -100,6 +113,12 @@ PreparedSurface prepare_surface(const TriMesh& mesh, int panels, const std::vect
                                 const PrepareOptions& options) {
   if (panels < 1) throw InputError("the number of panels must be at least 1");
   check_density(mesh, density);
+  if (!options.sizing_density.empty()) {
+    if (options.sizing_density.size() != mesh.positions.size())
+      throw InputError("the sizing density has " + std::to_string(options.sizing_density.size()) +
+                       " values; expected one per vertex (" + std::to_string(mesh.positions.size()) + ")");
+    check_density(mesh, options.sizing_density);
+  }
   const bool explicit_length = options.edge_length != 0.0;
   if (explicit_length && (!(options.edge_length > 0.0) || !std::isfinite(options.edge_length)))
     throw InputError("the edge length must be a positive number, got " + short_number(options.edge_length));
@@ -127,7 +146,7 @@ PreparedSurface prepare_surface(const TriMesh& mesh, int panels, const std::vect
   // area would make (the metric says the same with the preparation off).
   if (!(area > 0.0)) throw InputError("the surface has zero area: all " + with_commas(faces) + " faces are degenerate");
   const bool per_vertex = density.size() == mesh.positions.size();
-  const std::vector<double> sizing = sizing_density(mesh, density, per_vertex);
+  const std::vector<double> sizing = with_sizing(sizing_density(mesh, density, per_vertex), options.sizing_density);
   const double dense = dense_factor(mesh, sizing);
   const double dense_per_panel = per_panel / dense;
   const std::string panels_text = with_commas(panels) + (panels == 1 ? " panel" : " panels");
@@ -205,14 +224,19 @@ PreparedSurface prepare_surface(const TriMesh& mesh, int panels, const std::vect
     throw InputError("preparing the mesh for " + panels_text + ": " + e.what());
   }
   out.mesh = std::move(result.mesh);
-  if (!density.empty())
-    out.density = per_vertex ? std::move(result.vertex_density) : transfer_face_field(mesh, density, out.mesh);
+  if (!density.empty() && !per_vertex) {
+    out.density = transfer_face_field(mesh, density, out.mesh);
+  } else if (!density.empty()) {
+    // The remeshing carries its sizing; without a sizing density that is the density.
+    out.density = options.sizing_density.empty() ? std::move(result.vertex_density)
+                                                 : transfer_vertex_values(mesh, density, out.mesh);
+  }
   r.applied = true;
   r.triangles_out = out.mesh.num_faces();
   r.target_edge = target;
   const std::string verb = explicit_length ? "remeshed" : (r.triangles_out >= r.triangles_in ? "refined" : "coarsened");
   r.messages.push_back(verb + " " + with_commas(faces) + " triangles to " + with_commas(r.triangles_out) +
-                       " (target edge " + short_number(target) + (density.empty() ? "" : ", shorter where the density is higher") +
+                       " (target edge " + short_number(target) + (sizing.empty() ? "" : ", shorter where the density is higher") +
                        ") so " + panels_text + " get about " + short_number(static_cast<double>(r.triangles_out) / panels) +
                        reason);
   if (result.feature_edges > 0)

@@ -58,6 +58,10 @@ struct PrepareOptions {
   // (1..kPrepareMaxRemeshRounds; from there up to refine_triangles_per_panel it is always 5).
   // 10 is the rule before 5 was measured (the same as refine_triangles_per_panel's 20).
   int refine_rounds = kPrepareRefineRounds;
+  // Empty, or one value > 0 per vertex of the mesh: a density the remeshing also sizes by
+  // (times the density argument), not carried to the prepared mesh. The density expression:
+  // the Remesher evaluates it on the prepared mesh itself, so carrying it would count it twice.
+  std::vector<double> sizing_density;
 };
 
 struct PrepareReport {
@@ -85,7 +89,8 @@ struct PreparedSurface {
 // edge length that is not positive or would need more than that, or gives fewer triangles
 // than panels, an edge length with mode Off, a negative distance_samples or huge_triangles, a
 // refine_triangles_per_panel outside kPrepareMinTrianglesPerPanel..kPrepareTargetTrianglesPerPanel,
-// a refine_rounds outside 1..kPrepareMaxRemeshRounds, or a density of the wrong size.
+// a refine_rounds outside 1..kPrepareMaxRemeshRounds, or a density (or sizing_density) of the
+// wrong size or with a value that is not finite and > 0.
 PreparedSurface prepare_surface(const TriMesh& mesh, int panels, const std::vector<double>& density,
                                 const PrepareOptions& options = {});
 

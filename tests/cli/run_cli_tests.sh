@@ -518,6 +518,25 @@ assert r['anisotropy'] == {'direction': 'x', 'stretch': 2}, r.get('anisotropy')
   --report "$tmp/dk.json" 2>"$tmp/err.txt"
 code=$?
 [ "$code" = 0 ] || [ "$code" = 3 ] && ok || bad "remesh curvature density / anisotropy (exit $code): $(cat "$tmp/err.txt")"
+# The preparation sizes by the expression as by a density file of its values: the same
+# refined mesh (before, the expression refined uniformly: 10,592 triangles against 11,588).
+python3 -c "
+import sys
+v = [list(map(float, l.split()[1:4])) for l in open(sys.argv[1]) if l.startswith('v ')]
+lo, hi = min(p[0] for p in v), max(p[0] for p in v)
+print('\\n'.join('4' if (p[0] - lo) / (hi - lo) < 0.5 else '1' for p in v))
+" "$meshes/inspired_mesh.obj" >"$tmp/half4.txt"
+"$bin" remesh "$meshes/inspired_mesh.obj" --panels 200 --iterations 1,1 --density "$tmp/half4.txt" \
+  --report "$tmp/pf.json" 2>/dev/null
+"$bin" remesh "$meshes/inspired_mesh.obj" --panels 200 --iterations 1,1 --density-expr "u < 0.5 ? 4 : 1" \
+  --report "$tmp/pe.json" 2>/dev/null
+"$bin" remesh "$meshes/inspired_mesh.obj" --panels 200 --iterations 1,1 --report "$tmp/pu.json" 2>/dev/null
+python3 -c "
+import json, sys
+f, e, u = (json.load(open(p))['prepare'] for p in sys.argv[1:4])
+assert e['triangles_out'] == f['triangles_out'] > u['triangles_out'], (f['triangles_out'], e['triangles_out'], u['triangles_out'])
+assert 'shorter where the density is higher' in e['messages'][0], e['messages'][0]
+" "$tmp/pf.json" "$tmp/pe.json" "$tmp/pu.json" && ok || bad "--density-expr sizes the preparation as --density does"
 python3 -c "import json, sys; r = json.load(open(sys.argv[1])); assert 'density_expression' not in r and 'anisotropy' not in r" \
   "$tmp/r1.json" && ok || bad "a report without the new options names them"
 expect_error 2 "density-expr: density expression has unknown name 'alert' at column 1" remesh "$e" --panels 10 \

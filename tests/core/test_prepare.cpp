@@ -204,6 +204,50 @@ TEST(Prepare, DensityMakesShorterEdgesWhereItIsHigherAndIsCarriedOver) {
   }
 }
 
+// The density expression sizes the preparation as the same field painted does (the CLI
+// passes it as PrepareOptions::sizing_density), but is not carried: the Remesher evaluates it
+// on the prepared mesh. Before, `--density-expr` refined uniformly where `--density` of the
+// same values refined where they were high.
+TEST(Prepare, ASizingDensitySizesAsTheSameDensityPaintedButIsNotCarried) {
+  const TriMesh saddle = make_saddle(200);
+  std::vector<double> density;
+  for (const Vec3& p : saddle.positions) density.push_back(p.x() < 0.0 ? 4.0 : 1.0);
+  const PreparedSurface painted = prepare_surface(saddle, 60, density);
+  PrepareOptions sized;
+  sized.sizing_density = density;
+  const PreparedSurface p = prepare_surface(saddle, 60, {}, sized);
+  ASSERT_TRUE(p.report.applied);
+  EXPECT_EQ(p.mesh.positions, painted.mesh.positions);
+  EXPECT_TRUE(p.density.empty());
+  EXPECT_TRUE(contains(p.report.messages, "shorter where the density is higher"));
+  const double left = mean_edge_length(p.mesh, [](const Vec3& q) { return q.x() < -4.0; });
+  const double right = mean_edge_length(p.mesh, [](const Vec3& q) { return q.x() > 4.0; });
+  EXPECT_NEAR(left / right, 0.5, 0.1);
+
+  // With a painted density too: sized by the product, carrying the paint alone.
+  std::vector<double> paint;
+  for (const Vec3& q : saddle.positions) paint.push_back(q.y() < 0.0 ? 4.0 : 1.0);
+  const PreparedSurface both = prepare_surface(saddle, 60, paint, sized);
+  ASSERT_EQ(both.density.size(), both.mesh.positions.size());
+  for (size_t v = 0; v < both.mesh.positions.size(); ++v) {
+    const Vec3& q = both.mesh.positions[v];
+    if (std::abs(q.y()) > 3.0) {
+      EXPECT_NEAR(both.density[v], q.y() < 0.0 ? 4.0 : 1.0, 1e-9) << "vertex " << v;
+    }
+  }
+  // Density 16 (both high) against 1 (neither): edges about a quarter as long.
+  const double dense = mean_edge_length(both.mesh, [](const Vec3& q) { return q.x() < -4.0 && q.y() < -4.0; });
+  const double sparse = mean_edge_length(both.mesh, [](const Vec3& q) { return q.x() > 4.0 && q.y() > 4.0; });
+  std::printf("[ prepare  ] sizing 16 vs 1: mean edges %.3g vs %.3g (ratio %.2f)\n", dense, sparse, dense / sparse);
+  EXPECT_NEAR(dense / sparse, 0.25, 0.08);
+
+  sized.sizing_density.pop_back();
+  EXPECT_THROW(prepare_surface(saddle, 60, {}, sized), InputError);
+  sized.sizing_density = std::vector<double>(saddle.positions.size(), 1.0);
+  sized.sizing_density[3] = std::nan("");
+  EXPECT_THROW(prepare_surface(saddle, 60, {}, sized), InputError);
+}
+
 TEST(Prepare, ImpossibleRequestsAreClearErrors) {
   const TriMesh epcot = test::load_clean("epcot.off");
   EXPECT_THROW(prepare_surface(epcot, 0, {}), InputError);
