@@ -8,6 +8,7 @@
 #include <tuple>
 
 #include "core/panels/panel_check.h"
+#include "core/panels/panel_crossings.h"
 #include "core/panels/polygon2d.h"
 #include "core/quality/hausdorff.h"
 #include "core/quality/planarity.h"
@@ -328,6 +329,24 @@ QualityReport measure_quality(const TriMesh& input, const MeshTopology& input_to
     if (producer_invalid || !simple || kernel.empty() || flipped > 0 || has_spike || misoriented || glass_invalid) {
       r.invalid_panel_ids.push_back(p);
       source_invalid[source_of(static_cast<size_t>(p))] = 1;
+    }
+  }
+  // Panels that pass through each other (the indices were checked in the loop above):
+  // reported, not yet counted invalid (report.h).
+  if (panels.plane_normals.size() == np) {
+    std::vector<double> offsets = panels.plane_offsets;
+    if (offsets.size() != np) {  // planes given by their normals only: through the first vertex
+      offsets.assign(np, 0.0);
+      for (size_t p = 0; p < np; ++p) {
+        if (!panels.panels[p].empty() && panels.panels[p][0] >= 0 &&
+            static_cast<size_t>(panels.panels[p][0]) < panels.vertices.size())
+          offsets[p] = panels.plane_normals[p].dot(panels.vertices[static_cast<size_t>(panels.panels[p][0])]);
+      }
+    }
+    for (const PanelCrossing& c : panel_crossings(panels.vertices, panels.panels, panels.plane_normals, offsets)) {
+      r.crossing_pairs.push_back({c.a, c.b});
+      r.crossing_points.push_back(c.point);
+      r.max_crossing_depth = std::max(r.max_crossing_depth, c.depth_share);
     }
   }
   // A cluster that could not become a panel leaves its faces uncovered: it counts as an

@@ -102,6 +102,14 @@ struct QualityReport {
   int min_panel_coverage_panel = -1;
   int min_panel_coverage_cluster = -1;  // panels.panel_cluster of that panel, -1 when not known
   int collapsed_panels = 0;
+  // Panels that pass through each other in space (panel_crossings.h): the pairs (panel
+  // indices, a < b), each pair's deepest point inside both (world coordinates) and its depth
+  // over the smaller panel's diameter. Reported, not yet counted in invalid_panels: the panel
+  // phase does not avoid them yet (on cow.off most runs have some, around its thin tail), and
+  // the CLI warns (bench/README.md, "Panels that pass through each other").
+  std::vector<std::array<int, 2>> crossing_pairs;
+  std::vector<Vec3> crossing_points;
+  double max_crossing_depth = 0.0;
 };
 
 // input_topology = build_topology(input). D = sqrt(total_area(input) / panels). Throws

@@ -81,6 +81,18 @@ void write_quality_fields(JsonWriter& j, const QualityReport& q) {
   j.value("min_panel_coverage_panel", q.min_panel_coverage_panel);
   j.value("min_panel_coverage_cluster", q.min_panel_coverage_cluster);
   j.value("collapsed_panels", q.collapsed_panels);
+  // Panels passing through each other: each pair, its deepest point, and the deepest share.
+  j.begin_array("crossing_panels");
+  for (size_t k = 0; k < q.crossing_pairs.size(); ++k) {
+    j.begin_object();
+    j.begin_array("panels").value(nullptr, q.crossing_pairs[k][0]).value(nullptr, q.crossing_pairs[k][1]).end_array();
+    j.begin_array("point");
+    for (int c = 0; c < 3; ++c) j.value(nullptr, q.crossing_points[k][c]);
+    j.end_array();
+    j.end_object();
+  }
+  j.end_array();
+  j.value("max_crossing_depth", q.max_crossing_depth);
 }
 
 std::vector<InvalidPanel> list_invalid_panels(const PanelMesh& pm, const QualityReport& q) {
@@ -140,6 +152,21 @@ std::string invalid_panels_phrase(const PanelMesh& pm, const QualityReport& q) {
   for (size_t k = 0; k < counts.size(); ++k)
     out += (k > 0 ? ", " : "") + counts[k].first + " " + std::to_string(counts[k].second);
   return out + ")";
+}
+
+std::string crossing_phrase(const QualityReport& q) {
+  const size_t n = q.crossing_pairs.size();
+  if (n == 0) return "";
+  std::string pairs;
+  for (size_t k = 0; k < n && k < 4; ++k) {
+    pairs += (k > 0 ? ", P" : "P") + std::to_string(q.crossing_pairs[k][0] + 1) + " and P" +
+             std::to_string(q.crossing_pairs[k][1] + 1);
+  }
+  if (n > 4) pairs += ", ...";
+  return std::to_string(n) + (n == 1 ? " pair" : " pairs") + " of panels pass through each other (" + pairs +
+         "; the deepest " + short_number(100.0 * q.max_crossing_depth) +
+         "% of the smaller panel's size into both; --report lists them as crossing_panels): they cannot be built as "
+         "drawn; more panels there, or another --seed or --panels count, may avoid it";
 }
 
 std::string planarity_phrase(const QualityReport& q) {

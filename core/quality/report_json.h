@@ -67,4 +67,8 @@ constexpr double kPlanarityTarget = 1e-9;
 // middle of the mesh, about which the panels are solved, far from them (planarity_floor_solve).
 std::string planarity_phrase(const QualityReport& quality);
 
+// Panels that pass through each other (QualityReport::crossing_pairs), as one clause naming
+// the first pairs (labels P1.. as in the parts list) and the deepest; empty when none.
+std::string crossing_phrase(const QualityReport& quality);
+
 }  // namespace ff

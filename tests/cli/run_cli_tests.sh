@@ -204,7 +204,8 @@ m = re.fullmatch(r'flatfacet: (\d+) panels? invalid \((.+)\) after 1 solve; --re
 assert m and int(m.group(1)) == len(r['invalid']) > 0, (line, r['invalid'])
 names = {p for entry in r['invalid'] for p in entry['problems']}
 assert {part.rsplit(' ', 1)[0] for part in m.group(2).split(', ')} == names, (line, names)" "$tmp/cow0.json" "$tmp/err0.txt" &&
-  [ ! -s "$tmp/err2.txt" ] && ok || bad "remesh exit 3: stderr names the invalid panels ($(cat "$tmp/err0.txt")); valid: silent ($(cat "$tmp/err2.txt"))"
+  ! grep -v "pass through each other" "$tmp/err2.txt" | grep -q . &&
+  ok || bad "remesh exit 3: stderr names the invalid panels ($(cat "$tmp/err0.txt")); valid: silent but for crossing panels ($(cat "$tmp/err2.txt"))"
 if [ "$code0" = 3 ] && [ "$code2" = 0 ] &&
   check_remesh 3 "$tmp/cow0.obj" "$tmp/cow0.json" 78 && check_remesh 0 "$tmp/cow2.obj" "$tmp/cow2.json" 78 &&
   python3 -c "
@@ -518,6 +519,21 @@ assert r['anisotropy'] == {'direction': 'x', 'stretch': 2}, r.get('anisotropy')
   --report "$tmp/dk.json" 2>"$tmp/err.txt"
 code=$?
 [ "$code" = 0 ] || [ "$code" = 3 ] && ok || bad "remesh curvature density / anisotropy (exit $code): $(cat "$tmp/err.txt")"
+# Panels passing through each other are listed and warned about (not yet counted invalid):
+# cow.off at 70 panels, seed 1, where the tail lies along the rump; the bunny has none.
+"$bin" remesh "$meshes/cow.off" --panels 70 --report "$tmp/cross.json" 2>"$tmp/err.txt"
+code=$?
+[ "$code" = 0 ] && grep -q "warning: [0-9]* pairs\? of panels pass through each other (P[0-9]* and P[0-9]*" "$tmp/err.txt" &&
+  python3 -c "
+import json, sys
+r = json.load(open(sys.argv[1]))
+assert len(r['crossing_panels']) > 0 and 0.01 < r['max_crossing_depth'] < 1, r['crossing_panels']
+assert all(len(c['panels']) == 2 and len(c['point']) == 3 for c in r['crossing_panels'])
+" "$tmp/cross.json" && ok || bad "cow.off crossing panels warned and listed (exit $code): $(cat "$tmp/err.txt")"
+"$bin" remesh "$meshes/bunny.off" --panels 100 --report "$tmp/nocross.json" 2>"$tmp/err.txt"
+! grep -q "pass through each other" "$tmp/err.txt" &&
+  python3 -c "import json, sys; assert json.load(open(sys.argv[1]))['crossing_panels'] == []" "$tmp/nocross.json" &&
+  ok || bad "bunny.off: no crossing panels: $(cat "$tmp/err.txt")"
 # The preparation sizes by the expression as by a density file of its values: the same
 # refined mesh (before, the expression refined uniformly: 10,592 triangles against 11,588).
 python3 -c "

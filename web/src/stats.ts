@@ -1,6 +1,7 @@
 // The quality panel: the report's numbers in words a designer reads (DESIGN.md 5 targets).
 import type { QualityReport, SolveResult } from './protocol.ts';
 import { coverageRow } from './coverage.ts';
+import { crossingRow } from './crossings.ts';
 import { planarityRow } from './planarity.ts';
 import { numberAt } from './reportNumber.ts';
 import { scientific } from './scientific.ts';
@@ -59,6 +60,7 @@ export function statsRows(result: SolveResult): Row[] {
   const minAngleTarget = numberAt(report, 'min_corner_angle_target_deg') ?? 0;
   const acute = numberAt(report, 'acute_corners');
   const coverage = coverageRow(report);
+  const crossing = crossingRow(report);
   const undirected = numberAt(report, 'anisotropy_isotropic_faces');
   const before = result.cornerPlanarity.length > 0 ? result.cornerPlanarity.reduce((worst, value) => Math.max(worst, value), 0) : null;
   return [
@@ -76,6 +78,7 @@ export function statsRows(result: SolveResult): Row[] {
       ? [{ label: 'No direction', value: String(undirected), hint: 'triangles where the direction expression is zero or along the surface normal: no stretch there' }]
       : []),
     { label: 'Invalid', value: invalid === null ? '–' : String(invalid), hint: `panels that are not simple, star-shaped and spike-free (shown red), and clusters that could not become panels${invalidWhy}`, warn: (invalid ?? 0) > 0 },
+    ...(crossing ? [crossing] : []),
     { label: 'Topology', value: topology === true ? 'preserved' : topology === false ? 'changed' : '–', hint: 'same Euler characteristic and boundary loops as the input', warn: topology === false },
     { label: 'Solve time', value: `${result.solveSeconds.toFixed(2)} s`, hint: total === null ? 'in the worker' : `in the worker; the core reports ${total.toFixed(2)} s` },
   ];

@@ -1,0 +1,35 @@
+// The Quality section's crossing row (web/src/crossings.ts): the report's pairs of panels that
+// pass through each other, named as the parts list names them, with a warning.
+import assert from 'node:assert/strict';
+import { test } from 'node:test';
+import { crossingPairs, crossingRow } from '../../build/web-tests/crossings.js';
+
+test('pairs are named P1 ... and warned about with the deepest share', () => {
+  const report = {
+    crossing_panels: [
+      { panels: [36, 37], point: [0, 0, 0] },
+      { panels: [44, 51], point: [1, 2, 3] },
+    ],
+    max_crossing_depth: 0.0479,
+  };
+  assert.deepEqual(crossingPairs(report), [['P37', 'P38'], ['P45', 'P52']]);
+  const row = crossingRow(report);
+  assert.equal(row.label, 'Crossing');
+  assert.equal(row.value, '2');
+  assert.equal(row.warn, true);
+  assert.match(row.hint, /\(P37 and P38, P45 and P52; the deepest 4\.8 % of the smaller panel's size\): they cannot be built/);
+});
+
+test('none: a quiet zero; more than four: the first four', () => {
+  const none = crossingRow({ crossing_panels: [], max_crossing_depth: 0 });
+  assert.equal(none.value, '0');
+  assert.equal(none.warn, false);
+  const many = crossingRow({ crossing_panels: [0, 1, 2, 3, 4].map((k) => ({ panels: [k, k + 10] })) });
+  assert.match(many.hint, /\(P1 and P11, P2 and P12, P3 and P13, P4 and P14, \.\.\.\): they/);
+});
+
+test('no row from an older report or a malformed list', () => {
+  for (const bad of [{}, { crossing_panels: 3 }, { crossing_panels: [{ panels: [1] }] },
+    { crossing_panels: [{ panels: [1, -2] }] }, { crossing_panels: [{ panels: [1.5, 2] }] }, { crossing_panels: [null] }])
+    assert.equal(crossingRow(bad), null, JSON.stringify(bad));
+});

@@ -1,0 +1,35 @@
+// The Quality section's crossing row: pairs of panels that pass through each other in space
+// (report crossing_panels, core/panels/panel_crossings.h). The solver does not avoid them yet
+// and does not count them invalid, so the row is the designer's warning: such panels cannot
+// be built as drawn.
+import type { QualityReport } from './protocol.ts';
+import type { StatRow } from './statsList.ts';
+
+// The pairs as the parts list labels them (P1 ...), or null when the report has no usable list.
+export function crossingPairs(report: QualityReport): [string, string][] | null {
+  const list = report.crossing_panels;
+  if (!Array.isArray(list)) return null;
+  const pairs: [string, string][] = [];
+  for (const entry of list) {
+    const panels = typeof entry === 'object' && entry !== null ? (entry as Record<string, unknown>).panels : null;
+    if (!Array.isArray(panels) || panels.length !== 2) return null;
+    const [a, b] = panels;
+    if (!Number.isInteger(a) || !Number.isInteger(b) || (a as number) < 0 || (b as number) < 0) return null;
+    pairs.push([`P${(a as number) + 1}`, `P${(b as number) + 1}`]);
+  }
+  return pairs;
+}
+
+export function crossingRow(report: QualityReport): StatRow | null {
+  const pairs = crossingPairs(report);
+  if (pairs === null) return null;
+  const depth = report.max_crossing_depth;
+  const shown = pairs.slice(0, 4).map(([a, b]) => `${a} and ${b}`).join(', ') + (pairs.length > 4 ? ', ...' : '');
+  const hint =
+    pairs.length === 0
+      ? 'pairs of panels that pass through each other in space: none'
+      : `pairs of panels that pass through each other in space (${shown}` +
+        (typeof depth === 'number' && Number.isFinite(depth) ? `; the deepest ${(depth * 100).toFixed(1)} % of the smaller panel's size` : '') +
+        '): they cannot be built as drawn, and the solver does not avoid them yet. More panels there, or another seed or panel count, may.';
+  return { label: 'Crossing', value: String(pairs.length), hint, warn: pairs.length > 0 };
+}
