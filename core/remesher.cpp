@@ -231,6 +231,7 @@ std::unique_ptr<PanelAttempt> Remesher::make_attempt() {
   options.fixed_planes = settled_planes_;
   hold(options.fixed, options.fixed_planes);  // locked panels and their neighbours
   options.layout.held_nodes = held_nodes();
+  options.layout.held_single = held_single();
   options.hinge_of = hinges();
   locked_limits(options.layout.locked_spike_distance, options.layout.locked_diameter);
   const std::vector<ClusterMoments>& moments = moments_.update(faces_, clustering_.labels, clustering_.num_clusters());
@@ -553,7 +554,7 @@ void Remesher::optimize_planes() {
   // their neighbours).
   layout.widen_needle_corners(kNeedleCornerDeg, held_clusters());
   // Last: it pins planes to points, which the fit above would undo.
-  if (params_.single_point_nodes) layout.make_single_point_nodes();
+  if (params_.single_point_nodes) layout.make_single_point_nodes(held_clusters());
   if (start_needle_rounds()) return;
   finish_layout();
 }
@@ -691,6 +692,16 @@ void Remesher::set_params(RemeshParams params) {
     if (same_solve(params, params_)) return;  // nothing changed: no re-solve
   }
   const int target = keep_count ? old_panels : params.panels;
+  if (!restart && !locks_.empty()) {
+    const int least = least_panels_with_locks();
+    if (target < least)
+      throw InputError(std::to_string(target) + " panels cannot keep the " + std::to_string(locks_.size()) +
+                       (locks_.size() == 1 ? " locked panel" : " locked panels") +
+                       ": with their neighbours they hold " + std::to_string(least - free_parts_with_locks()) +
+                       " panels, and the rest of the surface needs at least " +
+                       std::to_string(free_parts_with_locks()) + "; ask for at least " + std::to_string(least) +
+                       ", or unlock some");
+  }
   params_ = std::move(params);
   earlier_ = EarlierSolve{};  // a new solve: its own retries
   retries_done_ = 0;

@@ -226,6 +226,8 @@ class Remesher {
     std::vector<Held> held;
     // Its outline's nodes, each named by a face of each of its three clusters (-1: the border).
     std::vector<std::array<int, 3>> nodes;
+    // Its corners' node groups made one point, each named by a face of each of its clusters.
+    std::vector<std::vector<int>> single_groups;
     // The spike distance (world units) the design had when it was locked: its vertices keep
     // being judged by it (LayoutOptions::locked_spike_distance).
     double spike_distance = 0.0;
@@ -249,7 +251,12 @@ class Remesher {
   // LayoutOptions::locked_spike_distance and locked_diameter.
   void locked_limits(std::vector<double>& spike_distance, std::vector<double>& diameter) const;
   std::vector<std::array<int, 3>> held_nodes() const;  // LayoutOptions::held_nodes
+  std::vector<std::vector<int>> held_single() const;   // LayoutOptions::held_single
   void lloyd_step_held();
+  // The fewest panels a count change can reach with the locks: the held clusters, and one
+  // cluster for each part of the surface they leave free (free_parts_with_locks).
+  int least_panels_with_locks() const;
+  int free_parts_with_locks() const;
   void change_count_held(int target);
 
   TriMesh mesh_;
@@ -329,7 +336,7 @@ class Remesher {
   // already in the design when the parameters last changed, and the design before the first
   // edit after that (the base undo and redo replay from).
   std::vector<Plane> cluster_planes_;
-  std::vector<std::vector<std::array<int, 3>>> cluster_nodes_;  // per cluster: its nodes' clusters
+  std::vector<CornerNodes> cluster_nodes_;  // per cluster: its corners' nodes and one-point groups
   std::vector<Lock> locks_;
   size_t next_edit_ = 0;
   size_t base_edits_ = 0;

@@ -46,7 +46,7 @@ struct Remesher::EditState {
   bool converged = false;
   std::vector<char> settled;
   std::vector<Plane> settled_planes, cluster_planes;
-  std::vector<std::vector<std::array<int, 3>>> cluster_nodes;
+  std::vector<CornerNodes> cluster_nodes;
   std::vector<Lock> locks;
   size_t next_edit = 0, base_edits = 0;
   std::shared_ptr<const EditState> base;
@@ -189,9 +189,15 @@ void Remesher::apply_edit(const PanelEdit& e, size_t index) {
       // cluster its faces do not touch (nor share a vertex with), whose plane makes two of
       // its corners.
       std::vector<int> clusters = cluster_ring(mesh_, topology_, labels, c);
-      for (const std::array<int, 3>& t : cluster_nodes_[static_cast<size_t>(c)]) {
+      const CornerNodes& corners = cluster_nodes_[static_cast<size_t>(c)];
+      for (const std::array<int, 3>& t : corners.nodes) {
         for (int k : t) {
           if (k != kBoundary && k != c) clusters.push_back(k);
+        }
+      }
+      for (const std::vector<int>& group : corners.single_groups) {
+        for (int k : group) {
+          if (k != c) clusters.push_back(k);
         }
       }
       std::sort(clusters.begin(), clusters.end());
@@ -206,12 +212,19 @@ void Remesher::apply_edit(const PanelEdit& e, size_t index) {
         h.plane = cluster_planes_[static_cast<size_t>(k)];
         lock.held.push_back(std::move(h));
       }
-      for (const std::array<int, 3>& t : cluster_nodes_[static_cast<size_t>(c)]) {
+      const auto face_of = [&](int cluster) {
+        const auto it = std::find(clusters.begin(), clusters.end(), cluster);
+        return lock.held[static_cast<size_t>(it - clusters.begin())].face;
+      };
+      for (const std::vector<int>& group : corners.single_groups) {
+        std::vector<int> named;
+        for (int k : group) named.push_back(face_of(k));
+        lock.single_groups.push_back(std::move(named));
+      }
+      for (const std::array<int, 3>& t : corners.nodes) {
         std::array<int, 3> named{-1, -1, -1};
         for (size_t k = 0; k < 3; ++k) {
-          if (t[k] == kBoundary) continue;
-          const auto it = std::find(clusters.begin(), clusters.end(), t[k]);
-          named[k] = lock.held[static_cast<size_t>(it - clusters.begin())].face;
+          if (t[k] != kBoundary) named[k] = face_of(t[k]);
         }
         lock.nodes.push_back(named);
       }

@@ -29,6 +29,19 @@ std::vector<std::array<int, 3>> Remesher::held_nodes() const {
   return out;
 }
 
+std::vector<std::vector<int>> Remesher::held_single() const {
+  std::vector<std::vector<int>> out;
+  for (const Lock& lock : locks_) {
+    for (const std::vector<int>& named : lock.single_groups) {
+      std::vector<int> group;
+      for (int face : named) group.push_back(clustering_.labels[static_cast<size_t>(face)]);
+      std::sort(group.begin(), group.end());
+      out.push_back(std::move(group));
+    }
+  }
+  return out;
+}
+
 std::vector<char> Remesher::held_clusters() const {
   if (locks_.empty()) return {};
   std::vector<char> out(static_cast<size_t>(clustering_.num_clusters()), 0);
@@ -108,6 +121,34 @@ std::vector<int> Remesher::locked_clusters() const {
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
+}
+
+int Remesher::free_parts_with_locks() const {
+  const std::vector<int> held = held_labels();
+  std::vector<char> seen(held.size(), 0);
+  std::vector<int> stack;
+  int parts = 0;
+  for (size_t f = 0; f < held.size(); ++f) {
+    if (held[f] >= 0 || seen[f]) continue;
+    ++parts;
+    seen[f] = 1;
+    stack.push_back(static_cast<int>(f));
+    while (!stack.empty()) {
+      const int g = stack.back();
+      stack.pop_back();
+      for (int h : topology_.face_neighbors[static_cast<size_t>(g)]) {
+        if (h < 0 || held[static_cast<size_t>(h)] >= 0 || seen[static_cast<size_t>(h)]) continue;
+        seen[static_cast<size_t>(h)] = 1;
+        stack.push_back(h);
+      }
+    }
+  }
+  return parts;
+}
+
+int Remesher::least_panels_with_locks() const {
+  const std::vector<char> held = held_clusters();
+  return static_cast<int>(std::count(held.begin(), held.end(), 1)) + free_parts_with_locks();
 }
 
 // A Lloyd iteration that leaves held clusters as they are (their faces fixed in the flood).

@@ -89,6 +89,17 @@ PanelLayout::PanelLayout(const TriMesh& mesh, const MeshTopology& topology, cons
       pairing_[g] = chosen;
     }
     place_group_nodes(static_cast<int>(g));
+    if (held_group_[g] && !options_.held_single.empty()) {
+      // A group a lock holds as one point: its planes are held through it, so its nodes
+      // coincide; one vertex, where the first is (make_group_single's aliasing).
+      std::vector<int> clusters = clusters_of_group(static_cast<int>(g));
+      std::sort(clusters.begin(), clusters.end());
+      if (std::find(options_.held_single.begin(), options_.held_single.end(), clusters) != options_.held_single.end()) {
+        single_[g] = 1;
+        single_point_[g] = node_point_[static_cast<size_t>(node_offset_[g])];
+        place_group_nodes(static_cast<int>(g));
+      }
+    }
   }
   on_short_loop_.assign(positions_.size(), 0);
   std::vector<int> loop_groups;
@@ -129,14 +140,19 @@ std::array<int, 3> PanelLayout::node_clusters(int node) const {
   return out;
 }
 
-std::vector<std::array<int, 3>> PanelLayout::corner_nodes(int cluster) const {
-  std::vector<std::array<int, 3>> out;
+CornerNodes PanelLayout::corner_nodes(int cluster) const {
+  CornerNodes out;
   std::vector<int> around;
   for (int g : groups_of_cluster_[static_cast<size_t>(cluster)]) {
     const NodeGroup& group = groups_.groups[static_cast<size_t>(g)];
     const int size = static_cast<int>(group.clusters.size());
     triangles_around(pairing_[static_cast<size_t>(g)], size, position_of(group.clusters, cluster), around);
-    for (int t : around) out.push_back(node_clusters(node_offset_[static_cast<size_t>(g)] + t));
+    for (int t : around) out.nodes.push_back(node_clusters(node_offset_[static_cast<size_t>(g)] + t));
+    if (single_[static_cast<size_t>(g)]) {
+      std::vector<int> clusters = clusters_of_group(g);
+      std::sort(clusters.begin(), clusters.end());
+      out.single_groups.push_back(std::move(clusters));
+    }
   }
   return out;
 }

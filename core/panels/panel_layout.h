@@ -32,6 +32,9 @@ struct LayoutOptions {
   // the corners of locked panels (remesher_edits.cpp), so their outlines stay. A group with
   // any keeps the pairing that has them all (none: as usual) and is never switched.
   std::vector<std::array<int, 3>> held_nodes;
+  // Cluster sets (sorted) of node groups a lock holds as one point: a group of exactly these
+  // clusters is laid out as one vertex, where its planes meet (they are held through it).
+  std::vector<std::vector<int>> held_single;
   // Per cluster (empty for none): the spike distance a locked panel was locked with (0 for a
   // cluster not locked). Its vertices keep being judged by it (the larger of it and
   // spike_distance), in every panel they are on: the outline is kept exactly, while the
@@ -43,6 +46,12 @@ struct LayoutOptions {
 };
 
 // A panel's polygon: its vertices (local frame) in counter-clockwise order.
+// What a lock holds of a panel's corners (PanelLayout::corner_nodes).
+struct CornerNodes {
+  std::vector<std::array<int, 3>> nodes;         // each node's clusters, sorted
+  std::vector<std::vector<int>> single_groups;  // each group made one point: its clusters, sorted
+};
+
 struct PanelPolygon {
   std::vector<Vec3> points;
   std::vector<int> node;        // per vertex: node id, or -1 for an extra border vertex
@@ -84,8 +93,8 @@ class PanelLayout {
   // The clusters of every node at the corners of the panel of `cluster`, each node as its
   // own: where a group's nodes meet in one point, its outline shows the group's first node,
   // which may not be one of this panel's (node_clusters of PanelPolygon::node would name a
-  // cluster across the point).
-  std::vector<std::array<int, 3>> corner_nodes(int cluster) const;
+  // cluster across the point); and the clusters of the groups there made one point.
+  CornerNodes corner_nodes(int cluster) const;
   // The mesh vertices where the panel of `cluster` has a problem (spikes, or every corner of
   // a panel that is flipped or not star-shaped): where a split should seed.
   std::vector<int> problem_corners(int cluster) const;
@@ -167,8 +176,10 @@ class PanelLayout {
   // be made to pass through two such points (a translation, then a rotation about the first);
   // a group that would need a third on some plane stays split, as does one whose change
   // makes a panel around it invalid. Exact: the vertex lies on every plane by construction.
-  // Returns the number of groups made single.
-  int make_single_point_nodes();
+  // Returns the number of groups made single. Planes of `fixed_clusters` (per cluster; empty:
+  // none), a locked panel's and its neighbours', stay as they are, and so do the groups whose
+  // pairing a lock holds.
+  int make_single_point_nodes(const std::vector<char>& fixed_clusters = {});
 
   // From now on a panel whose plane faces away from its faces (the sum of their area
   // normals) is flipped too, as the quality report (core/quality/report.cpp) calls it

@@ -55,14 +55,18 @@ bool through_points(const Plane& plane, const std::vector<Vec3>& points, double 
 
 }  // namespace
 
-int PanelLayout::make_single_point_nodes() {
+int PanelLayout::make_single_point_nodes(const std::vector<char>& fixed_clusters) {
   std::vector<std::vector<Vec3>> through(planes_.planes.size());  // points each plane must contain
-  // Planes already pinned through a single point (single_point_fix) count as full: they stay.
+  // Planes already pinned through a single point (single_point_fix) count as full: they stay,
+  // as do the fixed ones.
   for (int m : single_point_masters()) through[static_cast<size_t>(m)].assign(2, Vec3::Zero());
+  for (size_t c = 0; c < fixed_clusters.size() && c < planes_.master_of.size(); ++c) {
+    if (fixed_clusters[c]) through[static_cast<size_t>(planes_.master_of[c])].assign(2, Vec3::Zero());
+  }
   int made = 0;
   for (size_t g = 0; g < groups_.groups.size(); ++g) {
     const NodeGroup& group = groups_.groups[g];
-    if (group.on_boundary || single_[g]) continue;
+    if (group.on_boundary || single_[g] || held_group_[g]) continue;
     std::vector<int> masters;
     for (int c : clusters_of_group(static_cast<int>(g))) {
       const int m = planes_.master_of[static_cast<size_t>(c)];
