@@ -695,12 +695,11 @@ void Remesher::set_params(RemeshParams params) {
   if (!restart && !locks_.empty()) {
     const int least = least_panels_with_locks();
     if (target < least)
-      throw InputError(std::to_string(target) + " panels cannot keep the " + std::to_string(locks_.size()) +
-                       (locks_.size() == 1 ? " locked panel" : " locked panels") +
-                       ": with their neighbours they hold " + std::to_string(least - free_parts_with_locks()) +
-                       " panels, and the rest of the surface needs at least " +
-                       std::to_string(free_parts_with_locks()) + "; ask for at least " + std::to_string(least) +
-                       ", or unlock some");
+      throw InputError(
+          std::to_string(target) + " panels cannot keep the " + std::to_string(locks_.size()) +
+          (locks_.size() == 1 ? " locked panel" : " locked panels") + ": with their neighbours they hold " +
+          std::to_string(least - free_parts_with_locks()) + " panels, and the rest of the surface needs at least " +
+          std::to_string(free_parts_with_locks()) + "; ask for at least " + std::to_string(least) + ", or unlock some");
   }
   params_ = std::move(params);
   earlier_ = EarlierSolve{};  // a new solve: its own retries

@@ -65,7 +65,8 @@ std::vector<double> stretches(const std::vector<Vec3>& vertices, const std::vect
 
 }  // namespace
 
-std::vector<PanelCrossing> panel_crossings(const std::vector<Vec3>& vertices, const std::vector<std::vector<int>>& panels,
+std::vector<PanelCrossing> panel_crossings(const std::vector<Vec3>& vertices,
+                                           const std::vector<std::vector<int>>& panels,
                                            const std::vector<Vec3>& normals, const std::vector<double>& offsets) {
   std::vector<PanelCrossing> out;
   const size_t np = panels.size();
@@ -127,8 +128,9 @@ std::vector<PanelCrossing> panel_crossings(const std::vector<Vec3>& vertices, co
       }
     }
   }
-  std::sort(out.begin(), out.end(),
-            [](const PanelCrossing& x, const PanelCrossing& y) { return std::make_pair(x.a, x.b) < std::make_pair(y.a, y.b); });
+  std::sort(out.begin(), out.end(), [](const PanelCrossing& x, const PanelCrossing& y) {
+    return std::make_pair(x.a, x.b) < std::make_pair(y.a, y.b);
+  });
   return out;
 }
 

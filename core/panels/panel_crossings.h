@@ -33,7 +33,8 @@ constexpr double kCrossingDepthShare = 1e-4;
 // vertices, panels: the panel mesh (PanelMesh::vertices and panels); normals and offsets: each
 // panel's plane (n.x = offset, unit n). Pairs in increasing (a, b) order. O(P log P) for the
 // box sweep plus O(n_a + n_b) per pair of overlapping boxes.
-std::vector<PanelCrossing> panel_crossings(const std::vector<Vec3>& vertices, const std::vector<std::vector<int>>& panels,
+std::vector<PanelCrossing> panel_crossings(const std::vector<Vec3>& vertices,
+                                           const std::vector<std::vector<int>>& panels,
                                            const std::vector<Vec3>& normals, const std::vector<double>& offsets);
 
 }  // namespace ff

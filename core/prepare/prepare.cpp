@@ -236,9 +236,9 @@ PreparedSurface prepare_surface(const TriMesh& mesh, int panels, const std::vect
   r.target_edge = target;
   const std::string verb = explicit_length ? "remeshed" : (r.triangles_out >= r.triangles_in ? "refined" : "coarsened");
   r.messages.push_back(verb + " " + with_commas(faces) + " triangles to " + with_commas(r.triangles_out) +
-                       " (target edge " + short_number(target) + (sizing.empty() ? "" : ", shorter where the density is higher") +
-                       ") so " + panels_text + " get about " + short_number(static_cast<double>(r.triangles_out) / panels) +
-                       reason);
+                       " (target edge " + short_number(target) +
+                       (sizing.empty() ? "" : ", shorter where the density is higher") + ") so " + panels_text +
+                       " get about " + short_number(static_cast<double>(r.triangles_out) / panels) + reason);
   if (result.feature_edges > 0)
     r.messages.push_back("kept " + with_commas(result.feature_edges) + " boundary and crease edges (sharper than " +
                          short_number(options.feature_angle_deg) + " degrees) as curves, " +

@@ -35,8 +35,8 @@ struct Panels {
 
 TEST(PanelCrossings, TwoSquaresThroughEachOtherCross) {
   Panels p;
-  p.add({{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}}, {0, 0, 1});    // z = 0
-  p.add({{-1, 0, -1}, {-1, 0, 1}, {1, 0, 1}, {1, 0, -1}}, {0, 1, 0});    // y = 0, through it
+  p.add({{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}}, {0, 0, 1});  // z = 0
+  p.add({{-1, 0, -1}, {-1, 0, 1}, {1, 0, 1}, {1, 0, -1}}, {0, 1, 0});  // y = 0, through it
   const std::vector<PanelCrossing> c = p.crossings();
   ASSERT_EQ(c.size(), 1u);
   EXPECT_EQ(c[0].a, 0);
@@ -50,7 +50,7 @@ TEST(PanelCrossings, TwoSquaresThroughEachOtherCross) {
 TEST(PanelCrossings, PanelsMeetingAlongAnEdgeOrAtACornerDoNotCross) {
   Panels p;
   p.add({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {0, 0, 1});
-  p.add({{1, 0, 0}, {1, 0, 1}, {1, 1, 1}, {1, 1, 0}}, {-1, 0, 0});  // folded up along x = 1
+  p.add({{1, 0, 0}, {1, 0, 1}, {1, 1, 1}, {1, 1, 0}}, {-1, 0, 0});   // folded up along x = 1
   p.add({{0, 1, 0}, {-1, 2, 1}, {-1, 2, 0}}, {1, 1, 0});             // touches at (0, 1, 0) only
   p.add({{0, 0, 0}, {0, 1, 0}, {-1, 1, 0}, {-1, 0, 0}}, {0, 0, 1});  // the same plane as the first
   EXPECT_TRUE(p.crossings().empty());
