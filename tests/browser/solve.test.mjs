@@ -373,6 +373,12 @@ test('a collapsed panel is named, marked and selected from its legend, then merg
     const row = page.locator('#stats dd.warn', { hasText: '% (P' });
     assert.equal((await row.textContent()).trim(), '1 % (P47)');
     assert.match(await row.getAttribute('title'), /1 here\. Select P47 and merge it with a neighbour/);
+    // The cow's panels also pass through each other where its tail lies along the rump: the
+    // Crossing row warns and names the pairs (not yet avoided by the solver).
+    const crossing = page.locator('#stats dt', { hasText: 'Crossing' }).locator('xpath=following-sibling::dd[1]');
+    assert.ok(Number(await crossing.textContent()) > 0);
+    assert.equal(await crossing.getAttribute('class'), 'warn');
+    assert.match(await crossing.getAttribute('title'), /pass through each other in space \(P\d+ and P\d+/);
     await row.scrollIntoViewIfNeeded();  // the Quality section, beside the view
     await screenshot(page, 'cow-61-collapsed-panel');
 
@@ -404,7 +410,7 @@ test('a collapsed panel is named, marked and selected from its legend, then merg
       }
     assert.equal(await edits(), 1, 'a panel beside the marker was merged with it');
     assert.equal(await waitForDone(page, since), 60, 'a merge makes one panel fewer');
-    assert.equal(await page.locator('#stats dd.warn').count(), 0, 'no collapsed panel after the merge');
+    assert.equal(await page.locator('#stats dd.warn', { hasText: '% (P' }).count(), 0, 'no collapsed panel after the merge');
     assert.equal(await legend.isHidden(), true);
     assert.equal(await viewPixels(page, LIME), 0, 'the marker is gone');
   });

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <memory>
 
 #include "cluster_checks.h"
 #include "core/cluster/cluster_edits.h"
@@ -141,12 +142,19 @@ PanelEdit edit(PanelEdit::Op op, int face, int with = -1) { return PanelEdit{op,
 
 class PanelEdits : public ::testing::TestWithParam<EditCase> {};
 
-TEST_P(PanelEdits, SplitAddsAPanelMergeRemovesOne) {
-  const EditCase& c = GetParam();
+// The case solved at its panel count (a Remesher cannot move: held by pointer).
+std::unique_ptr<Remesher> solve_case(const EditCase& c) {
   RemeshParams p;
   p.panels = c.panels;
-  Remesher r(case_mesh(c.name), p);
-  r.run();
+  auto r = std::make_unique<Remesher>(case_mesh(c.name), p);
+  r->run();
+  return r;
+}
+
+TEST_P(PanelEdits, SplitAddsAPanelMergeRemovesOne) {
+  const EditCase& c = GetParam();
+  const std::unique_ptr<Remesher> solved = solve_case(c);
+  Remesher& r = *solved;
   ASSERT_TRUE(test::valid_panels(r, c.panels, 0.08));
   const int split = big_panel_face(r);
   r.set_edits({edit(PanelEdit::Op::Split, split)});
@@ -187,10 +195,8 @@ std::string invalid_panels(const Remesher& r) {
 class PanelLocks : public PanelEdits {};
 TEST_P(PanelLocks, LockedPanelSurvivesReSolves) {
   const EditCase& c = GetParam();
-  RemeshParams p;
-  p.panels = c.panels;
-  Remesher r(case_mesh(c.name), p);
-  r.run();
+  const std::unique_ptr<Remesher> solved = solve_case(c);
+  Remesher& r = *solved;
   const int face = big_panel_face(r);
   r.set_edits({edit(PanelEdit::Op::Lock, face)});
   const PanelShot locked = shot(r, face);
@@ -245,10 +251,8 @@ std::vector<int> panels_with_a_node_only_neighbour(const Remesher& r) {
 // across, and the run ended valid).
 TEST_P(PanelLocks, LockHoldsPlanesThatMeetItOnlyAtANode) {
   const EditCase& c = GetParam();
-  RemeshParams p;
-  p.panels = c.panels;
-  Remesher r(case_mesh(c.name), p);
-  r.run();
+  const std::unique_ptr<Remesher> solved = solve_case(c);
+  Remesher& r = *solved;
   const std::vector<int> candidates = panels_with_a_node_only_neighbour(r);
   ASSERT_FALSE(candidates.empty()) << "no panel with a node-only neighbour: the case tests nothing";
   for (size_t k = 0; k < candidates.size() && k < 3; ++k) {

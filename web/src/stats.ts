@@ -78,8 +78,8 @@ export function statsRows(result: SolveResult): Row[] {
       ? [{ label: 'No direction', value: String(undirected), hint: 'triangles where the direction expression is zero or along the surface normal: no stretch there' }]
       : []),
     { label: 'Invalid', value: invalid === null ? '–' : String(invalid), hint: `panels that are not simple, star-shaped and spike-free (shown red), and clusters that could not become panels${invalidWhy}`, warn: (invalid ?? 0) > 0 },
-    ...(crossing ? [crossing] : []),
     { label: 'Topology', value: topology === true ? 'preserved' : topology === false ? 'changed' : '–', hint: 'same Euler characteristic and boundary loops as the input', warn: topology === false },
+    ...(crossing ? [crossing] : []),
     { label: 'Solve time', value: `${result.solveSeconds.toFixed(2)} s`, hint: total === null ? 'in the worker' : `in the worker; the core reports ${total.toFixed(2)} s` },
   ];
 }
