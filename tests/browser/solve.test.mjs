@@ -36,6 +36,7 @@ const suite = browserSuite();
 const CYAN = [34, 211, 238]; // the farthest point's marker (view/problemLayer.ts)
 const VIOLET = [168, 85, 247]; // the sharpest corner's marker (view/problemLayer.ts)
 const LIME = [163, 230, 53]; // a collapsed panel's marker (view/problemLayer.ts)
+const ORANGE = [249, 115, 22]; // where panels cross (view/problemLayer.ts)
 const { withPage } = suite;
 
 test('an example remeshes to the requested count; the OBJ is planar and the parts list matches', () =>
@@ -379,6 +380,8 @@ test('a collapsed panel is named, marked and selected from its legend, then merg
     assert.ok(Number(await crossing.textContent()) > 0);
     assert.equal(await crossing.getAttribute('class'), 'warn');
     assert.match(await crossing.getAttribute('title'), /pass through each other in space \(P\d+ and P\d+/);
+    assert.match(await page.locator('#crossing-legend').textContent(), /Panels passing through each other: \d+ pairs/);
+    assert.ok((await viewPixels(page, ORANGE)) > 10, 'orange markers where they cross');
     await row.scrollIntoViewIfNeeded();  // the Quality section, beside the view
     await screenshot(page, 'cow-61-collapsed-panel');
 

@@ -2,7 +2,7 @@
 // pass through each other, named as the parts list names them, with a warning.
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
-import { crossingPairs, crossingRow } from '../../build/web-tests/crossings.js';
+import { crossingNote, crossingPairs, crossingPoints, crossingRow } from '../../build/web-tests/crossings.js';
 
 test('pairs are named P1 ... and warned about with the deepest share', () => {
   const report = {
@@ -32,4 +32,15 @@ test('no row from an older report or a malformed list', () => {
   for (const bad of [{}, { crossing_panels: 3 }, { crossing_panels: [{ panels: [1] }] },
     { crossing_panels: [{ panels: [1, -2] }] }, { crossing_panels: [{ panels: [1.5, 2] }] }, { crossing_panels: [null] }])
     assert.equal(crossingRow(bad), null, JSON.stringify(bad));
+});
+
+test('the markers: the deepest point of each pair; the legend line counts the pairs', () => {
+  const report = { crossing_panels: [{ panels: [1, 2], point: [1, 2, 3] }, { panels: [2, 5], point: [4, 5, 6] }] };
+  assert.deepEqual(crossingPoints(report), [1, 2, 3, 4, 5, 6]);
+  assert.equal(crossingNote(report), 'Panels passing through each other: 2 pairs (paint more density there)');
+  assert.equal(crossingNote({ crossing_panels: [{ panels: [1, 2], point: [1, 2, 3] }] }), 'Panels passing through each other: 1 pair (paint more density there)');
+  for (const none of [{}, { crossing_panels: [] }, { crossing_panels: [{ panels: [1, 2], point: [1, NaN, 3] }] }]) {
+    assert.equal(crossingNote(none), null, JSON.stringify(none));
+  }
+  assert.deepEqual(crossingPoints({ crossing_panels: [{ panels: [1, 2], point: [1, 2] }] }), []);
 });

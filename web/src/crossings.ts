@@ -2,7 +2,8 @@
 // (report crossing_panels, core/panels/panel_crossings.h). The solver does not avoid them yet
 // and does not count them invalid, so the row is the designer's warning: such panels cannot
 // be built as drawn.
-import type { QualityReport } from './protocol.ts';
+import { showLegendLine } from './dom.ts';
+import type { QualityReport, SolveResult } from './protocol.ts';
 import type { StatRow } from './statsList.ts';
 
 // The pairs as the parts list labels them (P1 ...), or null when the report has no usable list.
@@ -32,4 +33,28 @@ export function crossingRow(report: QualityReport): StatRow | null {
         (typeof depth === 'number' && Number.isFinite(depth) ? `; the deepest ${(depth * 100).toFixed(1)} % of the smaller panel's size` : '') +
         '): they cannot be built as drawn, and the solver does not avoid them yet. More panels there, or another seed or panel count, may.';
   return { label: 'Crossing', value: String(pairs.length), hint, warn: pairs.length > 0 };
+}
+
+// Where they cross (each pair's deepest point, mesh coordinates, flat x y z ...), for the view's
+// orange markers; empty without a usable list.
+export function crossingPoints(report: QualityReport): number[] {
+  if (crossingPairs(report) === null) return [];
+  const out: number[] = [];
+  for (const entry of report.crossing_panels as Record<string, unknown>[]) {
+    const p = entry.point;
+    if (Array.isArray(p) && p.length === 3 && p.every((v) => typeof v === 'number' && Number.isFinite(v))) out.push(...(p as number[]));
+  }
+  return out;
+}
+
+// The legend line beside the markers, or null when nothing crosses.
+export function crossingNote(report: QualityReport): string | null {
+  const pairs = crossingPairs(report);
+  if (pairs === null || pairs.length === 0 || crossingPoints(report).length === 0) return null;
+  return `Panels passing through each other: ${pairs.length} ${pairs.length === 1 ? 'pair' : 'pairs'} (paint more density there)`;
+}
+
+// #crossing-legend for the result on show (hidden without one).
+export function renderCrossings(result: SolveResult | null): void {
+  showLegendLine('crossing', result ? crossingNote(result.report) : null);
 }

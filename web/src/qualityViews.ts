@@ -1,7 +1,8 @@
 // Everything on the page that shows a solve's quality report, in one call: the Quality section,
 // the legends of the point farthest from the design, of the sharpest corner and of a collapsed
-// panel (their markers are the viewer's). null clears them (a new design, nothing solved yet).
+// panel and of panels passing through each other (their markers are the viewer's). null clears them (a new design, nothing solved yet).
 import { renderCollapsedPanel } from './collapsedPanel.ts';
+import { renderCrossings } from './crossings.ts';
 import { renderDesignDistance } from './farthest.ts';
 import type { SolveResult } from './protocol.ts';
 import { renderSharpestCorner } from './sharpestCorner.ts';
@@ -12,4 +13,5 @@ export function renderQuality(statsBox: HTMLElement, result: SolveResult | null)
   renderDesignDistance(result);
   renderSharpestCorner(result);
   renderCollapsedPanel(result);
+  renderCrossings(result);
 }

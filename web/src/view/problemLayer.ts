@@ -2,7 +2,8 @@
 // lines (screen-space width, since WebGL lines are one pixel wide), corners below the minimum
 // corner angle (glass mode) as larger amber points, and where the panels are farthest from the
 // design (the Hausdorff distance's worst sample) as a cyan point, the sharpest corner of any
-// panel as a violet one, and a collapsed panel's centre (collapsedPanel.ts) as a lime one.
+// panel as a violet one, a collapsed panel's centre (collapsedPanel.ts) as a lime one, and
+// where panels pass through each other (crossings.ts) as orange ones.
 // Invalid panels are tinted by the panel layer.
 import * as THREE from 'three';
 import { LineMaterial } from 'three/examples/jsm/lines/LineMaterial.js';
@@ -15,6 +16,7 @@ const AMBER = 0xffb000;
 const CYAN = 0x22d3ee; // styles.css .legend-dot.farthest
 const VIOLET = 0xa855f7; // styles.css .legend-dot.sharpest
 const LIME = 0xa3e635; // styles.css .legend-dot.collapsed
+const ORANGE = 0xf97316; // styles.css .legend-dot.crossing
 
 type Point = [number, number, number];
 
@@ -23,6 +25,7 @@ export interface MarkedPoints {
   farthest: Point | null;
   sharpest: Point | null;
   collapsed: Point | null;
+  crossings: number[];  // x y z of each point where two panels cross
 }
 
 function shiftedPoints(values: number[], origin: THREE.Vector3): THREE.BufferGeometry {
@@ -41,6 +44,7 @@ export class ProblemLayer {
   private readonly farthest: THREE.Points<THREE.BufferGeometry, THREE.PointsMaterial>;
   private readonly sharpest: THREE.Points<THREE.BufferGeometry, THREE.PointsMaterial>;
   private readonly collapsed: THREE.Points<THREE.BufferGeometry, THREE.PointsMaterial>;
+  private readonly crossings: THREE.Points<THREE.BufferGeometry, THREE.PointsMaterial>;
   private readonly lineMaterial: LineMaterial;
 
   constructor() {
@@ -65,10 +69,13 @@ export class ProblemLayer {
     this.collapsed = new THREE.Points(new THREE.BufferGeometry(), new THREE.PointsMaterial({ color: LIME, size: 14, sizeAttenuation: false, depthTest: false }));
     this.collapsed.name = 'collapsed-panel';
     this.collapsed.renderOrder = 9;
+    this.crossings = new THREE.Points(new THREE.BufferGeometry(), new THREE.PointsMaterial({ color: ORANGE, size: 12, sizeAttenuation: false, depthTest: false }));
+    this.crossings.name = 'crossing-panels';
+    this.crossings.renderOrder = 9;
     this.spikes.renderOrder = 10;
     this.flipped.renderOrder = 10;
     this.acute.renderOrder = 9;
-    this.group.add(this.collapsed, this.farthest, this.sharpest, this.acute, this.spikes, this.flipped);
+    this.group.add(this.crossings, this.collapsed, this.farthest, this.sharpest, this.acute, this.spikes, this.flipped);
   }
 
   set(problems: Problems | null, points: MarkedPoints, origin: THREE.Vector3): void {
@@ -81,6 +88,9 @@ export class ProblemLayer {
       layer.geometry = shiftedPoints(point ?? [], origin);
       layer.visible = point !== null;
     }
+    this.crossings.geometry.dispose();
+    this.crossings.geometry = shiftedPoints(points.crossings, origin);
+    this.crossings.visible = points.crossings.length >= 3;
 
     const spikes = problems?.spikes ?? [];
     const spikePositions = new Float32Array(spikes.length);

@@ -5,6 +5,7 @@ import * as THREE from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import type { SpreadNodes } from '@flatfacet/wasm';
 import { collapsedPanel, panelCentre } from '../collapsedPanel.ts';
+import { crossingPoints } from '../crossings.ts';
 import { farthestPoint } from '../farthest.ts';
 import { sharpestCornerPoint } from '../sharpestCorner.ts';
 import type { SolveResult } from '../protocol.ts';
@@ -206,6 +207,7 @@ export class Viewer {
         farthest: result ? farthestPoint(result.report) : null,
         sharpest: result ? sharpestCornerPoint(result.report) : null,
         collapsed: result && collapsed !== null ? panelCentre(result, collapsed) : null,
+        crossings: result ? crossingPoints(result.report) : [],
       },
       this.origin,
     );
