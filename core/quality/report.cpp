@@ -349,6 +349,21 @@ QualityReport measure_quality(const TriMesh& input, const MeshTopology& input_to
       r.max_crossing_depth = std::max(r.max_crossing_depth, c.depth_share);
     }
   }
+  if (!r.crossing_pairs.empty()) {  // only then: the input's own check costs a sweep of its triangles
+    std::vector<std::vector<int>> triangles;
+    std::vector<Vec3> normals;
+    std::vector<double> offsets;
+    for (const Triangle& t : input.triangles) {
+      const Vec3& a = input.positions[static_cast<size_t>(t[0])];
+      const Vec3 n = (input.positions[static_cast<size_t>(t[1])] - a).cross(input.positions[static_cast<size_t>(t[2])] - a);
+      triangles.push_back({t[0], t[1], t[2]});
+      normals.push_back(n.norm() > 0.0 ? Vec3(n.normalized()) : Vec3::Zero());
+      offsets.push_back(normals.back().dot(a));
+    }
+    const std::vector<PanelCrossing> own = panel_crossings(input.positions, triangles, normals, offsets);
+    r.input_crossings = static_cast<int>(own.size());
+    if (!own.empty()) r.input_crossing_point = own.front().point;
+  }
   // A cluster that could not become a panel leaves its faces uncovered: it counts as an
   // invalid panel too, so the count never hides it (write_invalid_panels lists it).
   r.invalid_panels = static_cast<int>(r.invalid_panel_ids.size() + panels.unbuilt_clusters.size());

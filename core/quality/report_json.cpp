@@ -93,6 +93,10 @@ void write_quality_fields(JsonWriter& j, const QualityReport& q) {
   }
   j.end_array();
   j.value("max_crossing_depth", q.max_crossing_depth);
+  j.value("input_crossings", q.input_crossings);
+  j.begin_array("input_crossing_point");
+  for (int c = 0; c < 3; ++c) j.value(nullptr, q.input_crossing_point[c]);
+  j.end_array();
 }
 
 std::vector<InvalidPanel> list_invalid_panels(const PanelMesh& pm, const QualityReport& q) {
@@ -163,10 +167,17 @@ std::string crossing_phrase(const QualityReport& q) {
              std::to_string(q.crossing_pairs[k][1] + 1);
   }
   if (n > 4) pairs += ", ...";
-  return std::to_string(n) + (n == 1 ? " pair" : " pairs") + " of panels pass through each other (" + pairs +
-         "; the deepest " + short_number(100.0 * q.max_crossing_depth) +
-         "% of the smaller panel's size into both; --report lists them as crossing_panels): they cannot be built as "
-         "drawn; more panels there, or another --seed or --panels count, may avoid it";
+  std::string out = std::to_string(n) + (n == 1 ? " pair" : " pairs") + " of panels pass through each other (" +
+                    pairs + "; the deepest " + short_number(100.0 * q.max_crossing_depth) +
+                    "% of the smaller panel's size into both; --report lists them as crossing_panels): they cannot be "
+                    "built as drawn; ";
+  if (q.input_crossings > 0) {
+    const Vec3& p = q.input_crossing_point;
+    return out + "the surface itself passes through itself (" + std::to_string(q.input_crossings) +
+           " pairs of its triangles cross, one near (" + short_number(p.x()) + ", " + short_number(p.y()) + ", " +
+           short_number(p.z()) + ")), and panels made from it follow it: mend the model there";
+  }
+  return out + "more panels there, or another --seed or --panels count, may avoid it";
 }
 
 std::string planarity_phrase(const QualityReport& q) {

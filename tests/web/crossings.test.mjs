@@ -18,6 +18,8 @@ test('pairs are named P1 ... and warned about with the deepest share', () => {
   assert.equal(row.value, '2');
   assert.equal(row.warn, true);
   assert.match(row.hint, /\(P37 and P38, P45 and P52; the deepest 4\.8 % of the smaller panel's size\): they cannot be built/);
+  assert.match(row.hint, /More panels there, or another seed or panel count, may avoid it\.$/);
+  assert.match(crossingRow({ ...report, input_crossings: 83 }).hint, /itself there \(83 pairs of its triangles cross\).*mend the model there\.$/);
 });
 
 test('none: a quiet zero; more than four: the first four', () => {
@@ -37,8 +39,9 @@ test('no row from an older report or a malformed list', () => {
 test('the markers: the deepest point of each pair; the legend line counts the pairs', () => {
   const report = { crossing_panels: [{ panels: [1, 2], point: [1, 2, 3] }, { panels: [2, 5], point: [4, 5, 6] }] };
   assert.deepEqual(crossingPoints(report), [1, 2, 3, 4, 5, 6]);
-  assert.equal(crossingNote(report), 'Panels passing through each other: 2 pairs (paint more density there)');
-  assert.equal(crossingNote({ crossing_panels: [{ panels: [1, 2], point: [1, 2, 3] }] }), 'Panels passing through each other: 1 pair (paint more density there)');
+  assert.equal(crossingNote(report), 'Panels passing through each other: 2 pairs (more panels there may avoid it)');
+  assert.equal(crossingNote({ crossing_panels: [{ panels: [1, 2], point: [1, 2, 3] }], input_crossings: 83 }),
+    'Panels passing through each other: 1 pair (the surface passes through itself there)');
   for (const none of [{}, { crossing_panels: [] }, { crossing_panels: [{ panels: [1, 2], point: [1, NaN, 3] }] }]) {
     assert.equal(crossingNote(none), null, JSON.stringify(none));
   }

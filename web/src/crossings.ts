@@ -21,6 +21,21 @@ export function crossingPairs(report: QualityReport): [string, string][] | null 
   return pairs;
 }
 
+// How many pairs of the input's own triangles cross (the surface passing through itself), 0
+// when none or not known.
+export function inputCrossings(report: QualityReport): number {
+  const n = report.input_crossings;
+  return typeof n === 'number' && Number.isInteger(n) && n > 0 ? n : 0;
+}
+
+// What to do about them: mend a model that passes through itself, else try more panels.
+function advice(report: QualityReport): string {
+  const own = inputCrossings(report);
+  return own > 0
+    ? `The surface itself passes through itself there (${own} pairs of its triangles cross), and panels made from it follow it: mend the model there.`
+    : 'More panels there, or another seed or panel count, may avoid it.';
+}
+
 export function crossingRow(report: QualityReport): StatRow | null {
   const pairs = crossingPairs(report);
   if (pairs === null) return null;
@@ -31,7 +46,7 @@ export function crossingRow(report: QualityReport): StatRow | null {
       ? 'pairs of panels that pass through each other in space: none'
       : `pairs of panels that pass through each other in space (${shown}` +
         (typeof depth === 'number' && Number.isFinite(depth) ? `; the deepest ${(depth * 100).toFixed(1)} % of the smaller panel's size` : '') +
-        '): they cannot be built as drawn, and the solver does not avoid them yet. More panels there, or another seed or panel count, may.';
+        `): they cannot be built as drawn, and the solver does not avoid them yet. ${advice(report)}`;
   return { label: 'Crossing', value: String(pairs.length), hint, warn: pairs.length > 0 };
 }
 
@@ -51,7 +66,8 @@ export function crossingPoints(report: QualityReport): number[] {
 export function crossingNote(report: QualityReport): string | null {
   const pairs = crossingPairs(report);
   if (pairs === null || pairs.length === 0 || crossingPoints(report).length === 0) return null;
-  return `Panels passing through each other: ${pairs.length} ${pairs.length === 1 ? 'pair' : 'pairs'} (paint more density there)`;
+  const why = inputCrossings(report) > 0 ? 'the surface passes through itself there' : 'more panels there may avoid it';
+  return `Panels passing through each other: ${pairs.length} ${pairs.length === 1 ? 'pair' : 'pairs'} (${why})`;
 }
 
 // #crossing-legend for the result on show (hidden without one).
