@@ -355,7 +355,8 @@ QualityReport measure_quality(const TriMesh& input, const MeshTopology& input_to
     std::vector<double> offsets;
     for (const Triangle& t : input.triangles) {
       const Vec3& a = input.positions[static_cast<size_t>(t[0])];
-      const Vec3 n = (input.positions[static_cast<size_t>(t[1])] - a).cross(input.positions[static_cast<size_t>(t[2])] - a);
+      const Vec3 n =
+          (input.positions[static_cast<size_t>(t[1])] - a).cross(input.positions[static_cast<size_t>(t[2])] - a);
       triangles.push_back({t[0], t[1], t[2]});
       normals.push_back(n.norm() > 0.0 ? Vec3(n.normalized()) : Vec3::Zero());
       offsets.push_back(normals.back().dot(a));

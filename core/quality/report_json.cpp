@@ -167,8 +167,8 @@ std::string crossing_phrase(const QualityReport& q) {
              std::to_string(q.crossing_pairs[k][1] + 1);
   }
   if (n > 4) pairs += ", ...";
-  std::string out = std::to_string(n) + (n == 1 ? " pair" : " pairs") + " of panels pass through each other (" +
-                    pairs + "; the deepest " + short_number(100.0 * q.max_crossing_depth) +
+  std::string out = std::to_string(n) + (n == 1 ? " pair" : " pairs") + " of panels pass through each other (" + pairs +
+                    "; the deepest " + short_number(100.0 * q.max_crossing_depth) +
                     "% of the smaller panel's size into both; --report lists them as crossing_panels): they cannot be "
                     "built as drawn; ";
   if (q.input_crossings > 0) {
