@@ -422,7 +422,7 @@ test('Cancel after a preparation for more panels brings the last finished design
     await waitForProgress(page);
     const since = await outcomes(page);
     await page.getByRole('button', { name: 'Cancel' }).click();
-    await waitForStatus(page, /^Cancelled\. The last finished design is coming back/, 5000);
+    await waitForStatus(page, /^Cancelled\. The last finished design is coming back/, 30_000);
     assert.equal(await waitForDone(page, since), 300);
     assert.equal((await download(page, 'Export OBJ')).text, before);
     assert.equal(await page.getByLabel('Panels', { exact: true }).inputValue(), '300');
