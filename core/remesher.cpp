@@ -232,6 +232,7 @@ std::unique_ptr<PanelAttempt> Remesher::make_attempt() {
   hold(options.fixed, options.fixed_planes);  // locked panels and their neighbours
   options.layout.held_nodes = held_nodes();
   options.layout.held_single = held_single();
+  options.layout.held_grouping = held_grouping();
   options.hinge_of = hinges();
   locked_limits(options.layout.locked_spike_distance, options.layout.locked_diameter);
   const std::vector<ClusterMoments>& moments = moments_.update(faces_, clustering_.labels, clustering_.num_clusters());

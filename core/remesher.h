@@ -228,6 +228,8 @@ class Remesher {
     std::vector<std::array<int, 3>> nodes;
     // Its corners' node groups made one point, each named by a face of each of its clusters.
     std::vector<std::vector<int>> single_groups;
+    // Its corners' grouping (mesh vertices): pairs grouped, corners alone (corner_groups.h).
+    HeldGrouping grouping;
     // The spike distance (world units) the design had when it was locked: its vertices keep
     // being judged by it (LayoutOptions::locked_spike_distance).
     double spike_distance = 0.0;
@@ -252,6 +254,7 @@ class Remesher {
   void locked_limits(std::vector<double>& spike_distance, std::vector<double>& diameter) const;
   std::vector<std::array<int, 3>> held_nodes() const;  // LayoutOptions::held_nodes
   std::vector<std::vector<int>> held_single() const;   // LayoutOptions::held_single
+  HeldGrouping held_grouping() const;                  // LayoutOptions::held_grouping
   void lloyd_step_held();
   // The fewest panels a count change can reach with the locks: the held clusters, and one
   // cluster for each part of the surface they leave free (free_parts_with_locks).

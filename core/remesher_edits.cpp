@@ -228,6 +228,12 @@ void Remesher::apply_edit(const PanelEdit& e, size_t index) {
         }
         lock.nodes.push_back(named);
       }
+      for (const std::vector<int>& vertices : corners.group_vertices) {
+        if (vertices.size() == 2)
+          lock.grouping.together.emplace_back(std::min(vertices[0], vertices[1]), std::max(vertices[0], vertices[1]));
+        else if (vertices.size() == 1)
+          lock.grouping.apart.push_back(vertices[0]);
+      }
       lock.spike_distance = panels_.spike_distance;
       lock.diameter = metric_.diameter() * faces_.scale;
       locks_.push_back(std::move(lock));

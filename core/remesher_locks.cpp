@@ -42,6 +42,19 @@ std::vector<std::vector<int>> Remesher::held_single() const {
   return out;
 }
 
+HeldGrouping Remesher::held_grouping() const {
+  HeldGrouping out;
+  for (const Lock& lock : locks_) {
+    out.together.insert(out.together.end(), lock.grouping.together.begin(), lock.grouping.together.end());
+    out.apart.insert(out.apart.end(), lock.grouping.apart.begin(), lock.grouping.apart.end());
+  }
+  std::sort(out.together.begin(), out.together.end());
+  out.together.erase(std::unique(out.together.begin(), out.together.end()), out.together.end());
+  std::sort(out.apart.begin(), out.apart.end());
+  out.apart.erase(std::unique(out.apart.begin(), out.apart.end()), out.apart.end());
+  return out;
+}
+
 std::vector<char> Remesher::held_clusters() const {
   if (locks_.empty()) return {};
   std::vector<char> out(static_cast<size_t>(clustering_.num_clusters()), 0);

@@ -69,7 +69,8 @@ bool border_wall(const TriMesh& mesh, const MeshTopology& topology, const std::v
 
 NodeGroups group_corners(const TriMesh& mesh, const MeshTopology& topology, const std::vector<int>& labels,
                          const PanelGraph& graph, const std::vector<Vec3>& positions, const std::vector<int>& master_of,
-                         double max_chain_length, const std::vector<std::pair<int, int>>& forced) {
+                         double max_chain_length, const std::vector<std::pair<int, int>>& forced,
+                         const HeldGrouping& held) {
   const auto tail = [&](int h) { return mesh.triangles[static_cast<size_t>(h / 3)][static_cast<size_t>(h % 3)]; };
   const auto head = [&](int h) {
     return mesh.triangles[static_cast<size_t>(h / 3)][static_cast<size_t>((h % 3 + 1) % 3)];
@@ -86,9 +87,17 @@ NodeGroups group_corners(const TriMesh& mesh, const MeshTopology& topology, cons
       const int corner = graph.corner_of_vertex[static_cast<size_t>(head(h))];
       if (corner < 0) continue;
       const int other = PanelGraph::other_side(topology, labels, h);
-      const bool force = std::find(forced.begin(), forced.end(),
-                                   std::make_pair(std::min(start, corner), std::max(start, corner))) != forced.end();
-      if (other != kBoundary && static_cast<int>(c) < other && (length <= max_chain_length || force) && corner != start)
+      const int pv = graph.corners[static_cast<size_t>(start)].vertex;
+      const int qv = graph.corners[static_cast<size_t>(corner)].vertex;
+      const bool together = std::binary_search(held.together.begin(), held.together.end(),
+                                               std::make_pair(std::min(pv, qv), std::max(pv, qv)));
+      const bool apart = !together && (std::binary_search(held.apart.begin(), held.apart.end(), pv) ||
+                                       std::binary_search(held.apart.begin(), held.apart.end(), qv));
+      const bool force = together || std::find(forced.begin(), forced.end(),
+                                               std::make_pair(std::min(start, corner), std::max(start, corner))) !=
+                                         forced.end();
+      if (other != kBoundary && static_cast<int>(c) < other && (length <= max_chain_length || force) && !apart &&
+          corner != start)
         chains.push_back({force ? -1.0 : length, start, corner, static_cast<int>(c), other});
       start = corner;
       length = 0.0;

@@ -30,14 +30,23 @@ struct NodeGroups {
   std::vector<int> group_of_corner;  // per graph corner
 };
 
+// Corners a lock holds as they were grouped (mesh vertex ids): pairs that stay one group
+// (sorted within and among), and corners that stay a group alone (sorted). Their grouping
+// otherwise follows the spike distance, which moves with the panel count and the weights.
+struct HeldGrouping {
+  std::vector<std::pair<int, int>> together;
+  std::vector<int> apart;
+};
+
 // Groups corners joined by a chain between two clusters no longer than max_chain_length
 // (greedily from the shortest; each corner in at most one pair; at most 7 clusters and at
 // most one boundary corner per group, and never two clusters on one master plane, whose nodes
 // could coincide). positions: mesh vertices, in the frame of the length.
 // `forced`: corner pairs to group whatever their chain's length (when their nodes came out in
-// the wrong order, see PanelLayout::reversed_chains), tried first.
+// the wrong order, see PanelLayout::reversed_chains), tried first; `held`: as a lock holds them.
 NodeGroups group_corners(const TriMesh& mesh, const MeshTopology& topology, const std::vector<int>& labels,
                          const PanelGraph& graph, const std::vector<Vec3>& positions, const std::vector<int>& master_of,
-                         double max_chain_length, const std::vector<std::pair<int, int>>& forced = {});
+                         double max_chain_length, const std::vector<std::pair<int, int>>& forced = {},
+                         const HeldGrouping& held = {});
 
 }  // namespace ff

@@ -39,7 +39,8 @@ PanelLayout::PanelLayout(const TriMesh& mesh, const MeshTopology& topology, cons
       planes_(std::move(planes)),
       options_(options),
       groups_(
-          group_corners(mesh, topology, labels, graph, positions, planes_.master_of, options.spike_distance, forced)) {
+          group_corners(mesh, topology, labels, graph, positions, planes_.master_of, options.spike_distance, forced,
+                        options.held_grouping)) {
   const size_t groups = groups_.groups.size();
   const size_t clusters = graph_.problems.size();
   pairing_.resize(groups);
@@ -148,6 +149,9 @@ CornerNodes PanelLayout::corner_nodes(int cluster) const {
     const int size = static_cast<int>(group.clusters.size());
     triangles_around(pairing_[static_cast<size_t>(g)], size, position_of(group.clusters, cluster), around);
     for (int t : around) out.nodes.push_back(node_clusters(node_offset_[static_cast<size_t>(g)] + t));
+    std::vector<int> vertices;
+    for (int k : group.corners) vertices.push_back(graph_.corners[static_cast<size_t>(k)].vertex);
+    out.group_vertices.push_back(std::move(vertices));
     if (single_[static_cast<size_t>(g)]) {
       std::vector<int> clusters = clusters_of_group(g);
       std::sort(clusters.begin(), clusters.end());

@@ -35,6 +35,8 @@ struct LayoutOptions {
   // Cluster sets (sorted) of node groups a lock holds as one point: a group of exactly these
   // clusters is laid out as one vertex, where its planes meet (they are held through it).
   std::vector<std::vector<int>> held_single;
+  // Corners a lock holds grouped as they were (corner_groups.h).
+  HeldGrouping held_grouping;
   // Per cluster (empty for none): the spike distance a locked panel was locked with (0 for a
   // cluster not locked). Its vertices keep being judged by it (the larger of it and
   // spike_distance), in every panel they are on: the outline is kept exactly, while the
@@ -50,6 +52,7 @@ struct LayoutOptions {
 struct CornerNodes {
   std::vector<std::array<int, 3>> nodes;        // each node's clusters, sorted
   std::vector<std::vector<int>> single_groups;  // each group made one point: its clusters, sorted
+  std::vector<std::vector<int>> group_vertices;  // each node group: the mesh vertices of its corners
 };
 
 struct PanelPolygon {

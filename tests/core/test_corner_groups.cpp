@@ -156,6 +156,27 @@ TEST(CornerGroups, ForcedPairsJoinWhateverTheirLength) {
   EXPECT_LT((group.reference - Vec3(2.0, 3.0, 0.0)).norm(), 1e-12);
 }
 
+// A lock holds its corners' grouping by mesh vertex (HeldGrouping): a pair together whatever
+// its chain's length, and a corner apart though its chain is short enough.
+TEST(CornerGroups, HeldGroupingKeepsCornersTogetherOrApart) {
+  const Layout layout(2);
+  const int lower = layout.corner(2, 2), upper = layout.corner(2, 4);
+  const int lv = layout.vertex(2, 2), uv = layout.vertex(2, 4);
+  HeldGrouping together;
+  together.together = {{std::min(lv, uv), std::max(lv, uv)}};
+  const NodeGroups g = group_corners(layout.mesh, layout.topology, layout.labels, layout.graph, layout.mesh.positions,
+                                     {0, 1, 2, 3}, 0.5, {}, together);
+  expect_partition(layout, g);
+  EXPECT_EQ(g.group_of_corner[static_cast<size_t>(lower)], g.group_of_corner[static_cast<size_t>(upper)]);
+  HeldGrouping apart;
+  apart.apart = {uv};
+  const NodeGroups h = group_corners(layout.mesh, layout.topology, layout.labels, layout.graph, layout.mesh.positions,
+                                     {0, 1, 2, 3}, 10.0, {}, apart);
+  expect_partition(layout, h);
+  EXPECT_NE(h.group_of_corner[static_cast<size_t>(lower)], h.group_of_corner[static_cast<size_t>(upper)]);
+  EXPECT_EQ(h.groups[static_cast<size_t>(h.group_of_corner[static_cast<size_t>(upper)])].corners.size(), 1u);
+}
+
 TEST(CornerGroups, BoundaryGroupsStandOnTheBordersWall) {
   // The wall at a boundary corner contains the border's direction and the surface normal.
   const Layout layout(1);
