@@ -42,6 +42,17 @@ std::vector<std::string> panel_problems(const PanelIssues& issues) {
   return problems;
 }
 
+namespace {
+
+// A point as an array of its three coordinates.
+void write_point(JsonWriter& j, const char* key, const Vec3& p) {
+  j.begin_array(key);
+  for (int k = 0; k < 3; ++k) j.value(nullptr, p[k]);
+  j.end_array();
+}
+
+}  // namespace
+
 void write_quality_fields(JsonWriter& j, const QualityReport& q) {
   j.value("max_planarity", q.max_planarity);
   j.value("max_planarity_panel", q.max_planarity_panel);
@@ -51,9 +62,7 @@ void write_quality_fields(JsonWriter& j, const QualityReport& q) {
   j.value("hausdorff", q.hausdorff);
   j.value("hausdorff_input_to_panels", q.hausdorff_input_to_panels);
   j.value("hausdorff_panels_to_input", q.hausdorff_panels_to_input);
-  j.begin_array("hausdorff_worst_point");
-  for (int k = 0; k < 3; ++k) j.value(nullptr, q.hausdorff_worst_point[k]);
-  j.end_array();
+  write_point(j, "hausdorff_worst_point", q.hausdorff_worst_point);
   j.value("topology_preserved", q.topology_preserved);
   j.value("euler_in", q.euler_in).value("euler_out", q.euler_out);
   j.value("boundary_loops_in", q.boundary_loops_in).value("boundary_loops_out", q.boundary_loops_out);
@@ -70,9 +79,7 @@ void write_quality_fields(JsonWriter& j, const QualityReport& q) {
   j.end_object();
   j.value("valence3_share", q.valence3_share);
   j.value("min_corner_angle_deg", q.min_corner_angle_deg);
-  j.begin_array("min_corner_angle_point");
-  for (int k = 0; k < 3; ++k) j.value(nullptr, q.min_corner_angle_point[k]);
-  j.end_array();
+  write_point(j, "min_corner_angle_point", q.min_corner_angle_point);
   j.value("min_corner_angle_panel", q.min_corner_angle_panel);
   j.value("min_corner_angle_target_deg", q.min_corner_angle_target_deg);
   j.value("acute_corners", q.acute_corners);
@@ -86,17 +93,13 @@ void write_quality_fields(JsonWriter& j, const QualityReport& q) {
   for (size_t k = 0; k < q.crossing_pairs.size(); ++k) {
     j.begin_object();
     j.begin_array("panels").value(nullptr, q.crossing_pairs[k][0]).value(nullptr, q.crossing_pairs[k][1]).end_array();
-    j.begin_array("point");
-    for (int c = 0; c < 3; ++c) j.value(nullptr, q.crossing_points[k][c]);
-    j.end_array();
+    write_point(j, "point", q.crossing_points[k]);
     j.end_object();
   }
   j.end_array();
   j.value("max_crossing_depth", q.max_crossing_depth);
   j.value("input_crossings", q.input_crossings);
-  j.begin_array("input_crossing_point");
-  for (int c = 0; c < 3; ++c) j.value(nullptr, q.input_crossing_point[c]);
-  j.end_array();
+  write_point(j, "input_crossing_point", q.input_crossing_point);
 }
 
 std::vector<InvalidPanel> list_invalid_panels(const PanelMesh& pm, const QualityReport& q) {
