@@ -93,9 +93,9 @@ NodeGroups group_corners(const TriMesh& mesh, const MeshTopology& topology, cons
                                                std::make_pair(std::min(pv, qv), std::max(pv, qv)));
       const bool apart = !together && (std::binary_search(held.apart.begin(), held.apart.end(), pv) ||
                                        std::binary_search(held.apart.begin(), held.apart.end(), qv));
-      const bool force = together || std::find(forced.begin(), forced.end(),
-                                               std::make_pair(std::min(start, corner), std::max(start, corner))) !=
-                                         forced.end();
+      const bool force =
+          together || std::find(forced.begin(), forced.end(),
+                                std::make_pair(std::min(start, corner), std::max(start, corner))) != forced.end();
       if (other != kBoundary && static_cast<int>(c) < other && (length <= max_chain_length || force) && !apart &&
           corner != start)
         chains.push_back({force ? -1.0 : length, start, corner, static_cast<int>(c), other});

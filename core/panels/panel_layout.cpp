@@ -38,9 +38,8 @@ PanelLayout::PanelLayout(const TriMesh& mesh, const MeshTopology& topology, cons
       graph_(graph),
       planes_(std::move(planes)),
       options_(options),
-      groups_(
-          group_corners(mesh, topology, labels, graph, positions, planes_.master_of, options.spike_distance, forced,
-                        options.held_grouping)) {
+      groups_(group_corners(mesh, topology, labels, graph, positions, planes_.master_of, options.spike_distance, forced,
+                            options.held_grouping)) {
   const size_t groups = groups_.groups.size();
   const size_t clusters = graph_.problems.size();
   pairing_.resize(groups);

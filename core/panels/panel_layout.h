@@ -50,8 +50,8 @@ struct LayoutOptions {
 // A panel's polygon: its vertices (local frame) in counter-clockwise order.
 // What a lock holds of a panel's corners (PanelLayout::corner_nodes).
 struct CornerNodes {
-  std::vector<std::array<int, 3>> nodes;        // each node's clusters, sorted
-  std::vector<std::vector<int>> single_groups;  // each group made one point: its clusters, sorted
+  std::vector<std::array<int, 3>> nodes;         // each node's clusters, sorted
+  std::vector<std::vector<int>> single_groups;   // each group made one point: its clusters, sorted
   std::vector<std::vector<int>> group_vertices;  // each node group: the mesh vertices of its corners
 };
 
