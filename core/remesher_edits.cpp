@@ -147,9 +147,20 @@ void Remesher::apply_edit(const PanelEdit& e, size_t index) {
   const std::vector<int>& labels = clustering_.labels;
   const int c = labels[static_cast<size_t>(e.face)];
   const std::vector<char> held = held_clusters();
+  // Names the lock in the way, so the designer knows which panel to unlock.
   const auto check_free = [&](int cluster, const std::string& panel) {
-    if (!held.empty() && held[static_cast<size_t>(cluster)])
-      throw InputError(where + panel + " is locked or next to a locked panel: unlock that first");
+    if (held.empty() || !held[static_cast<size_t>(cluster)]) return;
+    for (const Lock& lock : locks_) {
+      const int locked_face = lock.held[0].face;
+      if (labels[static_cast<size_t>(locked_face)] == cluster)
+        throw InputError(where + panel + " is locked: unlock it first");
+      for (const Held& h : lock.held) {
+        if (labels[static_cast<size_t>(h.face)] == cluster)
+          throw InputError(where + panel + " is next to the panel locked at face " + std::to_string(locked_face) +
+                           ": unlock that first");
+      }
+    }
+    throw InputError(where + panel + " is locked or next to a locked panel: unlock that first");
   };
   const auto find_lock = [&] {
     return std::find_if(locks_.begin(), locks_.end(), [&](const Lock& l) {

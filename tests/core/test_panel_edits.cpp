@@ -179,9 +179,9 @@ std::string invalid_panels(const Remesher& r) {
     if (i.valid()) continue;
     const int c = pm.panel_cluster[static_cast<size_t>(p)];
     out += "\n  panel " + std::to_string(p) + " (cluster " + std::to_string(c) +
-           (std::find(locked.begin(), locked.end(), c) != locked.end() ? ", locked" : "") +
-           "): spikes " + std::to_string(i.spike_vertices) + (i.flipped ? ", flipped" : "") +
-           (i.not_star ? ", not star" : "") + (i.not_simple ? ", not simple" : "") + (i.not_disk ? ", not a disk" : "");
+           (std::find(locked.begin(), locked.end(), c) != locked.end() ? ", locked" : "") + "): spikes " +
+           std::to_string(i.spike_vertices) + (i.flipped ? ", flipped" : "") + (i.not_star ? ", not star" : "") +
+           (i.not_simple ? ", not simple" : "") + (i.not_disk ? ", not a disk" : "");
   }
   for (int c : pm.unbuilt_clusters) out += "\n  cluster " + std::to_string(c) + " unbuilt";
   return out;
@@ -347,6 +347,32 @@ TEST(PanelLockHolds, ThroughAReSolveThatWouldRegroupItsCorners) {
     EXPECT_TRUE(same_panel(locked, shot(r, c.face), 1e-9 * model_size(r))) << c.mesh;
     EXPECT_EQ(r.panels().num_invalid(), 0) << c.mesh << invalid_panels(r);
   }
+}
+
+// A split or merge a lock stands in the way of names the lock (before: "locked or next to a
+// locked panel", whichever it was and whichever lock).
+TEST(PanelLockHolds, ARefusedEditNamesTheLockInTheWay) {
+  RemeshParams p;
+  p.panels = 69;
+  Remesher r(test::load_clean("bunny.off"), p);
+  r.run();
+  const int lock = big_panel_face(r);
+  const int locked = r.clustering().labels[static_cast<size_t>(lock)];
+  const std::vector<int> ring = cluster_ring(r.mesh(), r.topology(), r.clustering().labels, locked);
+  ASSERT_FALSE(ring.empty());
+  const int next_to = r.clustering().seeds[static_cast<size_t>(ring.front())];
+  const auto refusal = [&](int face) {
+    try {
+      r.set_edits({edit(PanelEdit::Op::Lock, lock), edit(PanelEdit::Op::Split, face)});
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(refusal(lock), "edit 2 (split): the panel at face " + std::to_string(lock) + " is locked: unlock it first");
+  EXPECT_EQ(refusal(next_to), "edit 2 (split): the panel at face " + std::to_string(next_to) +
+                                  " is next to the panel locked at face " + std::to_string(lock) +
+                                  ": unlock that first");
 }
 
 const auto case_name = [](const auto& info) {
