@@ -273,12 +273,12 @@ int run_remesh(const std::vector<std::string>& argv) {
   if (!topology.empty() && invalid.empty())
     std::fprintf(stderr, "flatfacet: %s; --report has both; another --seed or --panels count may keep it\n",
                  topology.c_str());
-  // Flat to 1e-9 by construction; not where the coordinates cannot hold that (far from the
-  // origin): the file is still written (fabrication tolerances are ~1e-4), the designer told.
   // Panels passing through each other: not yet avoided by the solver nor counted invalid
   // (report.h), so said here whatever the exit code.
   const std::string crossing = crossing_phrase(quality);
   if (!crossing.empty()) std::fprintf(stderr, "flatfacet: warning: %s\n", crossing.c_str());
+  // Flat to 1e-9 by construction; not where the coordinates cannot hold that (far from the
+  // origin): the file is still written (fabrication tolerances are ~1e-4), the designer told.
   const std::string planarity = planarity_phrase(quality);
   if (!planarity.empty()) std::fprintf(stderr, "flatfacet: warning: %s\n", planarity.c_str());
   // Written, like invalid panels (exit 3): the designer sees the parts and can choose a

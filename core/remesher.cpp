@@ -694,13 +694,17 @@ void Remesher::set_params(RemeshParams params) {
   }
   const int target = keep_count ? old_panels : params.panels;
   if (!restart && !locks_.empty()) {
-    const int least = least_panels_with_locks();
-    if (target < least)
-      throw InputError(
-          std::to_string(target) + " panels cannot keep the " + std::to_string(locks_.size()) +
-          (locks_.size() == 1 ? " locked panel" : " locked panels") + ": with their neighbours they hold " +
-          std::to_string(least - free_parts_with_locks()) + " panels, and the rest of the surface needs at least " +
-          std::to_string(free_parts_with_locks()) + "; ask for at least " + std::to_string(least) + ", or unlock some");
+    // The fewest a count change can reach: the held clusters, and one for each part of the
+    // surface they leave free.
+    const std::vector<char> held = held_clusters();
+    const int kept = static_cast<int>(std::count(held.begin(), held.end(), 1));
+    const int free_parts = free_parts_with_locks();
+    if (target < kept + free_parts)
+      throw InputError(std::to_string(target) + " panels cannot keep the " + std::to_string(locks_.size()) +
+                       (locks_.size() == 1 ? " locked panel" : " locked panels") +
+                       ": with their neighbours they hold " + std::to_string(kept) +
+                       " panels, and the rest of the surface needs at least " + std::to_string(free_parts) +
+                       "; ask for at least " + std::to_string(kept + free_parts) + ", or unlock some");
   }
   params_ = std::move(params);
   earlier_ = EarlierSolve{};  // a new solve: its own retries

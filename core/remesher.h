@@ -256,9 +256,7 @@ class Remesher {
   std::vector<std::vector<int>> held_single() const;   // LayoutOptions::held_single
   HeldGrouping held_grouping() const;                  // LayoutOptions::held_grouping
   void lloyd_step_held();
-  // The fewest panels a count change can reach with the locks: the held clusters, and one
-  // cluster for each part of the surface they leave free (free_parts_with_locks).
-  int least_panels_with_locks() const;
+  // The parts of the surface (edge-connected) that the locks' held faces leave free.
   int free_parts_with_locks() const;
   void change_count_held(int target);
 

@@ -159,11 +159,6 @@ int Remesher::free_parts_with_locks() const {
   return parts;
 }
 
-int Remesher::least_panels_with_locks() const {
-  const std::vector<char> held = held_clusters();
-  return static_cast<int>(std::count(held.begin(), held.end(), 1)) + free_parts_with_locks();
-}
-
 // A Lloyd iteration that leaves held clusters as they are (their faces fixed in the flood).
 void Remesher::lloyd_step_held() {
   const int it = lloyd_done_ + 1;

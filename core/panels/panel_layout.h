@@ -47,7 +47,6 @@ struct LayoutOptions {
   std::vector<double> locked_diameter;
 };
 
-// A panel's polygon: its vertices (local frame) in counter-clockwise order.
 // What a lock holds of a panel's corners (PanelLayout::corner_nodes).
 struct CornerNodes {
   std::vector<std::array<int, 3>> nodes;         // each node's clusters, sorted
@@ -55,6 +54,7 @@ struct CornerNodes {
   std::vector<std::vector<int>> group_vertices;  // each node group: the mesh vertices of its corners
 };
 
+// A panel's polygon: its vertices (local frame) in counter-clockwise order.
 struct PanelPolygon {
   std::vector<Vec3> points;
   std::vector<int> node;        // per vertex: node id, or -1 for an extra border vertex

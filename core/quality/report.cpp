@@ -353,13 +353,11 @@ QualityReport measure_quality(const TriMesh& input, const MeshTopology& input_to
     std::vector<std::vector<int>> triangles;
     std::vector<Vec3> normals;
     std::vector<double> offsets;
-    for (const Triangle& t : input.triangles) {
-      const Vec3& a = input.positions[static_cast<size_t>(t[0])];
-      const Vec3 n =
-          (input.positions[static_cast<size_t>(t[1])] - a).cross(input.positions[static_cast<size_t>(t[2])] - a);
+    for (int f = 0; f < input.num_faces(); ++f) {
+      const Triangle& t = input.triangles[static_cast<size_t>(f)];
       triangles.push_back({t[0], t[1], t[2]});
-      normals.push_back(n.norm() > 0.0 ? Vec3(n.normalized()) : Vec3::Zero());
-      offsets.push_back(normals.back().dot(a));
+      normals.push_back(face_normal(input, f));  // zero for a degenerate one: not compared
+      offsets.push_back(normals.back().dot(input.positions[static_cast<size_t>(t[0])]));
     }
     const std::vector<PanelCrossing> own = panel_crossings(input.positions, triangles, normals, offsets);
     r.input_crossings = static_cast<int>(own.size());

@@ -3,6 +3,7 @@
 // and does not count them invalid, so the row is the designer's warning: such panels cannot
 // be built as drawn.
 import { showLegendLine } from './dom.ts';
+import { isRecord } from './params.ts';
 import type { QualityReport, SolveResult } from './protocol.ts';
 import type { StatRow } from './statsList.ts';
 
@@ -12,7 +13,7 @@ export function crossingPairs(report: QualityReport): [string, string][] | null 
   if (!Array.isArray(list)) return null;
   const pairs: [string, string][] = [];
   for (const entry of list) {
-    const panels = typeof entry === 'object' && entry !== null ? (entry as Record<string, unknown>).panels : null;
+    const panels = isRecord(entry) ? entry.panels : null;
     if (!Array.isArray(panels) || panels.length !== 2) return null;
     const [a, b] = panels;
     if (!Number.isInteger(a) || !Number.isInteger(b) || (a as number) < 0 || (b as number) < 0) return null;
