@@ -6,8 +6,10 @@
 #include "cli/args.h"
 #include "core/mesh/face_map.h"
 #include "core/mesh/poly_mesh.h"
+#include "core/panels/panel_crossings.h"
 #include "core/prepare/subdivision.h"
 #include "core/util/error.h"
+#include "core/util/short_number.h"
 
 namespace ff::cli {
 
@@ -55,6 +57,18 @@ LoadedInput load_input(const std::string& path, const CleanOptions& options) {
   // Said at once, not only in the report: the run would otherwise panel the wrong part in silence.
   const std::string doubt = in.clean.report.kept_part_doubt();
   if (!doubt.empty()) std::fprintf(stderr, "flatfacet: warning: --largest-part: %s\n", doubt.c_str());
+  // A surface that passes through itself gives panels that do too, at any count: said before
+  // the solve, so the designer knows to mend the model rather than to try other counts.
+  const std::vector<PanelCrossing> crossings = surface_crossings(in.clean.mesh);
+  if (!crossings.empty()) {
+    const Vec3& p = crossings.front().point;
+    std::fprintf(stderr,
+                 "flatfacet: warning: %s: the surface passes through itself (%zu %s of its triangles cross, one near "
+                 "(%s, %s, %s)): panels made from it can pass through each other there, whatever their count; mend the "
+                 "model there\n",
+                 path.c_str(), crossings.size(), crossings.size() == 1 ? "pair" : "pairs", short_number(p.x()).c_str(),
+                 short_number(p.y()).c_str(), short_number(p.z()).c_str());
+  }
   return in;
 }
 

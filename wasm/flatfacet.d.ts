@@ -19,6 +19,11 @@ export interface MeshInfo extends Status {
   euler: number; // Euler characteristic
   genus: number;
   bboxDiagonal: number;
+  // Pairs of the cleaned mesh's triangles that pass through each other (the surface crossing
+  // itself; panels made from it cross there too), and the first pair's deepest point (0s
+  // when none).
+  selfCrossings: number;
+  selfCrossingPoint: [number, number, number];
   cleanup: string[]; // one sentence per repair applied ("welded 12 duplicate vertices")
   prepared: string[]; // what Session.prepare did and why ("refined 1,952 triangles to ...")
   repair: MeshRepair;

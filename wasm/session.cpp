@@ -8,6 +8,7 @@
 #include "core/mesh/clean.h"
 #include "core/mesh/mesh_io.h"
 #include "core/mesh/poly_mesh.h"
+#include "core/panels/panel_crossings.h"
 #include "core/panels/panel_export.h"
 #include "core/quality/report_json.h"
 #include "core/remesh_params_json.h"
@@ -71,6 +72,7 @@ std::string Session::load(const std::string& name, TriMesh raw, int input_triang
   MeshTopology topology = build_topology(clean.mesh);
   // The file's polygon of each cleaned triangle (a subdivision's control faces, prepare()).
   std::vector<int> face_polygon = cleaned_face_polygons(clean.face_source, source_polygon);
+  const std::vector<PanelCrossing> crossings = surface_crossings(clean.mesh);
   // The copies too (running out of memory in one, a large mesh's second copy, is a refusal that
   // must leave the previous design whole), then replace it by moves and clears.
   TriMesh original = clean.mesh;
@@ -86,6 +88,8 @@ std::string Session::load(const std::string& name, TriMesh raw, int input_triang
   prepared_notes_.clear();
   cleanup_ = std::move(cleanup);
   clean_report_ = clean.report;
+  self_crossings_ = static_cast<int>(crossings.size());
+  self_crossing_point_ = crossings.empty() ? Vec3::Zero() : crossings.front().point;
   params_.density.clear();  // per vertex of the previous mesh
   remesher_.reset();
   forget_result();
@@ -104,6 +108,10 @@ std::string Session::mesh_info_json() const {
   // Orientable surfaces: chi = 2 c - 2 g - b.
   j.value("genus", (2 * topology_.num_components - euler - loops) / 2);
   j.value("bboxDiagonal", bbox_diagonal(mesh_));
+  j.value("selfCrossings", self_crossings_);
+  j.begin_array("selfCrossingPoint");
+  for (int k = 0; k < 3; ++k) j.value(nullptr, self_crossing_point_[k]);
+  j.end_array();
   j.begin_array("cleanup");
   for (const std::string& m : cleanup_) j.value(nullptr, m);
   j.end_array();

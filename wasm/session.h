@@ -172,6 +172,10 @@ class Session {
   std::vector<std::string> cleanup_;   // what clean-up repaired, one sentence each
   CleanOptions repair_;                // set_repair(): how loads repair the mesh
   CleanReport clean_report_;           // of the loaded mesh
+  // The loaded surface passing through itself (surface_crossings): how many pairs of its
+  // triangles cross and the first pair's deepest point, told on load (panels there cross too).
+  int self_crossings_ = 0;
+  Vec3 self_crossing_point_ = Vec3::Zero();
   std::vector<std::string> prepared_notes_;  // what prepare() did and why
   std::vector<int> face_polygon_;     // per triangle of original_: its polygon in the file
   int input_triangles_ = 0;

@@ -37,4 +37,10 @@ std::vector<PanelCrossing> panel_crossings(const std::vector<Vec3>& vertices,
                                            const std::vector<std::vector<int>>& panels,
                                            const std::vector<Vec3>& normals, const std::vector<double>& offsets);
 
+// The surface passing through itself: pairs of its triangles that cross (the same check, each
+// triangle a panel; degenerate ones are not compared, neighbours sharing an edge or a corner
+// do not count). Panels made from such a surface cross there too, whatever their count
+// (cow.off: its tail goes into its rump, 83 pairs). About 0.1 s for 50k triangles, 2 s for 1M (native).
+std::vector<PanelCrossing> surface_crossings(const TriMesh& mesh);
+
 }  // namespace ff

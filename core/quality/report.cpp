@@ -349,17 +349,8 @@ QualityReport measure_quality(const TriMesh& input, const MeshTopology& input_to
       r.max_crossing_depth = std::max(r.max_crossing_depth, c.depth_share);
     }
   }
-  if (!r.crossing_pairs.empty()) {  // only then: the input's own check costs a sweep of its triangles
-    std::vector<std::vector<int>> triangles;
-    std::vector<Vec3> normals;
-    std::vector<double> offsets;
-    for (int f = 0; f < input.num_faces(); ++f) {
-      const Triangle& t = input.triangles[static_cast<size_t>(f)];
-      triangles.push_back({t[0], t[1], t[2]});
-      normals.push_back(face_normal(input, f));  // zero for a degenerate one: not compared
-      offsets.push_back(normals.back().dot(input.positions[static_cast<size_t>(t[0])]));
-    }
-    const std::vector<PanelCrossing> own = panel_crossings(input.positions, triangles, normals, offsets);
+  {
+    const std::vector<PanelCrossing> own = surface_crossings(input);
     r.input_crossings = static_cast<int>(own.size());
     if (!own.empty()) r.input_crossing_point = own.front().point;
   }

@@ -110,9 +110,9 @@ struct QualityReport {
   std::vector<std::array<int, 2>> crossing_pairs;
   std::vector<Vec3> crossing_points;
   double max_crossing_depth = 0.0;
-  // The input surface passing through itself (pairs of its triangles that cross, the same
-  // check): panels made from it cross there too, whatever the panel count. The first pair's
-  // deepest point (world coordinates).
+  // The input surface passing through itself (surface_crossings: pairs of its triangles that
+  // cross), always checked: panels made from it cross there too, whatever the panel count.
+  // The first pair's deepest point (world coordinates).
   int input_crossings = 0;
   Vec3 input_crossing_point = Vec3::Zero();
 };

@@ -20,7 +20,9 @@ expect_error() {
   "$bin" "$@" 2>"$tmp/err.txt" >/dev/null
   local got=$?
   local lines
-  lines=$(wc -l <"$tmp/err.txt")
+  # One error line; warnings said on load before it are the input's own (a spike through the
+  # surface passes through it: the stray vertex below).
+  lines=$(grep -cv "^flatfacet: warning: " "$tmp/err.txt")
   if [ "$got" != "$code" ]; then bad "exit $got (want $code): $*"; cat "$tmp/err.txt"; return; fi
   if [ "$lines" != 1 ]; then bad "$lines stderr lines (want 1): $*"; cat "$tmp/err.txt"; return; fi
   if ! grep -qiE -e "$pattern" "$tmp/err.txt"; then bad "message '$(cat "$tmp/err.txt")' lacks /$pattern/: $*"; return; fi
@@ -199,7 +201,8 @@ code2=$?
 python3 -c "
 import json, re, sys
 r = json.load(open(sys.argv[1]))
-line = open(sys.argv[2]).read()
+# Without cow.off's own warning on load (the surface passes through itself, checked below).
+line = ''.join(l for l in open(sys.argv[2]) if 'the surface passes through itself' not in l)
 m = re.fullmatch(r'flatfacet: (\d+) panels? invalid \((.+)\) after 1 solve; --report lists them; another --seed or --panels count \(more or fewer\) may make every panel valid\n', line)
 assert m and int(m.group(1)) == len(r['invalid']) > 0, (line, r['invalid'])
 names = {p for entry in r['invalid'] for p in entry['problems']}
@@ -521,10 +524,11 @@ code=$?
 [ "$code" = 0 ] || [ "$code" = 3 ] && ok || bad "remesh curvature density / anisotropy (exit $code): $(cat "$tmp/err.txt")"
 # Panels passing through each other are listed and warned about (not yet counted invalid):
 # cow.off at 70 panels, seed 1, where the tail goes into the rump (the model passes through
-# itself there, which the warning says); the bunny has none.
+# itself there, which the warning says, and a warning on load says first); the bunny has none.
 "$bin" remesh "$meshes/cow.off" --panels 70 --report "$tmp/cross.json" 2>"$tmp/err.txt"
 code=$?
 [ "$code" = 0 ] && grep -q "warning: [0-9]* pairs\? of panels pass through each other (P[0-9]* and P[0-9]*" "$tmp/err.txt" &&
+  grep -q "^flatfacet: warning: .*cow.off: the surface passes through itself (83 pairs of its triangles cross, one near (-0.4[0-9]*, 0.2[0-9]*, -0.0[0-9]*)): panels made from it can pass through each other there, whatever their count; mend the model there$" "$tmp/err.txt" &&
   grep -q "the surface itself passes through itself ([0-9]* pairs of its triangles cross, one near (" "$tmp/err.txt" &&
   python3 -c "
 import json, sys
@@ -534,8 +538,8 @@ assert r['input_crossings'] > 50 and len(r['input_crossing_point']) == 3, r['inp
 assert all(len(c['panels']) == 2 and len(c['point']) == 3 for c in r['crossing_panels'])
 " "$tmp/cross.json" && ok || bad "cow.off crossing panels warned and listed (exit $code): $(cat "$tmp/err.txt")"
 "$bin" remesh "$meshes/bunny.off" --panels 100 --report "$tmp/nocross.json" 2>"$tmp/err.txt"
-! grep -q "pass through each other" "$tmp/err.txt" &&
-  python3 -c "import json, sys; assert json.load(open(sys.argv[1]))['crossing_panels'] == []" "$tmp/nocross.json" &&
+! grep -q "pass through each other\|passes through itself" "$tmp/err.txt" &&
+  python3 -c "import json, sys; r = json.load(open(sys.argv[1])); assert r['crossing_panels'] == [] and r['input_crossings'] == 0" "$tmp/nocross.json" &&
   ok || bad "bunny.off: no crossing panels: $(cat "$tmp/err.txt")"
 # The preparation sizes by the expression as by a density file of its values: the same
 # refined mesh (before, the expression refined uniformly: 10,592 triangles against 11,588).

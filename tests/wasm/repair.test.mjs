@@ -1,11 +1,14 @@
 // Session.setRepair, the page's mesh repair (issue 7): a mesh with a non-manifold edge is
 // refused naming the edge and how large its largest manifold part is; with largestPart it
 // loads that part and solves to valid panels; holes are filled only when asked and small
-// enough; bad options are refused and change nothing.
+// enough; bad options are refused and change nothing. A surface that passes through itself is
+// told on load (not repaired).
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
+import path from 'node:path';
 import { cubeOff, twoCubesObj } from '../fixtures/meshes.mjs';
-import { json, loadModule, maxPlanarity, parseObj, solve } from './module.mjs';
+import { json, loadModule, maxPlanarity, meshes, parseObj, solve } from './module.mjs';
 
 const ff = await loadModule();
 
@@ -67,5 +70,20 @@ test('bad repair options are refused and the next load is as before', () => {
     assert.match(status.message, /holes to fill must have 0 \(off\) to 500 edges/);
   }
   assert.equal(json(s.loadMesh('twocubes.obj', twoCubesObj())).ok, false, 'still refused: largestPart unchanged');
+  s.delete();
+});
+
+// Not repaired, but told on load: the cow's tail goes into its rump (83 pairs of its triangles
+// cross there), and panels made from it would pass through each other at any count.
+test('a surface that passes through itself is told on load, with where', () => {
+  const s = new ff.Session();
+  const cow = json(s.loadMesh('cow.off', readFileSync(path.join(meshes, 'cow.off'))));
+  assert.equal(cow.ok, true, cow.message);
+  assert.equal(cow.selfCrossings, 83);
+  assert.equal(cow.selfCrossingPoint.length, 3);
+  assert.ok(cow.selfCrossingPoint[0] < -0.3, `the tail is at the back: ${cow.selfCrossingPoint}`);
+  const bunny = json(s.loadMesh('bunny.off', readFileSync(path.join(meshes, 'bunny.off'))));
+  assert.equal(bunny.selfCrossings, 0);
+  assert.deepEqual(bunny.selfCrossingPoint, [0, 0, 0]);
   s.delete();
 });

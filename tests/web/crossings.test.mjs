@@ -2,7 +2,7 @@
 // pass through each other, named as the parts list names them, with a warning.
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
-import { crossingNote, crossingPairs, crossingPoints, crossingRow } from '../../build/web-tests/crossings.js';
+import { crossingNote, crossingPairs, crossingPoints, crossingRow, selfCrossingNote } from '../../build/web-tests/crossings.js';
 
 test('pairs are named P1 ... and warned about with the deepest share', () => {
   const report = {
@@ -46,4 +46,16 @@ test('the markers: the deepest point of each pair; the legend line counts the pa
     assert.equal(crossingNote(none), null, JSON.stringify(none));
   }
   assert.deepEqual(crossingPoints({ crossing_panels: [{ panels: [1, 2], point: [1, 2] }] }), []);
+});
+
+test('a surface passing through itself is told on load, with where, and nothing else is', () => {
+  const note = selfCrossingNote({ selfCrossings: 83, selfCrossingPoint: [-0.41975, 0.21912, -0.0069512] });
+  assert.equal(
+    note,
+    'The surface passes through itself: 83 pairs of its triangles cross, one near (-0.42, 0.219, -0.00695). Panels made from it can pass through each other there, whatever their count: mend the model there before building.',
+  );
+  assert.match(selfCrossingNote({ selfCrossings: 1, selfCrossingPoint: [1, 2, 3] }), /^The surface passes through itself: 1 pair of its triangles cross, one near \(1, 2, 3\)\./);
+  assert.match(selfCrossingNote({ selfCrossings: 2, selfCrossingPoint: [1, Number.NaN, 3] }), /: 2 pairs of its triangles cross\. Panels/);
+  assert.equal(selfCrossingNote({ selfCrossings: 0, selfCrossingPoint: [0, 0, 0] }), '');
+  assert.equal(selfCrossingNote({}), '', 'an older worker that does not say');
 });

@@ -1,7 +1,8 @@
 // The Quality section's crossing row: pairs of panels that pass through each other in space
 // (report crossing_panels, core/panels/panel_crossings.h). The solver does not avoid them yet
 // and does not count them invalid, so the row is the designer's warning: such panels cannot
-// be built as drawn.
+// be built as drawn. And the note on load when the surface itself passes through itself.
+import type { MeshInfo } from '@flatfacet/wasm';
 import { showLegendLine } from './dom.ts';
 import { isRecord } from './params.ts';
 import type { QualityReport, SolveResult } from './protocol.ts';
@@ -74,4 +75,14 @@ export function crossingNote(report: QualityReport): string | null {
 // #crossing-legend for the result on show (hidden without one).
 export function renderCrossings(result: SolveResult | null): void {
   showLegendLine('crossing', result ? crossingNote(result.report) : null);
+}
+
+// The surface passing through itself, told on load: panels there can cross too, whatever
+// their count, so the model is what to mend ('' when it does not, or the core did not say).
+export function selfCrossingNote(info: MeshInfo): string {
+  const n = info.selfCrossings;
+  if (typeof n !== 'number' || !Number.isInteger(n) || n <= 0) return '';
+  const p = info.selfCrossingPoint;
+  const near = Array.isArray(p) && p.length === 3 && p.every(Number.isFinite) ? `, one near (${p.map((v) => String(Number(v.toPrecision(3)))).join(', ')})` : '';
+  return `The surface passes through itself: ${n.toLocaleString('en')} ${n === 1 ? 'pair' : 'pairs'} of its triangles cross${near}. Panels made from it can pass through each other there, whatever their count: mend the model there before building.`;
 }

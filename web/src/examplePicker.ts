@@ -2,6 +2,7 @@
 // (the file examples only when shipped), which one is the default, and what the select and
 // the caption show for the loaded mesh.
 import type { MeshInfo } from '@flatfacet/wasm';
+import { selfCrossingNote } from './crossings.ts';
 import { element } from './dom.ts';
 import { DEFAULT_EXAMPLE_ID, EXAMPLES, FALLBACK_EXAMPLE_ID, findExample } from './examples.ts';
 import type { DesignMesh } from './share.ts';
@@ -55,6 +56,9 @@ export function showMeshInfo(label: string, info: MeshInfo, read: string[]): voi
   if (info.cleanup.length > 0) sentences.push(`Repaired on load: ${info.cleanup.join('; ')}.`);
   cleanup.textContent = sentences.join(' ');
   cleanup.hidden = sentences.length === 0;
+  const crossing = element('mesh-self-crossing', HTMLParagraphElement);
+  crossing.textContent = selfCrossingNote(info);
+  crossing.hidden = crossing.textContent === '';
   const prepared = element('mesh-prepared', HTMLParagraphElement);
   prepared.textContent = info.prepared.length > 0 ? `Prepared for the panels: ${info.prepared.join('; ')}.` : '';
   prepared.hidden = info.prepared.length === 0;
