@@ -59,8 +59,14 @@ LoadedInput load_input(const std::string& path, const CleanOptions& options) {
   if (!doubt.empty()) std::fprintf(stderr, "flatfacet: warning: --largest-part: %s\n", doubt.c_str());
   // A surface that passes through itself gives panels that do too, at any count: said before
   // the solve, so the designer knows to mend the model rather than to try other counts.
-  const std::vector<PanelCrossing> crossings = surface_crossings(in.clean.mesh);
-  if (!crossings.empty()) {
+  const SurfaceCrossings own = surface_crossings(in.clean.mesh);
+  const std::vector<PanelCrossing>& crossings = own.pairs;
+  if (!own.checked) {
+    std::fprintf(stderr,
+                 "flatfacet: warning: %s: not checked whether the surface passes through itself: its triangles overlap "
+                 "too much in space (long thin triangles around one point?)\n",
+                 path.c_str());
+  } else if (!crossings.empty()) {
     const Vec3& p = crossings.front().point;
     std::fprintf(stderr,
                  "flatfacet: warning: %s: the surface passes through itself (%zu %s of its triangles cross, one near "

@@ -20,8 +20,8 @@ export interface MeshInfo extends Status {
   genus: number;
   bboxDiagonal: number;
   // Pairs of the cleaned mesh's triangles that pass through each other (the surface crossing
-  // itself; panels made from it cross there too), and the first pair's deepest point (0s
-  // when none).
+  // itself; panels made from it cross there too; -1: not checked, its triangles overlap too
+  // much in space), and the first pair's deepest point (0s when none).
   selfCrossings: number;
   selfCrossingPoint: [number, number, number];
   cleanup: string[]; // one sentence per repair applied ("welded 12 duplicate vertices")

@@ -72,7 +72,7 @@ std::string Session::load(const std::string& name, TriMesh raw, int input_triang
   MeshTopology topology = build_topology(clean.mesh);
   // The file's polygon of each cleaned triangle (a subdivision's control faces, prepare()).
   std::vector<int> face_polygon = cleaned_face_polygons(clean.face_source, source_polygon);
-  const std::vector<PanelCrossing> crossings = surface_crossings(clean.mesh);
+  const SurfaceCrossings crossings = surface_crossings(clean.mesh);
   // The copies too (running out of memory in one, a large mesh's second copy, is a refusal that
   // must leave the previous design whole), then replace it by moves and clears.
   TriMesh original = clean.mesh;
@@ -88,8 +88,8 @@ std::string Session::load(const std::string& name, TriMesh raw, int input_triang
   prepared_notes_.clear();
   cleanup_ = std::move(cleanup);
   clean_report_ = clean.report;
-  self_crossings_ = static_cast<int>(crossings.size());
-  self_crossing_point_ = crossings.empty() ? Vec3::Zero() : crossings.front().point;
+  self_crossings_ = crossings.checked ? static_cast<int>(crossings.pairs.size()) : -1;
+  self_crossing_point_ = crossings.pairs.empty() ? Vec3::Zero() : crossings.pairs.front().point;
   params_.density.clear();  // per vertex of the previous mesh
   remesher_.reset();
   forget_result();

@@ -173,7 +173,7 @@ class Session {
   CleanOptions repair_;                // set_repair(): how loads repair the mesh
   CleanReport clean_report_;           // of the loaded mesh
   // The loaded surface passing through itself (surface_crossings): how many pairs of its
-  // triangles cross and the first pair's deepest point, told on load (panels there cross too).
+  // triangles cross (-1: not checked) and the first pair's deepest point, told on load.
   int self_crossings_ = 0;
   Vec3 self_crossing_point_ = Vec3::Zero();
   std::vector<std::string> prepared_notes_;  // what prepare() did and why

@@ -63,19 +63,6 @@ void stretches(const std::vector<Vec3>& vertices, const std::vector<int>& panel,
   if (out.size() % 2 != 0) out.pop_back();  // cannot happen for a closed outline; kept safe
 }
 
-// True when the panel has corners strictly on both sides of the plane (beyond `snap`): else
-// the plane meets it only on its outline, and nothing crosses it there.
-bool straddles(const std::vector<Vec3>& vertices, const std::vector<int>& panel, const Vec3& normal, double offset,
-               double snap) {
-  bool above = false, below = false;
-  for (int v : panel) {
-    const double s = normal.dot(vertices[static_cast<size_t>(v)]) - offset;
-    above = above || s > snap;
-    below = below || s < -snap;
-  }
-  return above && below;
-}
-
 // Two triangles along a common edge: the line of their planes is that edge's, which each meets
 // only on its outline, so they cannot cross (most of the pairs a surface's own check meets).
 bool triangles_along_an_edge(const std::vector<int>& a, const std::vector<int>& b) {
@@ -85,52 +72,59 @@ bool triangles_along_an_edge(const std::vector<int>& a, const std::vector<int>& 
   return shared >= 2;
 }
 
-// Pairs of polygons whose boxes overlap, each once, from a uniform grid (sorting the
-// (cell, polygon) entries): linear in the number of polygons for a surface, whatever its
-// shape. (A sweep along x compared every pair of triangles of a wall across x: 17 s for 80,000
-// of them, 0.2 s so.) The cell is twice the median box's largest extent (0.09 s for the
-// 51,712 triangles of face.obj, 0.13 s at once the median), doubled while the entries
-// outgrow 64 per polygon (a few very large polygons). A pair is taken in the one cell that holds the
+// Pairs of polygons whose boxes overlap, each once, from a grid (sorting the (cell, polygon)
+// entries): linear in the number of polygons for a surface, whatever its shape. (A sweep along
+// x compared every pair of triangles of a wall across x: 80,000 of them, 17 s, 0.2 s so.) A
+// cell is twice the median box's extent along each axis (per axis: a wall of tall thin strips,
+// or a cylinder's ring of them, splits across the strips), doubled while the entries outgrow
+// 32 per polygon (a few very large polygons). A pair is taken in the one cell that holds the
 // larger of its two boxes' lower corners, which both boxes cover exactly when they overlap.
+// Returns false, having visited only some pairs, when the cells would take more than
+// `max_tests` box tests in all: boxes that truly overlap by the thousand (a fan of long thin
+// triangles around one point, all of whose boxes hold that point) cost their square.
 template <typename Visit>
-void overlapping_pairs(const std::vector<Box>& boxes, const std::vector<size_t>& items, Visit visit) {
-  if (items.size() < 2) return;
+bool overlapping_pairs(const std::vector<Box>& boxes, const std::vector<size_t>& items, double max_tests, Visit visit) {
+  if (items.size() < 2) return true;
   Box all{boxes[items[0]].lo, boxes[items[0]].hi};
-  std::vector<double> extents;
   for (size_t p : items) {
     all.lo = all.lo.cwiseMin(boxes[p].lo);
     all.hi = all.hi.cwiseMax(boxes[p].hi);
-    extents.push_back((boxes[p].hi - boxes[p].lo).maxCoeff());
   }
-  std::nth_element(extents.begin(), extents.begin() + static_cast<std::ptrdiff_t>(extents.size() / 2), extents.end());
-  // At most 2^20 cells a side (the keys pack three such numbers).
-  double cell = std::max({2.0 * extents[extents.size() / 2], (all.hi - all.lo).maxCoeff() / double(1 << 20),
-                          std::numeric_limits<double>::min()});
-  const auto index = [&](double v, double lo) {
-    return static_cast<uint64_t>(std::clamp(std::floor((v - lo) / cell), 0.0, double((1 << 21) - 1)));
+  constexpr uint64_t kSide = uint64_t{1} << 20;  // cells a side at most (keys pack 3 x 21 bits)
+  Vec3 cell;
+  std::vector<double> extents(items.size());
+  for (int axis = 0; axis < 3; ++axis) {
+    for (size_t k = 0; k < items.size(); ++k) extents[k] = boxes[items[k]].hi(axis) - boxes[items[k]].lo(axis);
+    std::nth_element(extents.begin(), extents.begin() + static_cast<std::ptrdiff_t>(extents.size() / 2), extents.end());
+    cell(axis) = std::max({2.0 * extents[extents.size() / 2], (all.hi(axis) - all.lo(axis)) / double(kSide),
+                           std::numeric_limits<double>::min()});
+  }
+  const auto index = [&](double v, int axis) {
+    const double t = std::floor((v - all.lo(axis)) / cell(axis));
+    if (!(t > 0.0)) return uint64_t{0};  // and NaN (a span beyond the doubles: one cell)
+    return t >= double(2 * kSide - 1) ? 2 * kSide - 1 : static_cast<uint64_t>(t);
   };
-  const auto key = [&](const Vec3& p) {
-    return index(p.x(), all.lo.x()) << 42 | index(p.y(), all.lo.y()) << 21 | index(p.z(), all.lo.z());
-  };
+  const auto key = [&](const Vec3& p) { return index(p.x(), 0) << 42 | index(p.y(), 1) << 21 | index(p.z(), 2); };
+  const uint64_t most = 32 * static_cast<uint64_t>(items.size());
   uint64_t total = 0;
   for (;;) {
     total = 0;
     for (size_t p : items) {
       uint64_t count = 1;
-      for (int axis = 0; axis < 3; ++axis)
-        count *= index(boxes[p].hi(axis), all.lo(axis)) - index(boxes[p].lo(axis), all.lo(axis)) + 1;
-      total += count;
+      for (int axis = 0; axis < 3; ++axis) count *= index(boxes[p].hi(axis), axis) - index(boxes[p].lo(axis), axis) + 1;
+      total += std::min(count, most + 1);  // no wrap: each term is at most 2^58
+      if (total > most) break;
     }
-    if (total <= 64 * items.size() || !std::isfinite(2.0 * cell)) break;
+    if (total <= most || !(2.0 * cell).allFinite()) break;
     cell *= 2.0;
   }
   std::vector<std::pair<uint64_t, size_t>> entries;
-  entries.reserve(static_cast<size_t>(total));
+  entries.reserve(static_cast<size_t>(std::min(total, most)));
   for (size_t p : items) {
     const Box& b = boxes[p];
-    const uint64_t x0 = index(b.lo.x(), all.lo.x()), x1 = index(b.hi.x(), all.lo.x());
-    const uint64_t y0 = index(b.lo.y(), all.lo.y()), y1 = index(b.hi.y(), all.lo.y());
-    const uint64_t z0 = index(b.lo.z(), all.lo.z()), z1 = index(b.hi.z(), all.lo.z());
+    const uint64_t x0 = index(b.lo.x(), 0), x1 = index(b.hi.x(), 0);
+    const uint64_t y0 = index(b.lo.y(), 1), y1 = index(b.hi.y(), 1);
+    const uint64_t z0 = index(b.lo.z(), 2), z1 = index(b.hi.z(), 2);
     for (uint64_t x = x0; x <= x1; ++x) {
       for (uint64_t y = y0; y <= y1; ++y) {
         for (uint64_t z = z0; z <= z1; ++z) entries.emplace_back(x << 42 | y << 21 | z, p);
@@ -138,6 +132,13 @@ void overlapping_pairs(const std::vector<Box>& boxes, const std::vector<size_t>&
     }
   }
   std::sort(entries.begin(), entries.end());
+  // The box tests the cells take, counted before any is made.
+  double tests = 0.0;
+  for (size_t begin = 0, end = 0; begin < entries.size(); begin = end) {
+    while (end < entries.size() && entries[end].first == entries[begin].first) ++end;
+    tests += 0.5 * double(end - begin) * double(end - begin - 1);
+  }
+  if (tests > max_tests) return false;
   for (size_t begin = 0; begin < entries.size();) {
     size_t end = begin;
     while (end < entries.size() && entries[end].first == entries[begin].first) ++end;
@@ -152,13 +153,18 @@ void overlapping_pairs(const std::vector<Box>& boxes, const std::vector<size_t>&
     }
     begin = end;
   }
+  return true;
 }
 
 }  // namespace
 
-std::vector<PanelCrossing> panel_crossings(const std::vector<Vec3>& vertices,
-                                           const std::vector<std::vector<int>>& panels,
-                                           const std::vector<Vec3>& normals, const std::vector<double>& offsets) {
+namespace {
+
+// panel_crossings within a budget of box tests (overlapping_pairs); `complete` false when it ran out.
+std::vector<PanelCrossing> find_crossings(const std::vector<Vec3>& vertices,
+                                          const std::vector<std::vector<int>>& panels, const std::vector<Vec3>& normals,
+                                          const std::vector<double>& offsets, double max_tests, bool& complete) {
+  complete = true;
   std::vector<PanelCrossing> out;
   const size_t np = panels.size();
   if (normals.size() != np || offsets.size() != np) return out;
@@ -178,7 +184,7 @@ std::vector<PanelCrossing> panel_crossings(const std::vector<Vec3>& vertices,
     items.push_back(p);
   }
   std::vector<double> sa, sb;  // reused: the check runs for every pair of overlapping boxes
-  overlapping_pairs(boxes, items, [&](size_t a, size_t b) {
+  complete = overlapping_pairs(boxes, items, max_tests, [&](size_t a, size_t b) {
     if (triangles_along_an_edge(panels[a], panels[b])) return;
     const Vec3& na = normals[a];
     const Vec3& nb = normals[b];
@@ -188,8 +194,6 @@ std::vector<PanelCrossing> panel_crossings(const std::vector<Vec3>& vertices,
     const Vec3 origin = (offsets[a] * nb.cross(u) + offsets[b] * u.cross(na)) / u.squaredNorm();
     const double smaller = std::min(size[a], size[b]);
     const double snap = 1e-9 * std::max(size[a], size[b]);
-    if (!straddles(vertices, panels[a], nb, offsets[b], snap) || !straddles(vertices, panels[b], na, offsets[a], snap))
-      return;
     stretches(vertices, panels[a], origin, direction, na.cross(direction), snap, sa);
     if (sa.empty()) return;
     stretches(vertices, panels[b], origin, direction, nb.cross(direction), snap, sb);
@@ -222,7 +226,16 @@ std::vector<PanelCrossing> panel_crossings(const std::vector<Vec3>& vertices,
   return out;
 }
 
-std::vector<PanelCrossing> surface_crossings(const TriMesh& mesh) {
+}  // namespace
+
+std::vector<PanelCrossing> panel_crossings(const std::vector<Vec3>& vertices,
+                                           const std::vector<std::vector<int>>& panels,
+                                           const std::vector<Vec3>& normals, const std::vector<double>& offsets) {
+  bool complete = true;
+  return find_crossings(vertices, panels, normals, offsets, std::numeric_limits<double>::infinity(), complete);
+}
+
+SurfaceCrossings surface_crossings(const TriMesh& mesh) {
   std::vector<std::vector<int>> triangles;
   std::vector<Vec3> normals;
   std::vector<double> offsets;
@@ -233,7 +246,11 @@ std::vector<PanelCrossing> surface_crossings(const TriMesh& mesh) {
     normals.push_back(face_normal(mesh, f));  // zero for a degenerate one: not compared
     offsets.push_back(normals.back().dot(mesh.positions[static_cast<size_t>(t[0])]));
   }
-  return panel_crossings(mesh.positions, triangles, normals, offsets);
+  SurfaceCrossings out;
+  const double max_tests = kSurfaceTestsPerTriangle * mesh.num_faces() + 1e7;
+  out.pairs = find_crossings(mesh.positions, triangles, normals, offsets, max_tests, out.checked);
+  if (!out.checked) out.pairs.clear();
+  return out;
 }
 
 }  // namespace ff

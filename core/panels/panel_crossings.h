@@ -40,7 +40,16 @@ std::vector<PanelCrossing> panel_crossings(const std::vector<Vec3>& vertices,
 // The surface passing through itself: pairs of its triangles that cross (the same check, each
 // triangle a panel; degenerate ones are not compared, neighbours sharing an edge or a corner
 // do not count). Panels made from such a surface cross there too, whatever their count
-// (cow.off: its tail goes into its rump, 83 pairs). About 0.1 s for 50k triangles, 2 s for 1M (native).
-std::vector<PanelCrossing> surface_crossings(const TriMesh& mesh);
+// (cow.off: its tail goes into its rump, 83 pairs). About 0.1 s for 50k triangles, 2 s for 1M
+// (native). `checked` false (and no pairs) when the triangles' boxes overlap so much that the
+// check would take more than kSurfaceTestsPerTriangle box tests a triangle (plus 1e7): a
+// fan of long thin triangles around one point, all of whose boxes hold it, costs the square
+// of their number (a 100k-triangle disc as a fan: minutes). Shared meshes take 6-30.
+struct SurfaceCrossings {
+  std::vector<PanelCrossing> pairs;
+  bool checked = true;
+};
+constexpr double kSurfaceTestsPerTriangle = 400.0;
+SurfaceCrossings surface_crossings(const TriMesh& mesh);
 
 }  // namespace ff

@@ -350,9 +350,9 @@ QualityReport measure_quality(const TriMesh& input, const MeshTopology& input_to
     }
   }
   {
-    const std::vector<PanelCrossing> own = surface_crossings(input);
-    r.input_crossings = static_cast<int>(own.size());
-    if (!own.empty()) r.input_crossing_point = own.front().point;
+    const SurfaceCrossings own = surface_crossings(input);
+    r.input_crossings = own.checked ? static_cast<int>(own.pairs.size()) : -1;
+    if (!own.pairs.empty()) r.input_crossing_point = own.pairs.front().point;
   }
   // A cluster that could not become a panel leaves its faces uncovered: it counts as an
   // invalid panel too, so the count never hides it (write_invalid_panels lists it).

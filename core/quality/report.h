@@ -111,8 +111,9 @@ struct QualityReport {
   std::vector<Vec3> crossing_points;
   double max_crossing_depth = 0.0;
   // The input surface passing through itself (surface_crossings: pairs of its triangles that
-  // cross), always checked: panels made from it cross there too, whatever the panel count.
-  // The first pair's deepest point (world coordinates).
+  // cross; -1 when its triangles overlap too much to check): panels made from it cross there
+  // too, whatever the panel count. The first pair's deepest point (world coordinates). The
+  // input is the mesh the panels were made from: after a refinement, more pairs than the file.
   int input_crossings = 0;
   Vec3 input_crossing_point = Vec3::Zero();
 };

@@ -176,9 +176,9 @@ std::string crossing_phrase(const QualityReport& q) {
                     "built as drawn; ";
   if (q.input_crossings > 0) {
     const Vec3& p = q.input_crossing_point;
-    return out + "the surface itself passes through itself (" + std::to_string(q.input_crossings) +
-           " pairs of its triangles cross, one near (" + short_number(p.x()) + ", " + short_number(p.y()) + ", " +
-           short_number(p.z()) + ")), and panels made from it follow it: mend the model there";
+    return out + "the surface itself passes through itself (one place near (" + short_number(p.x()) + ", " +
+           short_number(p.y()) + ", " + short_number(p.z()) +
+           ")), and panels made from it follow it: mend the model there";
   }
   return out + "more panels there, or another --seed or --panels count, may avoid it";
 }

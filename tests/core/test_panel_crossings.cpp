@@ -3,6 +3,7 @@
 // leaves such pairs (reported by the quality check, bench/README.md).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -157,13 +158,15 @@ TEST(PanelCrossings, AWallAcrossOneAxisIsCheckedPairByPair) {
       wall.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
     }
   }
-  ASSERT_TRUE(surface_crossings(wall).empty());
+  const SurfaceCrossings plain = surface_crossings(wall);
+  ASSERT_TRUE(plain.checked);
+  ASSERT_TRUE(plain.pairs.empty());
   const int v = static_cast<int>(wall.positions.size());
   wall.positions.emplace_back(-0.5, 100.3, 100.2);
   wall.positions.emplace_back(0.5, 100.3, 100.2);
   wall.positions.emplace_back(0.0, 100.3, 100.9);
   wall.triangles.push_back({v, v + 1, v + 2});  // through the wall across one of its cells
-  const std::vector<PanelCrossing> found = surface_crossings(wall);
+  const std::vector<PanelCrossing> found = surface_crossings(wall).pairs;
   ASSERT_FALSE(found.empty());
   for (const PanelCrossing& c : found) {
     EXPECT_EQ(c.b, static_cast<int>(wall.triangles.size()) - 1);
@@ -175,11 +178,67 @@ TEST(PanelCrossings, AWallAcrossOneAxisIsCheckedPairByPair) {
 // The shared meshes: the cow's tail goes into its rump (83 pairs of its triangles cross), the
 // camel's head has a few, the bunny none.
 TEST(SurfaceCrossings, TheCowPassesThroughItselfTheBunnyDoesNot) {
-  const std::vector<PanelCrossing> cow = surface_crossings(test::load_clean("cow.off"));
+  const std::vector<PanelCrossing> cow = surface_crossings(test::load_clean("cow.off")).pairs;
   EXPECT_EQ(cow.size(), 83u);
   for (const PanelCrossing& c : cow) EXPECT_LT(c.point.x(), -0.3);  // the tail, at the back
-  EXPECT_EQ(surface_crossings(test::load_clean("camelhead.off")).size(), 5u);
-  EXPECT_TRUE(surface_crossings(test::load_clean("bunny.off")).empty());
+  EXPECT_EQ(surface_crossings(test::load_clean("camelhead.off")).pairs.size(), 5u);
+  const SurfaceCrossings bunny = surface_crossings(test::load_clean("bunny.off"));
+  EXPECT_TRUE(bunny.checked);
+  EXPECT_TRUE(bunny.pairs.empty());
+}
+
+// Tall thin strips side by side (a wall of 40,000 triangles 10 high and 0.005 wide, and a
+// cylinder's ring of them): each cell is sized along each axis, so the strips are compared
+// with their neighbours only (cells sized by the largest extent held every strip in one: 9 s
+// for 100,000; measured, not asserted). A triangle pushed through one strip is found.
+TEST(SurfaceCrossings, TallThinStripsAreComparedWithTheirNeighbours) {
+  const int n = 20000;
+  const double through = 2 * M_PI * (5000.5 / n);  // the middle of strip 5000
+  for (const bool ring : {false, true}) {
+    TriMesh strips;
+    for (int i = 0; i <= n; ++i) {
+      const double t = double(i) / n;
+      const Vec3 foot =
+          ring ? Vec3(20.0 * std::cos(2 * M_PI * t), 0.0, 20.0 * std::sin(2 * M_PI * t)) : Vec3(100.0 * t, 0.0, 0.0);
+      strips.positions.push_back(foot);
+      strips.positions.push_back(foot + Vec3(0.0, 10.0, 0.0));
+    }
+    for (int i = 0; i < n; ++i) {
+      if (ring && i == n - 1) break;  // no closing seam: the first and last strips would overlap
+      strips.triangles.push_back({2 * i, 2 * i + 2, 2 * i + 3});
+      strips.triangles.push_back({2 * i, 2 * i + 3, 2 * i + 1});
+    }
+    const SurfaceCrossings plain = surface_crossings(strips);
+    EXPECT_TRUE(plain.checked);
+    EXPECT_TRUE(plain.pairs.empty());
+    const Vec3 across = ring ? Vec3(std::cos(through), 0.0, std::sin(through)) : Vec3::UnitZ();
+    const Vec3 along = ring ? Vec3(-std::sin(through), 0.0, std::cos(through)) : Vec3::UnitX();
+    const Vec3 at = (ring ? 20.0 * across : Vec3(100.0 * 5000.5 / n, 0.0, 0.0)) + Vec3(0.0, 5.0, 0.0);
+    const int v = static_cast<int>(strips.positions.size());
+    strips.positions.push_back(at - 0.5 * across - 0.0003 * along);
+    strips.positions.push_back(at + 0.5 * across + 0.0003 * along);
+    strips.positions.push_back(at + Vec3(0.0, 0.5, 0.0));
+    strips.triangles.push_back({v, v + 1, v + 2});
+    const SurfaceCrossings found = surface_crossings(strips);
+    EXPECT_TRUE(found.checked);
+    ASSERT_FALSE(found.pairs.empty()) << (ring ? "ring" : "wall");
+    for (const PanelCrossing& c : found.pairs) EXPECT_EQ(c.b, static_cast<int>(strips.triangles.size()) - 1);
+  }
+}
+
+// A disc as a fan of 100,000 long thin triangles around its centre: every box holds the
+// centre, so every pair of boxes overlaps (5e9 tests, minutes). The check says it did not look
+// rather than take that long; a fan of 1,000 is checked.
+TEST(SurfaceCrossings, AFanTooLargeToCheckSaysSo) {
+  for (const int n : {1000, 100000}) {
+    TriMesh fan;
+    fan.positions.emplace_back(0.0, 0.0, 0.0);
+    for (int i = 0; i < n; ++i) fan.positions.emplace_back(std::cos(2 * M_PI * i / n), std::sin(2 * M_PI * i / n), 0.0);
+    for (int i = 0; i < n; ++i) fan.triangles.push_back({0, 1 + i, 1 + (i + 1) % n});
+    const SurfaceCrossings found = surface_crossings(fan);
+    EXPECT_EQ(found.checked, n == 1000) << n;
+    EXPECT_TRUE(found.pairs.empty());
+  }
 }
 
 // The report checks the input whether or not panels cross: camelhead.off's 5 pairs are too

@@ -19,7 +19,7 @@ test('pairs are named P1 ... and warned about with the deepest share', () => {
   assert.equal(row.warn, true);
   assert.match(row.hint, /\(P37 and P38, P45 and P52; the deepest 4\.8 % of the smaller panel's size\): they cannot be built/);
   assert.match(row.hint, /More panels there, or another seed or panel count, may avoid it\.$/);
-  assert.match(crossingRow({ ...report, input_crossings: 83 }).hint, /itself there \(83 pairs of its triangles cross\).*mend the model there\.$/);
+  assert.match(crossingRow({ ...report, input_crossings: 83 }).hint, /passes through itself there, and panels made from it follow it: mend the model there\.$/);
 });
 
 test('none: a quiet zero; more than four: the first four', () => {
@@ -57,5 +57,6 @@ test('a surface passing through itself is told on load, with where, and nothing 
   assert.match(selfCrossingNote({ selfCrossings: 1, selfCrossingPoint: [1, 2, 3] }), /^The surface passes through itself: 1 pair of its triangles cross, one near \(1, 2, 3\)\./);
   assert.match(selfCrossingNote({ selfCrossings: 2, selfCrossingPoint: [1, Number.NaN, 3] }), /: 2 pairs of its triangles cross\. Panels/);
   assert.equal(selfCrossingNote({ selfCrossings: 0, selfCrossingPoint: [0, 0, 0] }), '');
+  assert.match(selfCrossingNote({ selfCrossings: -1, selfCrossingPoint: [0, 0, 0] }), /^Not checked whether the surface passes through itself: its triangles overlap too much in space/);
   assert.equal(selfCrossingNote({}), '', 'an older worker that does not say');
 });

@@ -32,9 +32,8 @@ export function inputCrossings(report: QualityReport): number {
 
 // What to do about them: mend a model that passes through itself, else try more panels.
 function advice(report: QualityReport): string {
-  const own = inputCrossings(report);
-  return own > 0
-    ? `The surface itself passes through itself there (${own} pairs of its triangles cross), and panels made from it follow it: mend the model there.`
+  return inputCrossings(report) > 0
+    ? 'The surface itself passes through itself there, and panels made from it follow it: mend the model there.'
     : 'More panels there, or another seed or panel count, may avoid it.';
 }
 
@@ -81,6 +80,7 @@ export function renderCrossings(result: SolveResult | null): void {
 // their count, so the model is what to mend ('' when it does not, or the core did not say).
 export function selfCrossingNote(info: MeshInfo): string {
   const n = info.selfCrossings;
+  if (n === -1) return 'Not checked whether the surface passes through itself: its triangles overlap too much in space (long thin triangles around one point?).';
   if (typeof n !== 'number' || !Number.isInteger(n) || n <= 0) return '';
   const p = info.selfCrossingPoint;
   const near = Array.isArray(p) && p.length === 3 && p.every(Number.isFinite) ? `, one near (${p.map((v) => String(Number(v.toPrecision(3)))).join(', ')})` : '';
