@@ -2,7 +2,7 @@
 // pass through each other, named as the parts list names them, with a warning.
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
-import { crossingNote, crossingPairs, crossingPoints, crossingRow, selfCrossingNote } from '../../build/web-tests/crossings.js';
+import { crossingNote, crossingPairs, crossingPoints, crossingRow, selfCrossingNote, selfCrossingPoint } from '../../build/web-tests/crossings.js';
 
 test('pairs are named P1 ... and warned about with the deepest share', () => {
   const report = {
@@ -59,4 +59,12 @@ test('a surface passing through itself is told on load, with where, and nothing 
   assert.equal(selfCrossingNote({ selfCrossings: 0, selfCrossingPoint: [0, 0, 0] }), '');
   assert.match(selfCrossingNote({ selfCrossings: -1, selfCrossingPoint: [0, 0, 0] }), /^Not checked whether the surface passes through itself: its triangles overlap too much in space/);
   assert.equal(selfCrossingNote({}), '', 'an older worker that does not say');
+});
+
+test('the point marked where the surface passes through itself, only when it does', () => {
+  assert.deepEqual(selfCrossingPoint({ selfCrossings: 83, selfCrossingPoint: [-0.42, 0.22, -0.007] }), [-0.42, 0.22, -0.007]);
+  assert.equal(selfCrossingPoint({ selfCrossings: 0, selfCrossingPoint: [0, 0, 0] }), null);
+  assert.equal(selfCrossingPoint({ selfCrossings: -1, selfCrossingPoint: [0, 0, 0] }), null, 'not checked');
+  assert.equal(selfCrossingPoint({ selfCrossings: 2, selfCrossingPoint: [1, Number.NaN, 3] }), null);
+  assert.equal(selfCrossingPoint({}), null);
 });

@@ -86,3 +86,17 @@ export function selfCrossingNote(info: MeshInfo): string {
   const near = Array.isArray(p) && p.length === 3 && p.every(Number.isFinite) ? `, one near (${p.map((v) => String(Number(v.toPrecision(3)))).join(', ')})` : '';
   return `The surface passes through itself: ${n.toLocaleString('en')} ${n === 1 ? 'pair' : 'pairs'} of its triangles cross${near}. Panels made from it can pass through each other there, whatever their count: mend the model there before building.`;
 }
+
+// The point to mark where the loaded surface passes through itself, or null.
+export function selfCrossingPoint(info: MeshInfo): [number, number, number] | null {
+  const n = info.selfCrossings;
+  const p = info.selfCrossingPoint;
+  if (typeof n !== 'number' || n <= 0 || !Array.isArray(p) || p.length !== 3 || !p.every(Number.isFinite)) return null;
+  return [p[0], p[1], p[2]];
+}
+
+// #crossing-legend for a surface on show without panels: its own crossing, marked in the view.
+export function renderSelfCrossing(info: MeshInfo): void {
+  const n = info.selfCrossings;
+  showLegendLine('crossing', selfCrossingPoint(info) ? `The surface passes through itself: ${n.toLocaleString('en')} ${n === 1 ? 'pair' : 'pairs'} of its triangles, one marked` : null);
+}

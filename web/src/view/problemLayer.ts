@@ -16,7 +16,7 @@ const AMBER = 0xffb000;
 const CYAN = 0x22d3ee; // styles.css .legend-dot.farthest
 const VIOLET = 0xa855f7; // styles.css .legend-dot.sharpest
 const LIME = 0xa3e635; // styles.css .legend-dot.collapsed
-const ORANGE = 0xf97316; // styles.css .legend-dot.crossing
+export const ORANGE = 0xf97316; // styles.css .legend-dot.crossing
 
 type Point = [number, number, number];
 
@@ -28,7 +28,7 @@ export interface MarkedPoints {
   crossings: number[];  // x y z of each point where two panels cross
 }
 
-function shiftedPoints(values: number[], origin: THREE.Vector3): THREE.BufferGeometry {
+export function shiftedPoints(values: number[], origin: THREE.Vector3): THREE.BufferGeometry {
   const positions = new Float32Array(values.length);
   for (let i = 0; i < values.length; i++) positions[i] = values[i]! - origin.getComponent(i % 3);
   const geometry = new THREE.BufferGeometry();

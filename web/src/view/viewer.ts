@@ -12,7 +12,7 @@ import type { SolveResult } from '../protocol.ts';
 import { isSoftwareRenderer } from './gpu.ts';
 import { InputLayer } from './inputLayer.ts';
 import { PanelLayer } from './panelLayer.ts';
-import { ProblemLayer } from './problemLayer.ts';
+import { ORANGE, ProblemLayer, shiftedPoints } from './problemLayer.ts';
 import { ThickLayer } from './thickLayer.ts';
 
 export interface ViewToggles {
@@ -36,6 +36,10 @@ export class Viewer {
   private readonly panels = new PanelLayer();
   private readonly problems = new ProblemLayer();
   private readonly thick = new ThickLayer();
+  // Where the loaded surface passes through itself (an orange point, as where panels cross),
+  // while the surface shows without panels.
+  private readonly selfCrossing = new THREE.Points(new THREE.BufferGeometry(), new THREE.PointsMaterial({ color: ORANGE, size: 12, sizeAttenuation: false, depthTest: false }));
+  private selfCrossingMarked = false;
   private readonly origin = new THREE.Vector3();
   private toggles: ViewToggles = { clusters: false, panels: true, edges: true, problems: true, beforeFix: false, deviation: false, thick: false };
   private result: SolveResult | null = null;
@@ -72,6 +76,9 @@ export class Viewer {
     this.selection.renderOrder = 11;
     this.selection.name = 'selected-panel';
     this.scene.add(this.selection);
+    this.selfCrossing.name = 'self-crossing';
+    this.selfCrossing.renderOrder = 9;
+    this.scene.add(this.selfCrossing);
 
     this.controls = new OrbitControls(this.camera, this.renderer.domElement);
     this.controls.addEventListener('change', () => this.requestRender());
@@ -197,6 +204,15 @@ export class Viewer {
     this.liveClusters = null;
   }
 
+  // The point of the loaded surface where it passes through itself (mesh coordinates), or null;
+  // after setSurface, whose centre it is shifted by.
+  setSelfCrossing(point: [number, number, number] | null): void {
+    this.selfCrossing.geometry.dispose();
+    this.selfCrossing.geometry = shiftedPoints(point ?? [], this.origin);
+    this.selfCrossingMarked = point !== null;
+    this.applyVisibility();
+  }
+
   setResult(result: SolveResult | null): void {
     this.result = result;
     this.panels.set(result, this.origin, this.toggles.beforeFix, this.toggles.deviation);
@@ -287,6 +303,7 @@ export class Viewer {
     this.selection.visible = showPanels && !this.toggles.beforeFix;
     // The surface shows when panels do not cover it: during a solve, before any, or on request.
     this.input.mesh.visible = this.solving || !showPanels || this.toggles.clusters || !this.toggles.panels;
+    this.selfCrossing.visible = this.selfCrossingMarked && !showPanels && this.toggles.problems;
     if (this.densityView) {
       this.input.mesh.visible = true;
       this.panels.faces.visible = false;
@@ -295,6 +312,7 @@ export class Viewer {
       this.thick.markers.visible = false;
       this.thick.folded.visible = false;
       this.selection.visible = false;
+      this.selfCrossing.visible = false;
     }
     this.requestRender();
   }
