@@ -539,3 +539,25 @@ test('a narrow window frames the whole model', async () => {
     await context.close();
   }
 });
+
+// The view takes the keyboard (it took none before): Tab reaches the canvas, which says how
+// to use it; Shift and the arrow keys turn the model, the arrow keys move it.
+test('the view takes the keyboard: focus, turn with Shift and the arrows, move with the arrows', async () => {
+  await suite.withPage(suite.url, async (page) => {
+    await waitForDone(page);
+    const canvas = page.locator('#viewport canvas');
+    assert.equal(await canvas.getAttribute('tabindex'), '0');
+    assert.equal(await canvas.getAttribute('aria-describedby'), 'view-keys');
+    assert.match(await page.locator('#view-keys').textContent(), /press Shift and the arrow keys, to turn the view; the arrow keys move it/);
+    await canvas.focus();
+    assert.equal(await canvas.evaluate((c) => c === document.activeElement), true);
+    const before = await canvas.screenshot();
+    for (let i = 0; i < 8; ++i) await page.keyboard.press('Shift+ArrowLeft');
+    const turned = await canvas.screenshot();
+    assert.equal(turned.equals(before), false, 'Shift and the arrows turn the view');
+    for (let i = 0; i < 8; ++i) await page.keyboard.press('ArrowUp');
+    const moved = await canvas.screenshot();
+    assert.equal(moved.equals(turned), false, 'the arrows move it');
+    await screenshot(page, 'view-keyboard');
+  });
+});

@@ -37,7 +37,7 @@ export class Viewer {
   private readonly problems = new ProblemLayer();
   private readonly thick = new ThickLayer();
   // Where the loaded surface passes through itself (an orange point, as where panels cross),
-  // while the surface shows without panels.
+  // while the surface shows before its first panels.
   private readonly selfCrossing = new THREE.Points(new THREE.BufferGeometry(), new THREE.PointsMaterial({ color: ORANGE, size: 12, sizeAttenuation: false, depthTest: false }));
   private selfCrossingMarked = false;
   private readonly origin = new THREE.Vector3();
@@ -65,7 +65,11 @@ export class Viewer {
     this.renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
     this.renderer.setClearColor(0x24272c);
     container.appendChild(this.renderer.domElement);
+    // Keyboard too: Tab reaches the view, the arrow keys move it, Shift and the arrows turn it
+    // (OrbitControls' keys); #view-keys says so to a screen reader.
     this.renderer.domElement.setAttribute('aria-label', '3D view of the design');
+    this.renderer.domElement.setAttribute('aria-describedby', 'view-keys');
+    this.renderer.domElement.tabIndex = 0;
 
     this.scene.add(new THREE.HemisphereLight(0xf2f4f8, 0x3a3d44, 1.6));
     const headlight = new THREE.DirectionalLight(0xffffff, 1.4);
@@ -83,6 +87,10 @@ export class Viewer {
     this.controls = new OrbitControls(this.camera, this.renderer.domElement);
     this.controls.addEventListener('change', () => this.requestRender());
     this.controls.addEventListener('start', () => (this.framed = null)); // the designer's view now
+    this.controls.listenToKeyEvents(this.renderer.domElement);
+    this.renderer.domElement.addEventListener('keydown', (event) => {
+      if (event.key.startsWith('Arrow')) this.framed = null; // keys fire no 'start'
+    });
     new ResizeObserver(() => this.resize()).observe(container);
     this.resize();
     this.applyVisibility();
@@ -303,7 +311,8 @@ export class Viewer {
     this.selection.visible = showPanels && !this.toggles.beforeFix;
     // The surface shows when panels do not cover it: during a solve, before any, or on request.
     this.input.mesh.visible = this.solving || !showPanels || this.toggles.clusters || !this.toggles.panels;
-    this.selfCrossing.visible = this.selfCrossingMarked && !showPanels && this.toggles.problems;
+    // Until the first panels, as its legend line (a solve's result replaces that line).
+    this.selfCrossing.visible = this.selfCrossingMarked && !this.hasPanels && this.toggles.problems;
     if (this.densityView) {
       this.input.mesh.visible = true;
       this.panels.faces.visible = false;
