@@ -154,24 +154,3 @@ test('the count after edits is no change: the same panels, no solve; panels per 
   assert.equal(panelOf.size, 43);
   s.delete();
 });
-
-// An invalid panel is not locked (a lock would keep it invalid through every re-solve): the
-// refusal names its problems, and the design stays as it was. cow.off at 46 panels, seed 59,
-// without retries, ends with invalid panels.
-test('locking an invalid panel is refused, naming its problems', () => {
-  const s = new ff.Session();
-  assert.equal(json(s.loadMesh('cow.off', readFileSync(path.join(meshes, 'cow.off')))).ok, true);
-  const base = { panels: 46, seed: 59, retries: 0 };
-  assert.equal(json(s.setParams(JSON.stringify(base))).ok, true);
-  solve(s);
-  const invalid = json(s.reportJson()).invalid.find((entry) => entry.panel >= 0);
-  assert.ok(invalid, 'an invalid panel to lock');
-  const face = s.panelFace(invalid.panel);
-  const before = s.objText();
-  const status = json(s.setParams(JSON.stringify({ ...base, edits: [{ op: 'lock', face }] })));
-  assert.equal(status.ok, false);
-  assert.equal(status.message, `edit 1 (lock): the panel at face ${face} is invalid (${invalid.problems.join(', ')}): a lock would keep it so; split it, merge it with a neighbour or remesh first`);
-  assert.equal(s.objText(), before);
-  assert.equal(s.lockedPanels().length, 0);
-  s.delete();
-});
