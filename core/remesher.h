@@ -256,9 +256,6 @@ class Remesher {
   std::vector<std::vector<int>> held_single() const;   // LayoutOptions::held_single
   HeldGrouping held_grouping() const;                  // LayoutOptions::held_grouping
   void lloyd_step_held();
-  // What is wrong with a cluster's panel (panel_problems' names, its glass pieces' together,
-  // "unbuilt" for a cluster without one); empty when it is valid.
-  std::string cluster_problems(int cluster) const;
   // The parts of the surface (edge-connected) that the locks' held faces leave free.
   int free_parts_with_locks() const;
   void change_count_held(int target);

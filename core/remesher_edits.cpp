@@ -13,7 +13,6 @@
 
 #include "core/cluster/cluster_edits.h"
 #include "core/panels/panel_graph.h"
-#include "core/quality/report_json.h"
 #include "core/remesher.h"
 #include "core/util/error.h"
 
@@ -138,22 +137,6 @@ void Remesher::start_edited_panels(const std::vector<int>& edited) {
   progress_ = Progress{Stage::Panels, 0, std::max(1, params_.panel_rounds), progress_.energy, 0};
 }
 
-std::string Remesher::cluster_problems(int cluster) const {
-  if (std::find(panels_.unbuilt_clusters.begin(), panels_.unbuilt_clusters.end(), cluster) !=
-      panels_.unbuilt_clusters.end())
-    return "unbuilt";
-  std::vector<std::string> names;
-  for (size_t p = 0; p < panels_.panel_cluster.size() && p < panels_.issues.size(); ++p) {
-    if (panels_.panel_cluster[p] != cluster) continue;  // glass mode: each of its pieces
-    for (const std::string& name : panel_problems(panels_.issues[p])) {
-      if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
-    }
-  }
-  std::string out;
-  for (const std::string& name : names) out += (out.empty() ? "" : ", ") + name;
-  return out;
-}
-
 void Remesher::apply_edit(const PanelEdit& e, size_t index) {
   const std::string where = "edit " + std::to_string(index + 1) + " (" + edit_name(e.op) + "): ";
   const std::string at = "the panel at face " + std::to_string(e.face);
@@ -211,11 +194,6 @@ void Remesher::apply_edit(const PanelEdit& e, size_t index) {
     }
     case PanelEdit::Op::Lock: {
       if (find_lock() != locks_.end()) break;  // locked already
-      // A lock keeps a panel as it is: an invalid one would stay invalid through every re-solve.
-      const std::string problems = cluster_problems(c);
-      if (!problems.empty())
-        throw InputError(where + at + " is invalid (" + problems +
-                         "): a lock would keep it so; split it, merge it with a neighbour or remesh first");
       Lock lock;
       // The clusters around it on the mesh, and every cluster of its outline's nodes: where
       // four clusters meet at a corner, the node pairing can give the panel an edge with a

@@ -375,43 +375,6 @@ TEST(PanelLockHolds, ARefusedEditNamesTheLockInTheWay) {
                                   ": unlock that first");
 }
 
-// Locking an invalid panel is refused, naming what is wrong with it: the lock would keep it so
-// through every re-solve. cow.off at 46 panels, seed 59, no retries, ends with panel 27 flipped
-// and not star-shaped; at 78, seed 16, with cluster 41 unbuilt. A valid panel of the same design
-// locks.
-TEST(PanelLockHolds, AnInvalidPanelIsNotLocked) {
-  RemeshParams p;
-  p.panels = 46;
-  p.seed = 59;
-  p.retries = 0;
-  Remesher r(test::load_clean("cow.off"), p);
-  r.run();
-  const auto refusal = [](Remesher& remesher, int face) {
-    try {
-      remesher.set_edits({edit(PanelEdit::Op::Lock, face)});
-    } catch (const InputError& e) {
-      return std::string(e.what());
-    }
-    return std::string("accepted");
-  };
-  ASSERT_EQ(r.panels().num_invalid(), 2);
-  ASSERT_FALSE(r.panels().issues[27].valid());
-  const int flipped = r.clustering().seeds[27];
-  EXPECT_EQ(refusal(r, flipped), "edit 1 (lock): the panel at face " + std::to_string(flipped) +
-                                     " is invalid (flipped, not_star): a lock would keep it so; split it, merge it "
-                                     "with a neighbour or remesh first");
-  EXPECT_EQ(refusal(r, big_panel_face(r)), "accepted");
-  p.panels = 78;
-  p.seed = 16;
-  Remesher unbuilt(test::load_clean("cow.off"), p);
-  unbuilt.run();
-  ASSERT_EQ(unbuilt.panels().unbuilt_clusters.front(), 41);
-  const int face = unbuilt.clustering().seeds[41];
-  EXPECT_EQ(refusal(unbuilt, face), "edit 1 (lock): the panel at face " + std::to_string(face) +
-                                        " is invalid (unbuilt): a lock would keep it so; split it, merge it with a "
-                                        "neighbour or remesh first");
-}
-
 const auto case_name = [](const auto& info) {
   return test::test_name(info.param.name) + "_" + std::to_string(info.param.panels);
 };
