@@ -60,19 +60,18 @@ LoadedInput load_input(const std::string& path, const CleanOptions& options) {
   // A surface that passes through itself gives panels that do too, at any count: said before
   // the solve, so the designer knows to mend the model rather than to try other counts.
   const SurfaceCrossings own = surface_crossings(in.clean.mesh);
-  const std::vector<PanelCrossing>& crossings = own.pairs;
   if (!own.checked) {
     std::fprintf(stderr,
                  "flatfacet: warning: %s: not checked whether the surface passes through itself: its triangles overlap "
                  "too much in space (long thin triangles around one point?)\n",
                  path.c_str());
-  } else if (!crossings.empty()) {
-    const Vec3& p = crossings.front().point;
+  } else if (!own.pairs.empty()) {
+    const Vec3& p = own.pairs.front().point;
     std::fprintf(stderr,
                  "flatfacet: warning: %s: the surface passes through itself (%zu %s of its triangles cross, one near "
                  "(%s, %s, %s)): panels made from it can pass through each other there, whatever their count; mend the "
                  "model there\n",
-                 path.c_str(), crossings.size(), crossings.size() == 1 ? "pair" : "pairs", short_number(p.x()).c_str(),
+                 path.c_str(), own.pairs.size(), own.pairs.size() == 1 ? "pair" : "pairs", short_number(p.x()).c_str(),
                  short_number(p.y()).c_str(), short_number(p.z()).c_str());
   }
   return in;

@@ -79,7 +79,7 @@ bool triangles_along_an_edge(const std::vector<int>& a, const std::vector<int>& 
 // or a cylinder's ring of them, splits across the strips), doubled while the entries outgrow
 // 32 per polygon (a few very large polygons). A pair is taken in the one cell that holds the
 // larger of its two boxes' lower corners, which both boxes cover exactly when they overlap.
-// Returns false, having visited only some pairs, when the cells would take more than
+// Returns false, having visited no pair, when the cells would take more than
 // `max_tests` box tests in all: boxes that truly overlap by the thousand (a fan of long thin
 // triangles around one point, all of whose boxes hold that point) cost their square.
 template <typename Visit>
@@ -155,10 +155,6 @@ bool overlapping_pairs(const std::vector<Box>& boxes, const std::vector<size_t>&
   }
   return true;
 }
-
-}  // namespace
-
-namespace {
 
 // panel_crossings within a budget of box tests (overlapping_pairs); `complete` false when it ran out.
 std::vector<PanelCrossing> find_crossings(const std::vector<Vec3>& vertices,
@@ -249,7 +245,6 @@ SurfaceCrossings surface_crossings(const TriMesh& mesh) {
   SurfaceCrossings out;
   const double max_tests = kSurfaceTestsPerTriangle * mesh.num_faces() + 1e7;
   out.pairs = find_crossings(mesh.positions, triangles, normals, offsets, max_tests, out.checked);
-  if (!out.checked) out.pairs.clear();
   return out;
 }
 

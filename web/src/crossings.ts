@@ -76,15 +76,9 @@ export function renderCrossings(result: SolveResult | null): void {
   showLegendLine('crossing', result ? crossingNote(result.report) : null);
 }
 
-// The surface passing through itself, told on load: panels there can cross too, whatever
-// their count, so the model is what to mend ('' when it does not, or the core did not say).
-export function selfCrossingNote(info: MeshInfo): string {
-  const n = info.selfCrossings;
-  if (n === -1) return 'Not checked whether the surface passes through itself: its triangles overlap too much in space (long thin triangles around one point?).';
-  if (typeof n !== 'number' || !Number.isInteger(n) || n <= 0) return '';
-  const p = info.selfCrossingPoint;
-  const near = Array.isArray(p) && p.length === 3 && p.every(Number.isFinite) ? `, one near (${p.map((v) => String(Number(v.toPrecision(3)))).join(', ')})` : '';
-  return `The surface passes through itself: ${n.toLocaleString('en')} ${n === 1 ? 'pair' : 'pairs'} of its triangles cross${near}. Panels made from it can pass through each other there, whatever their count: mend the model there before building.`;
+// "N pairs" (or "1 pair") of the surface's own triangles.
+function pairsOf(n: number): string {
+  return `${n.toLocaleString('en')} ${n === 1 ? 'pair' : 'pairs'}`;
 }
 
 // The point to mark where the loaded surface passes through itself, or null.
@@ -95,8 +89,18 @@ export function selfCrossingPoint(info: MeshInfo): [number, number, number] | nu
   return [p[0], p[1], p[2]];
 }
 
+// The surface passing through itself, told on load: panels there can cross too, whatever
+// their count, so the model is what to mend ('' when it does not, or the core did not say).
+export function selfCrossingNote(info: MeshInfo): string {
+  const n = info.selfCrossings;
+  if (n === -1) return 'Not checked whether the surface passes through itself: its triangles overlap too much in space (long thin triangles around one point?).';
+  if (typeof n !== 'number' || !Number.isInteger(n) || n <= 0) return '';
+  const p = selfCrossingPoint(info);
+  const near = p ? `, one near (${p.map((v) => String(Number(v.toPrecision(3)))).join(', ')})` : '';
+  return `The surface passes through itself: ${pairsOf(n)} of its triangles cross${near}. Panels made from it can pass through each other there, whatever their count: mend the model there before building.`;
+}
+
 // #crossing-legend for a surface on show without panels: its own crossing, marked in the view.
 export function renderSelfCrossing(info: MeshInfo): void {
-  const n = info.selfCrossings;
-  showLegendLine('crossing', selfCrossingPoint(info) ? `The surface passes through itself: ${n.toLocaleString('en')} ${n === 1 ? 'pair' : 'pairs'} of its triangles, one marked` : null);
+  showLegendLine('crossing', selfCrossingPoint(info) ? `The surface passes through itself: ${pairsOf(info.selfCrossings)} of its triangles, one marked` : null);
 }
