@@ -226,3 +226,34 @@ test('the density map shows expression x paint when an expression is set', async
     assert.equal(await title.textContent(), 'Density paint');
   });
 });
+
+// A lock holds a panel's plane and outline through every re-solve, so an invalid panel is not
+// locked: the Yas Island grid shell into 4 panels stays invalid (seed 1, as in solve.test.mjs);
+// a click on a red panel disables Lock and the hint names what is wrong and what to do instead.
+// Every panel clicked: Lock is disabled exactly when the hint says the panel is invalid.
+test('an invalid panel is not locked: the hint names its problems and what to do instead', async () => {
+  const yas = { ...params, panels: 4, panelRounds: 100 };
+  await suite.withPage(exampleLink(suite.url, 'YasIsland', yas), async (page) => {
+    await waitForDone(page);
+    const lock = page.getByRole('button', { name: 'Lock panel' });
+    const hint = page.locator('#edit-hint');
+    let invalid = 0;
+    const seen = new Set();
+    for (const fy of [0.3, 0.4, 0.5, 0.6, 0.7]) {
+      for (const fx of [0.2, 0.35, 0.5, 0.65, 0.8]) {
+        const panel = await clickView(page, fx, fy);
+        if (panel === '' || seen.has(panel)) continue;
+        seen.add(panel);
+        const text = await hint.textContent();
+        const refused = /^(P\d+|Panel \d+) selected: invalid \(([a-z -]+)(, [a-z -]+)*\), so not locked: a lock would keep it so\. Split it, merge it with a neighbour, or try another seed or panel count\. Esc: clear\.$/.test(text);
+        assert.equal(await lock.isDisabled(), refused, `panel ${panel}: Lock disabled exactly when refused (${text})`);
+        if (refused) {
+          invalid++;
+          if (invalid === 1) await screenshot(page, 'edits-invalid-not-locked');
+        }
+      }
+    }
+    assert.ok(invalid >= 1, `a red panel was clicked (${seen.size} panels clicked)`);
+    assert.equal(await page.evaluate(() => document.body.dataset.lockedPanels), '', 'nothing locked');
+  });
+});

@@ -4,7 +4,7 @@ import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import path from 'node:path';
 import { test } from 'node:test';
-import { invalidPhrase, PROBLEM_WORDS, summarizeInvalid } from '../../build/web-tests/invalidPanels.js';
+import { clusterProblems, invalidPhrase, PROBLEM_WORDS, summarizeInvalid } from '../../build/web-tests/invalidPanels.js';
 import { json, loadModule, meshes, root, solve } from '../wasm/module.mjs';
 
 const ff = await loadModule();
@@ -37,6 +37,27 @@ test('one panel, only unbuilt clusters, nothing invalid, no list', () => {
   assert.equal(summarizeInvalid({ panels: 0 }), null, 'a report without panels has no list');
   // A name the page does not know yet (a newer core) still shows, not dropped.
   assert.deepEqual(summarizeInvalid({ invalid: [{ panel: 1, problems: ['too_thin'] }] }).problems, [['too thin', 1]]);
+});
+
+// The panel edits refuse a lock on an invalid panel and say why: the problems of one cluster's
+// panel, glass pieces together, in the core's order; an unbuilt cluster says so; [] when the
+// report lists nothing for it or has no list.
+test('the problems of one panel, by its cluster', () => {
+  const report = {
+    invalid: [
+      { panel: 7, cluster: 8, problems: ['spike', 'not_star'], vertices: 9 },
+      { panel: 8, cluster: 8, problems: ['flipped'], vertices: 4 },
+      { panel: 9, cluster: 2, problems: ['not_star'], vertices: 5 },
+      { panel: -1, cluster: 4, problems: ['unbuilt'], vertices: 0 },
+      { panel: 11, cluster: 5, problems: ['too_thin'], vertices: 5 },
+    ],
+  };
+  assert.deepEqual(clusterProblems(report, 8), ['flipped', 'not star-shaped', 'spike']);
+  assert.deepEqual(clusterProblems(report, 2), ['not star-shaped']);
+  assert.deepEqual(clusterProblems(report, 4), ['no panel built']);
+  assert.deepEqual(clusterProblems(report, 5), ['too thin']);
+  assert.deepEqual(clusterProblems(report, 3), [], 'a valid panel');
+  assert.deepEqual(clusterProblems({ panels: 0 }, 8), [], 'no list');
 });
 
 // The core's own list of names (report_json.cpp: invalid_panels_phrase's kOrder, which a core

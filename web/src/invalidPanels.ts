@@ -25,6 +25,7 @@ export interface InvalidSummary {
 
 interface Entry {
   panel: number;
+  cluster: number;
   problems: string[];
 }
 
@@ -34,8 +35,9 @@ function entries(report: QualityReport): Entry[] | null {
   return list.map((item: unknown) => {
     const record = (typeof item === 'object' && item !== null ? item : {}) as Record<string, unknown>;
     const panel = typeof record.panel === 'number' ? record.panel : -1;
+    const cluster = typeof record.cluster === 'number' ? record.cluster : -1;
     const problems = Array.isArray(record.problems) ? record.problems.filter((p): p is string => typeof p === 'string') : [];
-    return { panel, problems };
+    return { panel, cluster, problems };
   });
 }
 
@@ -62,6 +64,18 @@ export function summarizeInvalid(report: QualityReport): InvalidSummary | null {
   // A name this page does not know yet still shows, as the core wrote it.
   for (const [name, count] of counts) if (!(name in PROBLEM_WORDS)) problems.push([name.replace(/_/g, ' '), count]);
   return { panels, unbuilt, problems };
+}
+
+// What is wrong with the panel of one cluster (as the edits and clusterIds name it; its glass
+// pieces together), in the words above and their order: [] when the report lists nothing for it.
+export function clusterProblems(report: QualityReport, cluster: number): string[] {
+  const names = new Set<string>();
+  for (const entry of entries(report) ?? []) if (entry.cluster === cluster) for (const name of entry.problems) names.add(name);
+  const words = Object.entries(PROBLEM_WORDS)
+    .filter(([name]) => names.has(name))
+    .map(([, text]) => text);
+  for (const name of names) if (!(name in PROBLEM_WORDS)) words.push(name === 'unbuilt' ? 'no panel built' : name.replace(/_/g, ' '));
+  return words;
 }
 
 // "not star-shaped 2, spike 1": what is wrong with the panels, '' when nothing is named.

@@ -10,6 +10,7 @@ import { element } from '../dom.ts';
 import type { SolveResult } from '../protocol.ts';
 import { panelsOfClusters, selectedIn, type PanelSelection } from '../panelSelection.ts';
 import type { Viewer } from '../view/viewer.ts';
+import { clusterProblems } from '../invalidPanels.ts';
 import { EditOverlay } from './editOverlay.ts';
 import { lockedPanels, neighbourPanels, type PanelEdit } from './panelEdits.ts';
 
@@ -141,9 +142,20 @@ export class EditPanel {
     this.show();
   }
 
+  // What is wrong with the selected panel ([] when valid or nothing is selected): an invalid
+  // panel is not locked, since the lock would hold it invalid through every re-solve. Refused
+  // here, not in the core, whose replay of a design's edits on a re-prepared mesh can land an
+  // older lock on a panel invalid there (that lock stays, and the panel is reported red).
+  private selectedProblems(): string[] {
+    const result = this.host.result();
+    const panel = this.selectedPanel();
+    return result === null || panel === null ? [] : clusterProblems(result.report, panel);
+  }
+
   private edit(op: 'split' | 'lock' | 'unlock'): void {
     const face = this.host.selection.face;
     if (face === null || this.selectedPanel() === null || !this.host.canEdit()) return;
+    if (op === 'lock' && this.selectedProblems().length > 0) return;
     this.merging = false;
     this.host.apply({ op, face });
   }
@@ -156,6 +168,7 @@ export class EditPanel {
     const panel = this.selectedPanel();
     if (panel === null) this.merging = false;
     const isLocked = panel !== null && locked.has(panel);
+    const problems = isLocked ? [] : this.selectedProblems();
     const surface = this.host.viewer.surface;
     // Drawn by panel mesh ids (glass pieces and unbuilt clusters make them differ from clusters).
     const shown = selectedIn(this.host.selection.face, result)?.panel ?? null;
@@ -165,7 +178,7 @@ export class EditPanel {
     const can = this.host.canEdit() && result !== null && panel !== null;
     this.splitButton.disabled = !can || isLocked;
     this.mergeButton.disabled = !can || isLocked;
-    this.lockButton.disabled = !can;
+    this.lockButton.disabled = !can || problems.length > 0;
     this.lockButton.textContent = isLocked ? 'Unlock panel' : 'Lock panel';
     this.mergeButton.setAttribute('aria-pressed', String(this.merging));
     this.legend.hidden = result === null || (locked.size === 0 && panel === null);
@@ -173,7 +186,10 @@ export class EditPanel {
     else if (!result) this.hint.textContent = 'Solve first, then click a panel in the view to edit it.';
     else if (this.merging) this.hint.textContent = 'Click a neighbouring panel to merge the selected one with (Esc: stop).';
     else if (panel === null) this.hint.textContent = 'Click a panel in the view to select it (the density brush must be off).';
-    else this.hint.textContent = `${shown === null ? `Panel ${panel}` : `P${shown + 1}`} selected${isLocked ? ' (locked: unlock it to split or merge)' : ''}. Esc: clear.`;
+    else if (problems.length > 0) {
+      const name = shown === null ? `Panel ${panel}` : `P${shown + 1}`;
+      this.hint.textContent = `${name} selected: invalid (${problems.join(', ')}), so not locked: a lock would keep it so. Split it, merge it with a neighbour, or try another seed or panel count. Esc: clear.`;
+    } else this.hint.textContent = `${shown === null ? `Panel ${panel}` : `P${shown + 1}`} selected${isLocked ? ' (locked: unlock it to split or merge)' : ''}. Esc: clear.`;
     const count = (op: PanelEdit['op']): number => edits.filter((e) => e.op === op).length;
     const parts = [`${count('split')} split`, `${count('merge')} merged`, `${locked.size} locked`];
     const panels = result ? Math.max(0, result.panelOffsets.length - 1) : 0;
