@@ -548,7 +548,7 @@ test('the view takes the keyboard: focus, turn with Shift and the arrows, move w
     const canvas = page.locator('#viewport canvas');
     assert.equal(await canvas.getAttribute('tabindex'), '0');
     assert.equal(await canvas.getAttribute('aria-describedby'), 'view-keys');
-    assert.match(await page.locator('#view-keys').textContent(), /press Shift and the arrow keys, to turn the view; the arrow keys move it/);
+    assert.match(await page.locator('#view-keys').textContent(), /press Shift and the arrow keys, to turn the view; the arrow keys move it; the wheel, or \+ and -, zooms/);
     await canvas.focus();
     assert.equal(await canvas.evaluate((c) => c === document.activeElement), true);
     const before = await canvas.screenshot();
@@ -558,6 +558,15 @@ test('the view takes the keyboard: focus, turn with Shift and the arrows, move w
     for (let i = 0; i < 8; ++i) await page.keyboard.press('ArrowUp');
     const moved = await canvas.screenshot();
     assert.equal(moved.equals(turned), false, 'the arrows move it');
+    // + comes closer (the model covers more of the view), - steps back past where it was.
+    const background = [0x24, 0x27, 0x2c];
+    const open = await viewPixels(page, background);
+    for (let i = 0; i < 3; ++i) await page.keyboard.press('+');
+    const closer = await viewPixels(page, background);
+    assert.ok(closer < open, `+ zooms in: ${closer} background pixels, ${open} before`);
+    for (let i = 0; i < 6; ++i) await page.keyboard.press('-');
+    const farther = await viewPixels(page, background);
+    assert.ok(farther > open, `- zooms out: ${farther} background pixels, ${open} before +`);
     await screenshot(page, 'view-keyboard');
   });
 });

@@ -25,6 +25,10 @@ export interface ViewToggles {
   thick: boolean; // the panels' inner faces and side walls (needs a thickness)
 }
 
+// One press of + or - moves the camera this factor of its distance to the target (a wheel notch
+// of OrbitControls is 0.95).
+const KEY_ZOOM = 0.8;
+
 export class Viewer {
   private readonly renderer: THREE.WebGLRenderer;
   private readonly scene = new THREE.Scene();
@@ -90,6 +94,12 @@ export class Viewer {
     this.controls.listenToKeyEvents(this.renderer.domElement);
     this.renderer.domElement.addEventListener('keydown', (event) => {
       if (event.key.startsWith('Arrow')) this.framed = null; // keys fire no 'start'
+      // OrbitControls has no zoom key: + (or =) comes closer, - steps back, as the wheel does.
+      const zoom = event.key === '+' || event.key === '=' ? KEY_ZOOM : event.key === '-' ? 1 / KEY_ZOOM : 0;
+      if (zoom === 0 || event.ctrlKey || event.metaKey || event.altKey) return;
+      event.preventDefault();
+      this.framed = null;
+      this.dollyBy(zoom);
     });
     new ResizeObserver(() => this.resize()).observe(container);
     this.resize();
@@ -182,6 +192,16 @@ export class Viewer {
     this.camera.far = distance * 20;
     this.camera.updateProjectionMatrix();
     this.controls.target.set(0, 0, 0);
+    this.controls.update();
+    this.requestRender();
+  }
+
+  // Moves the camera `factor` times its distance to the orbit target, kept between twice the
+  // near plane and half the far one so the model is never clipped.
+  private dollyBy(factor: number): void {
+    const offset = this.camera.position.clone().sub(this.controls.target);
+    const distance = THREE.MathUtils.clamp(offset.length() * factor, this.camera.near * 2, this.camera.far / 2);
+    this.camera.position.copy(this.controls.target).add(offset.setLength(distance));
     this.controls.update();
     this.requestRender();
   }
