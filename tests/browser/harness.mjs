@@ -188,6 +188,36 @@ export async function waitForStatus(page, pattern, timeoutMs = 60_000) {
   return handle.jsonValue();
 }
 
+// Records every text the status line shows from now on, each assignment apart (a
+// MutationObserver's added text nodes: records queued in one task are all kept), so a message
+// overtaken within a poll is still seen. waitForStatusSeen then waits for one matching.
+export async function recordStatus(page) {
+  await page.evaluate(() => {
+    const status = document.querySelector('[role="status"]');
+    window.__statusSeen = [];
+    new MutationObserver((records) => {
+      for (const record of records) for (const node of record.addedNodes) window.__statusSeen.push((node.textContent ?? '').trim());
+    }).observe(status, { childList: true });
+  });
+}
+
+// Waits until the status line has shown a text matching `pattern` since recordStatus; on a
+// timeout the error lists the last texts it showed.
+export async function waitForStatusSeen(page, pattern, timeoutMs = 60_000) {
+  const source = pattern.source;
+  const flags = pattern.flags;
+  try {
+    const handle = await page.waitForFunction(([source, flags]) => window.__statusSeen.find((text) => new RegExp(source, flags).test(text)) ?? null, [source, flags], {
+      timeout: timeoutMs,
+      polling: 50,
+    });
+    return handle.jsonValue();
+  } catch (error) {
+    const seen = await page.evaluate(() => window.__statusSeen.slice(-12));
+    throw new Error(`${error.message}: the status line showed ${JSON.stringify(seen)}`);
+  }
+}
+
 export async function waitForSolving(page, timeoutMs = 30_000) {
   await page.waitForFunction(() => document.body.dataset.solving === 'true', null, { timeout: timeoutMs, polling: 20 });
 }

@@ -14,6 +14,7 @@ import {
   exampleLink,
   openPage,
   outcomes,
+  recordStatus,
   remesh,
   screenshot,
   selectExample,
@@ -25,6 +26,7 @@ import {
   waitForProgress,
   waitForSaved,
   waitForStatus,
+  waitForStatusSeen,
 } from './harness.mjs';
 import { movedOff } from '../fixtures/meshes.mjs';
 
@@ -421,8 +423,9 @@ test('Cancel after a preparation for more panels brings the last finished design
     await remesh(page);
     await waitForProgress(page);
     const since = await outcomes(page);
+    await recordStatus(page);
     await page.getByRole('button', { name: 'Cancel' }).click();
-    await waitForStatus(page, /^Cancelled\. The last finished design is coming back/, 30_000);
+    await waitForStatusSeen(page, /^Cancelled\. The last finished design is coming back/, 30_000);
     assert.equal(await waitForDone(page, since), 300);
     assert.equal((await download(page, 'Export OBJ')).text, before);
     assert.equal(await page.getByLabel('Panels', { exact: true }).inputValue(), '300');
