@@ -19,7 +19,7 @@
 namespace ff {
 
 namespace {
-constexpr size_t kMaxEdits = 100000;
+constexpr size_t kMaxAppliedEdits = 100000;
 
 }  // namespace
 
@@ -96,7 +96,7 @@ void Remesher::clear_edits() {
 }
 
 void Remesher::validate_edits(const std::vector<PanelEdit>& edits) const {
-  if (edits.size() > kMaxEdits) throw InputError("at most " + std::to_string(kMaxEdits) + " edits");
+  if (edits.size() > kMaxAppliedEdits) throw InputError("at most " + std::to_string(kMaxAppliedEdits) + " edits");
   const int faces = mesh_.num_faces();
   for (size_t i = 0; i < edits.size(); ++i) {
     const PanelEdit& e = edits[i];

@@ -14,7 +14,7 @@ namespace {
 
 constexpr double kMaxRatio = 1e6;
 
-std::string number_text(double x) {
+std::string ratio_text(double x) {
   std::ostringstream s;
   s.precision(6);
   s << x;
@@ -68,8 +68,8 @@ std::vector<double> expression_density(const TriMesh& mesh, const MeshTopology& 
     }
     const double value = expression.evaluate(in);
     if (!std::isfinite(value) || !(value > 0.0)) {
-      throw InputError("density expression gives " + number_text(value) + " at vertex " + std::to_string(v + 1) + " (" +
-                       number_text(p.x()) + ", " + number_text(p.y()) + ", " + number_text(p.z()) +
+      throw InputError("density expression gives " + ratio_text(value) + " at vertex " + std::to_string(v + 1) + " (" +
+                       ratio_text(p.x()) + ", " + ratio_text(p.y()) + ", " + ratio_text(p.z()) +
                        "); densities must be finite and greater than 0");
     }
     lo = v == 0 ? value : std::min(lo, value);
@@ -77,7 +77,7 @@ std::vector<double> expression_density(const TriMesh& mesh, const MeshTopology& 
     out[v] = value;
   }
   if (n > 0 && hi > kMaxRatio * lo) {
-    throw InputError("density expression ranges from " + number_text(lo) + " to " + number_text(hi) +
+    throw InputError("density expression ranges from " + ratio_text(lo) + " to " + ratio_text(hi) +
                      "; keep the largest value within 1e6 times the smallest");
   }
   return out;
@@ -99,7 +99,7 @@ FaceData make_shaped_face_data(const TriMesh& mesh, const MeshTopology& topology
   if (!painted.empty()) {
     const auto [lo, hi] = std::minmax_element(painted.begin(), painted.end());
     if (std::isfinite(*hi) && *lo > 0.0 && *hi > kMaxRatio * *lo) {
-      throw InputError("density ranges from " + number_text(*lo) + " to " + number_text(*hi) +
+      throw InputError("density ranges from " + ratio_text(*lo) + " to " + ratio_text(*hi) +
                        "; keep the largest value within 1e6 times the smallest");
     }
   }

@@ -7,15 +7,13 @@
 
 namespace ff {
 
-namespace {
-constexpr double kDeg = 180.0 / kPi;
-}  // namespace
+namespace {}  // namespace
 
 EdgeChamfer chamfer_between(const Vec3& n, const Vec3& m, const Vec3& edge) {
   EdgeChamfer c;
   const Vec3 cross = n.cross(m);
   // atan2 keeps small and near-180 angles accurate, where acos of the dot loses digits.
-  const double phi = std::atan2(cross.norm(), n.dot(m)) * kDeg;
+  const double phi = std::atan2(cross.norm(), n.dot(m)) * kDegreesPerRadian;
   // With the edge running counter-clockwise around n, n x m points along it at a ridge.
   c.convex = cross.dot(edge) >= 0.0;
   c.dihedral_deg = c.convex ? 180.0 - phi : 180.0 + phi;
@@ -44,7 +42,7 @@ Vec3 boundary_cut_direction(const Vec3& n, const Vec3& e, const BoundaryCut& cut
   const Vec3 depth = side == MaterialSide::Inside ? Vec3(-n) : n;
   const Vec3 inward = n.cross(e);  // in the panel's plane, towards its inside
   if (cut.kind == BoundaryCut::Kind::Bevel) {
-    const double b = cut.bevel_deg / kDeg;
+    const double b = cut.bevel_deg / kDegreesPerRadian;
     return (std::cos(b) * depth + std::sin(b) * inward).normalized();
   }
   if (cut.kind == BoundaryCut::Kind::Plumb) {
@@ -53,7 +51,7 @@ Vec3 boundary_cut_direction(const Vec3& n, const Vec3& e, const BoundaryCut& cut
       c.normalize();
       if (c.dot(depth) < 0.0) c = -c;
       // Within 10 deg of the panel's plane the cut would slice the panel lengthwise.
-      if (c.dot(depth) > std::sin(10.0 / kDeg)) return c;
+      if (c.dot(depth) > std::sin(10.0 / kDegreesPerRadian)) return c;
     }
   }
   return depth;
@@ -63,12 +61,12 @@ double boundary_bevel_deg(const Vec3& n, const Vec3& e, const BoundaryCut& cut, 
   if (cut.kind == BoundaryCut::Kind::Square) return 0.0;
   const Vec3 c = boundary_cut_direction(n, e, cut, side);
   const Vec3 depth = side == MaterialSide::Inside ? Vec3(-n) : n;
-  return std::atan2(c.dot(n.cross(e)), c.dot(depth)) * kDeg;
+  return std::atan2(c.dot(n.cross(e)), c.dot(depth)) * kDegreesPerRadian;
 }
 
 double unequal_chamfer_deg(double phi_deg, double t_p, double t_q) {
-  const double phi = phi_deg / kDeg;
-  return std::atan2(t_q - t_p * std::cos(phi), t_p * std::sin(phi)) * kDeg;
+  const double phi = phi_deg / kDegreesPerRadian;
+  return std::atan2(t_q - t_p * std::cos(phi), t_p * std::sin(phi)) * kDegreesPerRadian;
 }
 
 std::vector<std::vector<EdgeChamfer>> edge_chamfers(const PanelMesh& pm, const PanelEdges& edges,
@@ -88,7 +86,7 @@ std::vector<std::vector<EdgeChamfer>> edge_chamfers(const PanelMesh& pm, const P
         // (Nearly) coplanar neighbours of different thickness: their offset planes do not
         // meet, a step, cut square (as thick_panels.cpp, which needs sin phi >= 1e-6).
         const double phi = 2.0 * out[p][i].chamfer_deg;
-        out[p][i].chamfer_deg = std::sin(phi / kDeg) < 1e-6
+        out[p][i].chamfer_deg = std::sin(phi / kDegreesPerRadian) < 1e-6
                                     ? 0.0
                                     : unequal_chamfer_deg(phi, thickness[p], thickness[static_cast<size_t>(q)]);
       }

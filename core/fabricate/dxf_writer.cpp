@@ -11,7 +11,7 @@
 namespace ff {
 namespace {
 
-std::string number(double v) {
+std::string dxf_number(double v) {
   char buffer[64];
   std::snprintf(buffer, sizeof buffer, "%.12g", v == 0.0 ? 0.0 : v);
   return buffer;
@@ -46,7 +46,7 @@ struct Writer {
   Vec2 shift = Vec2::Zero();  // of the current sheet
 
   void group(int code, const std::string& value) { out << code << "\n" << value << "\n"; }
-  void group(int code, double value) { group(code, number(value)); }
+  void group(int code, double value) { group(code, dxf_number(value)); }
   void group(int code, int value) { group(code, std::to_string(value)); }
 
   void polyline(const std::vector<Vec2>& polygon, const std::string& layer) {

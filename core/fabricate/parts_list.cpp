@@ -7,7 +7,7 @@ namespace ff {
 
 namespace {
 
-std::string number(double v) { return number_text(v, 17); }
+std::string exact_number(double v) { return number_text(v, 17); }
 
 // "P12" for a whole panel; glass pieces of panel 12 are "P12a", "P12b", ... (they are
 // consecutive), numbered after the panel they were cut from, so the labels match the design.
@@ -58,13 +58,13 @@ std::string parts_list_csv(const PanelMesh& panels) {
   std::string csv = "panel,label,sides,area,perimeter,normal_x,normal_y,normal_z,offset\n";
   double area = 0.0, perimeter = 0.0;
   for (const PanelPart& part : panel_parts(panels)) {
-    csv += std::to_string(part.panel) + "," + part.label + "," + std::to_string(part.sides) + "," + number(part.area) +
-           "," + number(part.perimeter) + "," + number(part.normal.x()) + "," + number(part.normal.y()) + "," +
-           number(part.normal.z()) + "," + number(part.offset) + "\n";
+    csv += std::to_string(part.panel) + "," + part.label + "," + std::to_string(part.sides) + "," +
+           exact_number(part.area) + "," + exact_number(part.perimeter) + "," + exact_number(part.normal.x()) + "," +
+           exact_number(part.normal.y()) + "," + exact_number(part.normal.z()) + "," + exact_number(part.offset) + "\n";
     area += part.area;
     perimeter += part.perimeter;
   }
-  csv += ",total,," + number(area) + "," + number(perimeter) + ",,,,\n";
+  csv += ",total,," + exact_number(area) + "," + exact_number(perimeter) + ",,,,\n";
   return csv;
 }
 

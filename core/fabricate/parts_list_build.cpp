@@ -12,8 +12,6 @@ namespace ff {
 
 namespace {
 
-constexpr double kDeg = 180.0 / kPi;
-
 // Interior angle at each corner of a counter-clockwise polygon, in (0, 360).
 std::vector<double> corner_angles(const std::vector<Vec2>& poly) {
   std::vector<double> angles;
@@ -21,7 +19,7 @@ std::vector<double> corner_angles(const std::vector<Vec2>& poly) {
   for (size_t i = 0; i < k; ++i) {
     const Vec2 in = poly[i] - poly[(i + k - 1) % k], out = poly[(i + 1) % k] - poly[i];
     // The turn from the incoming to the outgoing edge; a left turn makes a convex corner.
-    const double turn = std::atan2(in.x() * out.y() - in.y() * out.x(), in.dot(out)) * kDeg;
+    const double turn = std::atan2(in.x() * out.y() - in.y() * out.x(), in.dot(out)) * kDegreesPerRadian;
     angles.push_back(180.0 - turn);
   }
   return angles;

@@ -5,10 +5,11 @@
 #include <cmath>
 #include <limits>
 
+#include "core/util/angles.h"
+
 namespace ff {
 namespace {
 
-constexpr double kHalfPi = 1.57079632679489661923;
 // Candidate positions tested (each against every part of a sheet) before giving up: keeps
 // huge inputs fast and, being a count, deterministic.
 constexpr long long kBudget = 20'000'000;

@@ -6,10 +6,10 @@
 #include <limits>
 #include <numeric>
 
+#include "core/util/angles.h"
+
 namespace ff {
 namespace {
-
-constexpr double kHalfPi = 1.57079632679489661923;
 
 PartOrientation orient(const std::vector<Vec2>& points, double angle) {
   const Eigen::Rotation2Dd r(angle);

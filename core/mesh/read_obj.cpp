@@ -14,7 +14,7 @@ namespace {
 
 using namespace io_detail;
 
-constexpr std::string_view kFormat = "OBJ";
+constexpr std::string_view kObjFormat = "OBJ";
 
 std::string_view trim_right(std::string_view s) {
   while (!s.empty() && is_space(s.back())) s.remove_suffix(1);
@@ -72,10 +72,10 @@ class ObjParser {
       }
       statement(line, line_no);
     }
-    if (polygons_.size() == 0) fail(kFormat, "file has no faces (no 'f' lines)");
+    if (polygons_.size() == 0) fail(kObjFormat, "file has no faces (no 'f' lines)");
     for (const ForwardReference& ref : forward_) {
       if (ref.index > static_cast<int64_t>(positions_.size()))
-        fail_line(kFormat, ref.line, out_of_range(ref.index, file_has()));
+        fail_line(kObjFormat, ref.line, out_of_range(ref.index, file_has()));
     }
     return build_raw_mesh(std::move(positions_), polygons_);
   }
@@ -96,11 +96,11 @@ class ObjParser {
     double xyz[3];
     for (int k = 0; k < 3; ++k) {
       const std::string_view token = next_token(rest);
-      if (token.empty()) fail_line(kFormat, line_no, "vertex has " + std::to_string(k) + " coordinates, needs 3");
-      xyz[k] = coordinate_or_fail(kFormat, line_no, token);
+      if (token.empty()) fail_line(kObjFormat, line_no, "vertex has " + std::to_string(k) + " coordinates, needs 3");
+      xyz[k] = coordinate_or_fail(kObjFormat, line_no, token);
     }
     // A 4th value (w) or vertex colours may follow; they do not change the position.
-    if (positions_.size() >= static_cast<size_t>(INT_MAX)) fail_line(kFormat, line_no, "too many vertices");
+    if (positions_.size() >= static_cast<size_t>(INT_MAX)) fail_line(kObjFormat, line_no, "too many vertices");
     positions_.emplace_back(xyz[0], xyz[1], xyz[2]);
   }
 
@@ -110,18 +110,19 @@ class ObjParser {
     for (std::string_view token = next_token(rest); !token.empty(); token = next_token(rest)) {
       const std::string_view part = vertex_part(token);
       int64_t index = 0;
-      if (part.empty() || !parse_int(part, index)) fail_line(kFormat, line_no, "malformed face vertex " + quote(token));
-      if (index == 0) fail_line(kFormat, line_no, "face index 0 is invalid (OBJ indices start at 1)");
+      if (part.empty() || !parse_int(part, index))
+        fail_line(kObjFormat, line_no, "malformed face vertex " + quote(token));
+      if (index == 0) fail_line(kObjFormat, line_no, "face index 0 is invalid (OBJ indices start at 1)");
       int64_t resolved = 0;
       if (index < 0) {
         // Relative: -1 is the vertex defined last before this line.
         resolved = defined + index;
         if (resolved < 0)
-          fail_line(kFormat, line_no,
+          fail_line(kObjFormat, line_no,
                     out_of_range(index, "only " + std::to_string(defined) + " vertices are defined before this line"));
       } else {
         resolved = index - 1;
-        if (index > INT_MAX) fail_line(kFormat, line_no, out_of_range(index, file_has()));
+        if (index > INT_MAX) fail_line(kObjFormat, line_no, out_of_range(index, file_has()));
         // Vertices may follow the faces that use them: checked once the file is read.
         if (resolved >= defined) forward_.push_back({line_no, index});
       }
@@ -129,7 +130,7 @@ class ObjParser {
       ++corners;
     }
     if (corners < 3) {
-      fail_line(kFormat, line_no, "face has " + std::to_string(corners) + " vertices, needs at least 3");
+      fail_line(kObjFormat, line_no, "face has " + std::to_string(corners) + " vertices, needs at least 3");
     }
     polygons_.end_polygon();
   }
@@ -147,7 +148,7 @@ class ObjParser {
 }  // namespace
 
 RawMesh read_obj(std::string_view data) {
-  check_text(kFormat, data);
+  check_text(kObjFormat, data);
   return ObjParser().parse(skip_bom(data));
 }
 

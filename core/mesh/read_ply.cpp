@@ -15,7 +15,7 @@ namespace {
 
 using namespace io_detail;
 
-constexpr std::string_view kFormat = "PLY";
+constexpr std::string_view kPlyFormat = "PLY";
 
 enum class Scalar { I8, U8, I16, U16, I32, U32, F32, F64 };
 
@@ -95,7 +95,7 @@ Header parse_header(std::string_view data) {
   std::string_view line;
   lines.next(line);
   std::string_view magic = line;
-  if (next_token(magic) != "ply" || !next_token(magic).empty()) fail(kFormat, "file does not start with 'ply'");
+  if (next_token(magic) != "ply" || !next_token(magic).empty()) fail(kPlyFormat, "file does not start with 'ply'");
   Header header;
   bool have_format = false;
   while (lines.next(line)) {
@@ -103,14 +103,14 @@ Header parse_header(std::string_view data) {
     const std::string_view key = next_token(line);
     if (key == "end_header") {
       header.body_offset = lines.position();
-      if (!have_format) fail_line(kFormat, n, "header has no 'format' line");
+      if (!have_format) fail_line(kPlyFormat, n, "header has no 'format' line");
       return header;
     }
     if (key == "format") {
       const std::string_view format = next_token(line);
-      if (format == "binary_big_endian") fail(kFormat, "big-endian PLY is not supported");
+      if (format == "binary_big_endian") fail(kPlyFormat, "big-endian PLY is not supported");
       if (format != "ascii" && format != "binary_little_endian")
-        fail_line(kFormat, n, "unknown format " + quote(format));
+        fail_line(kPlyFormat, n, "unknown format " + quote(format));
       header.binary = format != "ascii";
       have_format = true;
     } else if (key == "element") {
@@ -118,28 +118,28 @@ Header parse_header(std::string_view data) {
       element.name = std::string(next_token(line));
       const std::string_view count = next_token(line);
       if (element.name.empty() || !parse_int(count, element.count) || element.count < 0)
-        fail_line(kFormat, n, "expected 'element <name> <count>'");
+        fail_line(kPlyFormat, n, "expected 'element <name> <count>'");
       header.elements.push_back(std::move(element));
     } else if (key == "property") {
-      if (header.elements.empty()) fail_line(kFormat, n, "property before any element");
+      if (header.elements.empty()) fail_line(kPlyFormat, n, "property before any element");
       Property property;
       std::string_view type = next_token(line);
       if (type == "list") {
         property.is_list = true;
         const std::string_view count_type = next_token(line);
         if (!scalar_from_name(count_type, property.count_type) || !is_integer(property.count_type))
-          fail_line(kFormat, n, "list count type must be an integer type, not " + quote(count_type));
+          fail_line(kPlyFormat, n, "list count type must be an integer type, not " + quote(count_type));
         type = next_token(line);
       }
-      if (!scalar_from_name(type, property.type)) fail_line(kFormat, n, "unknown property type " + quote(type));
+      if (!scalar_from_name(type, property.type)) fail_line(kPlyFormat, n, "unknown property type " + quote(type));
       property.name = std::string(next_token(line));
-      if (property.name.empty()) fail_line(kFormat, n, "property has no name");
+      if (property.name.empty()) fail_line(kPlyFormat, n, "property has no name");
       header.elements.back().properties.push_back(std::move(property));
     } else if (key != "comment" && key != "obj_info" && !key.empty()) {
-      fail_line(kFormat, n, "unknown header line " + quote(key));
+      fail_line(kPlyFormat, n, "unknown header line " + quote(key));
     }
   }
-  fail(kFormat, "header has no 'end_header' (truncated?)");
+  fail(kPlyFormat, "header has no 'end_header' (truncated?)");
 }
 
 // Finds the vertex and face elements, marks the properties we read, checks counts.
@@ -147,7 +147,7 @@ void assign_roles(Header& header) {
   for (size_t e = 0; e < header.elements.size(); ++e) {
     Element& element = header.elements[e];
     if (element.name == "vertex") {
-      if (header.vertex_element >= 0) fail(kFormat, "header has two 'vertex' elements");
+      if (header.vertex_element >= 0) fail(kPlyFormat, "header has two 'vertex' elements");
       header.vertex_element = static_cast<int>(e);
       bool found[3] = {false, false, false};
       for (Property& property : element.properties) {
@@ -158,28 +158,28 @@ void assign_roles(Header& header) {
           }
         }
       }
-      if (!found[0] || !found[1] || !found[2]) fail(kFormat, "vertex element lacks an x, y or z property");
+      if (!found[0] || !found[1] || !found[2]) fail(kPlyFormat, "vertex element lacks an x, y or z property");
     } else if (element.name == "face") {
-      if (header.face_element >= 0) fail(kFormat, "header has two 'face' elements");
+      if (header.face_element >= 0) fail(kPlyFormat, "header has two 'face' elements");
       header.face_element = static_cast<int>(e);
       bool has_list = false;
       for (Property& property : element.properties) {
         if (property.is_list && (property.name == "vertex_indices" || property.name == "vertex_index")) {
-          if (!is_integer(property.type)) fail(kFormat, "face vertex indices must be integers");
+          if (!is_integer(property.type)) fail(kPlyFormat, "face vertex indices must be integers");
           property.role = 3;
           has_list = true;
           break;
         }
       }
-      if (!has_list) fail(kFormat, "face element has no vertex_indices list");
+      if (!has_list) fail(kPlyFormat, "face element has no vertex_indices list");
     }
   }
-  if (header.vertex_element < 0) fail(kFormat, "file has no 'vertex' element");
-  if (header.face_element < 0) fail(kFormat, "file has no 'face' element (no faces)");
+  if (header.vertex_element < 0) fail(kPlyFormat, "file has no 'vertex' element");
+  if (header.face_element < 0) fail(kPlyFormat, "file has no 'face' element (no faces)");
   const Element& vertices = header.elements[static_cast<size_t>(header.vertex_element)];
   const Element& faces = header.elements[static_cast<size_t>(header.face_element)];
-  if (faces.count == 0) fail(kFormat, "file has no faces");
-  if (vertices.count > INT_MAX || faces.count > INT_MAX) fail(kFormat, "vertex or face count is too large");
+  if (faces.count == 0) fail(kPlyFormat, "file has no faces");
+  if (vertices.count > INT_MAX || faces.count > INT_MAX) fail(kPlyFormat, "vertex or face count is too large");
 }
 
 // Before reserving anything: every record takes at least some bytes (binary: its scalars
@@ -195,9 +195,9 @@ void check_sizes(const Header& header, size_t body_bytes) {
     if (record == 0 || element.count == 0) continue;
     if (static_cast<uint64_t>(element.count) > available / record ||
         (total += static_cast<uint64_t>(element.count) * record) > available) {
-      fail(kFormat, "header announces " + std::to_string(element.count) + " '" + element.name +
-                        "' records, more than the " + std::to_string(body_bytes) +
-                        " bytes of data can hold (truncated?)");
+      fail(kPlyFormat, "header announces " + std::to_string(element.count) + " '" + element.name +
+                           "' records, more than the " + std::to_string(body_bytes) +
+                           " bytes of data can hold (truncated?)");
     }
   }
 }
@@ -237,7 +237,7 @@ class BinaryBody {
           continue;
         }
         const int64_t count = load_int(property.count_type, take_bytes(scalar_size(property.count_type)));
-        if (count < 0) fail(kFormat, where() + " has a negative list length");
+        if (count < 0) fail(kPlyFormat, where() + " has a negative list length");
         if (property.role == 3) {
           face(property, count);
         } else {
@@ -246,7 +246,7 @@ class BinaryBody {
       }
       if (is_vertex) {
         const Vec3 position(xyz[0], xyz[1], xyz[2]);
-        if (!position.allFinite()) fail(kFormat, where() + " has a non-finite coordinate");
+        if (!position.allFinite()) fail(kPlyFormat, where() + " has a non-finite coordinate");
         out_.positions.push_back(position);
       }
     }
@@ -256,21 +256,21 @@ class BinaryBody {
   std::string where() const { return element_->name + " " + std::to_string(record_); }
 
   const unsigned char* take_bytes(uint64_t n) {
-    if (n > static_cast<uint64_t>(end_ - p_)) fail(kFormat, "binary data ends inside " + where() + " (truncated?)");
+    if (n > static_cast<uint64_t>(end_ - p_)) fail(kPlyFormat, "binary data ends inside " + where() + " (truncated?)");
     const unsigned char* q = p_;
     p_ += n;
     return q;
   }
 
   void face(const Property& property, int64_t count) {
-    if (count < 3) fail(kFormat, where() + " has " + std::to_string(count) + " vertices, needs at least 3");
+    if (count < 3) fail(kPlyFormat, where() + " has " + std::to_string(count) + " vertices, needs at least 3");
     const size_t size = scalar_size(property.type);
     const unsigned char* q = take_bytes(static_cast<uint64_t>(count) * size);
     for (int64_t k = 0; k < count; ++k, q += size) {
       const int64_t index = load_int(property.type, q);
       if (index < 0 || index >= out_.num_vertices) {
-        fail(kFormat, where() + ": vertex index " + std::to_string(index) + " is out of range (file has " +
-                          std::to_string(out_.num_vertices) + " vertices)");
+        fail(kPlyFormat, where() + ": vertex index " + std::to_string(index) + " is out of range (file has " +
+                             std::to_string(out_.num_vertices) + " vertices)");
       }
       out_.polygons.indices.push_back(static_cast<int>(index));
     }
@@ -295,7 +295,7 @@ class AsciiBody {
       std::string_view line;
       do {
         if (!lines_.next(line)) {
-          fail_line(kFormat, line_no(),
+          fail_line(kPlyFormat, line_no(),
                     "file ends after " + std::to_string(record) + " of " + std::to_string(element.count) + " '" +
                         element.name + "' records (truncated?)");
         }
@@ -309,14 +309,14 @@ class AsciiBody {
 
   std::string_view token(std::string_view& line) const {
     const std::string_view t = next_token(line);
-    if (t.empty()) fail_line(kFormat, line_no(), "record has fewer values than the header declares");
+    if (t.empty()) fail_line(kPlyFormat, line_no(), "record has fewer values than the header declares");
     return t;
   }
 
   int64_t integer(std::string_view& line) const {
     const std::string_view t = token(line);
     int64_t value = 0;
-    if (!parse_int(t, value)) fail_line(kFormat, line_no(), "expected an integer, found " + quote(t));
+    if (!parse_int(t, value)) fail_line(kPlyFormat, line_no(), "expected an integer, found " + quote(t));
     return value;
   }
 
@@ -325,20 +325,21 @@ class AsciiBody {
     for (const Property& property : element.properties) {
       if (!property.is_list) {
         const std::string_view t = token(line);
-        if (property.role >= 0) xyz[property.role] = coordinate_or_fail(kFormat, line_no(), t);
+        if (property.role >= 0) xyz[property.role] = coordinate_or_fail(kPlyFormat, line_no(), t);
         continue;
       }
       const int64_t count = integer(line);
-      if (count < 0) fail_line(kFormat, line_no(), "negative list length");
+      if (count < 0) fail_line(kPlyFormat, line_no(), "negative list length");
       if (property.role != 3) {
         for (int64_t k = 0; k < count; ++k) token(line);
         continue;
       }
-      if (count < 3) fail_line(kFormat, line_no(), "face has " + std::to_string(count) + " vertices, needs at least 3");
+      if (count < 3)
+        fail_line(kPlyFormat, line_no(), "face has " + std::to_string(count) + " vertices, needs at least 3");
       for (int64_t k = 0; k < count; ++k) {
         const int64_t index = integer(line);
         if (index < 0 || index >= out_.num_vertices) {
-          fail_line(kFormat, line_no(),
+          fail_line(kPlyFormat, line_no(),
                     "vertex index " + std::to_string(index) + " is out of range (file has " +
                         std::to_string(out_.num_vertices) + " vertices)");
         }
@@ -363,12 +364,12 @@ size_t count_lines(std::string_view text) {
 }  // namespace
 
 RawMesh read_ply(std::string_view data) {
-  if (is_blank(data)) fail(kFormat, "file is empty");
+  if (is_blank(data)) fail(kPlyFormat, "file is empty");
   Header header = parse_header(data);
   assign_roles(header);
   const std::string_view body = data.substr(header.body_offset);
   check_sizes(header, body.size());
-  if (!header.binary && looks_binary(body)) fail(kFormat, "ascii PLY holds binary data");
+  if (!header.binary && looks_binary(body)) fail(kPlyFormat, "ascii PLY holds binary data");
 
   Output out;
   const Element& vertices = header.elements[static_cast<size_t>(header.vertex_element)];

@@ -14,7 +14,7 @@ namespace {
 
 using namespace io_detail;
 
-constexpr std::string_view kFormat = "STL";
+constexpr std::string_view kStlFormat = "STL";
 constexpr size_t kHeaderBytes = 84;  // 80-byte header + uint32 triangle count
 constexpr size_t kFacetBytes = 50;   // normal, 3 vertices (12 floats) + uint16 attribute
 
@@ -52,15 +52,15 @@ RawMesh read_binary(std::string_view data) {
   const uint64_t count = load_u32_le(bytes + 80);
   const uint64_t expected = kHeaderBytes + kFacetBytes * count;
   if (data.size() < expected) {
-    fail(kFormat,
+    fail(kStlFormat,
          "truncated binary STL: expected " + std::to_string(expected) + " bytes, got " + std::to_string(data.size()));
   }
   if (data.size() > expected) {
-    fail(kFormat, "binary STL size mismatch: expected " + std::to_string(expected) + " bytes, got " +
-                      std::to_string(data.size()));
+    fail(kStlFormat, "binary STL size mismatch: expected " + std::to_string(expected) + " bytes, got " +
+                         std::to_string(data.size()));
   }
-  if (count == 0) fail(kFormat, "file has no triangles");
-  if (count > static_cast<uint64_t>(INT32_MAX / 3)) fail(kFormat, "too many triangles");
+  if (count == 0) fail(kStlFormat, "file has no triangles");
+  if (count > static_cast<uint64_t>(INT32_MAX / 3)) fail(kStlFormat, "too many triangles");
   std::vector<Vec3> positions;
   positions.reserve(3 * count);
   for (uint64_t f = 0; f < count; ++f) {
@@ -69,7 +69,7 @@ RawMesh read_binary(std::string_view data) {
       const unsigned char* p = facet + 12 * (v + 1);  // skip the normal
       const Vec3 position(load_f32_le(p), load_f32_le(p + 4), load_f32_le(p + 8));
       if (!position.allFinite()) {
-        fail(kFormat,
+        fail(kStlFormat,
              "triangle " + std::to_string(f) + " has a non-finite coordinate (byte " + std::to_string(p - bytes) + ")");
       }
       positions.push_back(position);
@@ -123,30 +123,30 @@ class AsciiParser {
         if (after.empty()) break;
         // Several solids in one file: read them all as one soup.
         if (!iequals(after, "solid"))
-          fail_line(kFormat, tokens_.line(), "expected 'solid' after 'endsolid', found " + quote(after));
+          fail_line(kStlFormat, tokens_.line(), "expected 'solid' after 'endsolid', found " + quote(after));
         tokens_.skip_line();
       } else if (token.empty()) {
-        fail_line(kFormat, tokens_.line(), "file ends without 'endsolid' (truncated?)");
+        fail_line(kStlFormat, tokens_.line(), "file ends without 'endsolid' (truncated?)");
       } else {
-        fail_line(kFormat, tokens_.line(), "expected 'facet' or 'endsolid', found " + quote(token));
+        fail_line(kStlFormat, tokens_.line(), "expected 'facet' or 'endsolid', found " + quote(token));
       }
     }
-    if (positions_.empty()) fail(kFormat, "file has no triangles");
+    if (positions_.empty()) fail(kStlFormat, "file has no triangles");
     return soup_mesh(std::move(positions_));
   }
 
  private:
   void expect(std::string_view word) {
     const std::string_view token = tokens_.next();
-    if (token.empty()) fail_line(kFormat, tokens_.line(), "file ends inside a facet (truncated?)");
+    if (token.empty()) fail_line(kStlFormat, tokens_.line(), "file ends inside a facet (truncated?)");
     if (!iequals(token, word)) {
-      fail_line(kFormat, tokens_.line(), "expected '" + std::string(word) + "', found " + quote(token));
+      fail_line(kStlFormat, tokens_.line(), "expected '" + std::string(word) + "', found " + quote(token));
     }
   }
 
   std::string_view number_token() {
     const std::string_view token = tokens_.next();
-    if (token.empty()) fail_line(kFormat, tokens_.line(), "file ends inside a facet (truncated?)");
+    if (token.empty()) fail_line(kStlFormat, tokens_.line(), "file ends inside a facet (truncated?)");
     return token;
   }
 
@@ -158,23 +158,23 @@ class AsciiParser {
       const std::string_view token = number_token();
       double ignored = 0.0;
       if (parse_double(token, ignored) == NumberStatus::Malformed)
-        fail_line(kFormat, tokens_.line(), "cannot parse normal component " + quote(token));
+        fail_line(kStlFormat, tokens_.line(), "cannot parse normal component " + quote(token));
     }
     expect("outer");
     expect("loop");
     for (int v = 0; v < 3; ++v) {
       expect("vertex");
       double xyz[3];
-      for (int k = 0; k < 3; ++k) xyz[k] = coordinate_or_fail(kFormat, tokens_.line(), number_token());
+      for (int k = 0; k < 3; ++k) xyz[k] = coordinate_or_fail(kStlFormat, tokens_.line(), number_token());
       positions_.emplace_back(xyz[0], xyz[1], xyz[2]);
     }
     const std::string_view end = tokens_.next();
-    if (iequals(end, "vertex")) fail_line(kFormat, tokens_.line(), "facet has more than 3 vertices");
-    if (end.empty()) fail_line(kFormat, tokens_.line(), "file ends inside a facet (truncated?)");
-    if (!iequals(end, "endloop")) fail_line(kFormat, tokens_.line(), "expected 'endloop', found " + quote(end));
+    if (iequals(end, "vertex")) fail_line(kStlFormat, tokens_.line(), "facet has more than 3 vertices");
+    if (end.empty()) fail_line(kStlFormat, tokens_.line(), "file ends inside a facet (truncated?)");
+    if (!iequals(end, "endloop")) fail_line(kStlFormat, tokens_.line(), "expected 'endloop', found " + quote(end));
     expect("endfacet");
     if (positions_.size() > static_cast<size_t>(INT32_MAX) - 3)
-      fail_line(kFormat, tokens_.line(), "too many triangles");
+      fail_line(kStlFormat, tokens_.line(), "too many triangles");
   }
 
   TokenStream tokens_;
@@ -184,7 +184,7 @@ class AsciiParser {
 }  // namespace
 
 RawMesh read_stl(std::string_view data) {
-  if (data.empty()) fail(kFormat, "file is empty");
+  if (data.empty()) fail(kStlFormat, "file is empty");
   if (data.size() >= kHeaderBytes) {
     const uint64_t count = load_u32_le(reinterpret_cast<const unsigned char*>(data.data()) + 80);
     // Binary files may start with "solid" too: the size rule decides.
@@ -194,12 +194,12 @@ RawMesh read_stl(std::string_view data) {
   if (starts_with_solid(data) && !binary_bytes) {
     return AsciiParser(skip_bom(data)).parse();
   }
-  if (is_blank(data)) fail(kFormat, "file is empty");
+  if (is_blank(data)) fail(kStlFormat, "file is empty");
   // Text first: a short text file is not a truncated binary one (a note named .stl said so).
-  if (!binary_bytes) fail(kFormat, "text file does not start with 'solid' (not an ASCII STL)");
+  if (!binary_bytes) fail(kStlFormat, "text file does not start with 'solid' (not an ASCII STL)");
   if (data.size() < kHeaderBytes) {
-    fail(kFormat, "truncated binary STL: expected at least " + std::to_string(kHeaderBytes) + " bytes, got " +
-                      std::to_string(data.size()));
+    fail(kStlFormat, "truncated binary STL: expected at least " + std::to_string(kHeaderBytes) + " bytes, got " +
+                         std::to_string(data.size()));
   }
   return read_binary(data);
 }

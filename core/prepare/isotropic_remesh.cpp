@@ -9,6 +9,7 @@
 #include "core/prepare/surface_projector.h"
 #include "core/util/angles.h"
 #include "core/util/error.h"
+#include "core/util/index.h"
 #include "core/util/union_find.h"
 
 namespace ff {
@@ -17,8 +18,6 @@ using prepare_detail::EditMesh;
 using prepare_detail::RemeshState;
 
 namespace {
-
-size_t at(int i) { return static_cast<size_t>(i); }
 
 constexpr double kMaxLengthRatio = 8.0;           // density moves the local target by at most this factor
 constexpr double kMinCreaseLength = 3.0;          // crease networks shorter than this many L are noise

@@ -8,14 +8,13 @@
 #include "core/prepare/mesh_transfer.h"
 #include "core/quality/hausdorff.h"
 #include "core/util/error.h"
+#include "core/util/index.h"
 #include "core/util/short_number.h"
 #include "core/util/with_commas.h"
 
 namespace ff {
 
 namespace {
-
-size_t at(int i) { return static_cast<size_t>(i); }
 
 // An estimated triangle count in a message ("about 12,345", "at least 12,345"), bounded: an edge length of 1e-10
 // asks for 1e+22 triangles, past what llround can return, and one of 5e-324 for infinitely many.

@@ -1,21 +1,20 @@
 #include "core/prepare/remesh_ops.h"
 
 #include <Eigen/Geometry>
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <utility>
 #include <vector>
 
 #include "core/mesh/half_edges.h"
 #include "core/util/error.h"
+#include "core/util/index.h"
 #include "core/util/short_number.h"
 
 namespace ff::prepare_detail {
 
 namespace {
-
-size_t at(int i) { return static_cast<size_t>(i); }
 
 // A collapse or flip must not turn a triangle over or squash it: the new normal stays
 // within about 75 degrees of the old one.

@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <set>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -14,6 +15,7 @@
 #include "core/mesh/mesh_io.h"
 #include "core/mesh/topology.h"
 #include "core/quality/hausdorff.h"
+#include "synthetic_meshes.h"  // consistently_oriented
 #include "test_meshes.h"
 
 namespace ff::test {
@@ -35,13 +37,11 @@ inline TopologySummary summarize(const TriMesh& mesh) {
   return {euler_characteristic(mesh, t), static_cast<int>(t.boundary_loops.size()), t.num_components};
 }
 
-// Every directed edge at most once, so neighbouring faces agree on their orientation.
-inline bool consistently_oriented(const TriMesh& mesh) {
-  std::set<std::pair<int, int>> directed;
-  for (const Triangle& t : mesh.triangles)
-    for (size_t i = 0; i < 3; ++i)
-      if (!directed.insert({t[i], t[(i + 1) % 3]}).second) return false;
-  return true;
+// Whether any of the messages (a preparation's report, say) contains `word`.
+inline bool any_message_says(const std::vector<std::string>& messages, const std::string& word) {
+  for (const std::string& m : messages)
+    if (m.find(word) != std::string::npos) return true;
+  return false;
 }
 
 struct EdgeStats {

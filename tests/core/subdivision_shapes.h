@@ -104,13 +104,4 @@ inline PolyMesh quad_torus(int n, int m, double major = 3.0, double minor = 1.0)
   return t;
 }
 
-// Every directed edge used once: faces agree on the orientation of each shared edge.
-inline bool consistently_oriented(const TriMesh& m) {
-  std::set<std::pair<int, int>> directed;
-  for (const Triangle& t : m.triangles)
-    for (size_t i = 0; i < 3; ++i)
-      if (!directed.insert({t[i], t[(i + 1) % 3]}).second) return false;
-  return true;
-}
-
 }  // namespace ff::test

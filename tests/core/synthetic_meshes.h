@@ -2,6 +2,8 @@
 // Small synthetic meshes with known topology, shared by the core tests.
 #include <Eigen/Geometry>
 #include <cmath>
+#include <set>
+#include <utility>
 #include <vector>
 
 #include "core/mesh/topology.h"
@@ -154,6 +156,15 @@ inline bool face_has_directed_edge(const TriMesh& m, int f, int a, int b) {
     if (t[i] == a && t[(i + 1) % 3] == b) return true;
   }
   return false;
+}
+
+// Every directed edge used at most once: faces agree on the orientation of each shared edge.
+inline bool consistently_oriented(const TriMesh& m) {
+  std::set<std::pair<int, int>> directed;
+  for (const Triangle& t : m.triangles)
+    for (size_t i = 0; i < 3; ++i)
+      if (!directed.insert({t[i], t[(i + 1) % 3]}).second) return false;
+  return true;
 }
 
 // Every interior edge is run in opposite directions by its two faces.

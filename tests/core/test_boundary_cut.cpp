@@ -7,11 +7,10 @@
 
 #include "core/fabricate/parts_list.h"
 #include "core/fabricate/thick_panels.h"
+#include "core/util/angles.h"
 
 namespace ff {
 namespace {
-
-constexpr double kDeg = 180.0 / 3.14159265358979323846;
 
 // One square panel of side 1 in the plane z = slope * x (normal up-ish), all edges boundary.
 PanelMesh tilted_square(double slope) {
@@ -33,7 +32,7 @@ TEST(BoundaryCut, BevelInsetsTheInnerFace) {
     o.boundary.bevel_deg = bevel;
     const PartsList list = make_parts_list(pm, o);
     const PanelOutline& out = list.rows[0].outline;
-    const double inset = 0.1 * std::tan(bevel / kDeg);
+    const double inset = 0.1 * std::tan(bevel / kDegreesPerRadian);
     // The inner face is the square shrunk by the inset on every side.
     double area = 0.0;
     for (size_t i = 0; i < 4; ++i) {
@@ -70,7 +69,7 @@ TEST(BoundaryCut, PlumbCutsHoldTheUpAxis) {
   }
   // Bevels: the sloping edges (along x) are square already (their square cut holds both the
   // normal and up), the level ones (along y) lean by the tilt.
-  const double tilt = std::atan(0.5) * kDeg;
+  const double tilt = std::atan(0.5) * kDegreesPerRadian;
   const Vec3& n = pm.plane_normals[0];
   EXPECT_NEAR(boundary_bevel_deg(n, Vec3(1, 0, 0.5).normalized(), o.boundary, o.side), 0.0, 1e-9);
   EXPECT_NEAR(std::abs(boundary_bevel_deg(n, Vec3(0, 1, 0), o.boundary, o.side)), tilt, 1e-9);

@@ -4,12 +4,11 @@
 #include <cmath>
 
 #include "core/fabricate/chamfers.h"
+#include "core/util/angles.h"
 #include "polyhedra.h"
 
 namespace ff {
 namespace {
-
-constexpr double kDeg = 180.0 / 3.14159265358979323846;
 
 void expect_all_edges(const PanelMesh& pm, double dihedral, double chamfer) {
   const auto chamfers = edge_chamfers(pm, panel_edges(pm));
@@ -25,7 +24,7 @@ void expect_all_edges(const PanelMesh& pm, double dihedral, double chamfer) {
 TEST(Chamfers, CubeEdgesAre45) { expect_all_edges(testing::unit_cube(), 90.0, 45.0); }
 
 TEST(Chamfers, DodecahedronEdges) {
-  const double dihedral = std::acos(-1.0 / std::sqrt(5.0)) * kDeg;  // 116.565 deg
+  const double dihedral = std::acos(-1.0 / std::sqrt(5.0)) * kDegreesPerRadian;  // 116.565 deg
   EXPECT_NEAR(dihedral, 116.565, 1e-3);
   expect_all_edges(testing::dodecahedron(), dihedral, (180.0 - dihedral) / 2);  // 31.717
 }

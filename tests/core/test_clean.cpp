@@ -25,7 +25,7 @@ std::string clean_error(const TriMesh& m, const CleanOptions& options = {}) {
   return test::input_error_message([&] { clean_mesh(m, options); });
 }
 
-bool contains(const std::vector<std::string>& list, const std::string& s) {
+bool listed(const std::vector<std::string>& list, const std::string& s) {
   return std::find(list.begin(), list.end(), s) != list.end();
 }
 
@@ -95,9 +95,9 @@ TEST(CleanMesh, OneFlippedFaceIsFixed) {
   EXPECT_EQ(c.report.faces_flipped, 1);
   EXPECT_EQ(c.mesh.triangles, test::tetrahedron().triangles);
   EXPECT_GT(signed_volume(c.mesh), 0.0);
-  EXPECT_TRUE(contains(c.report.messages(),
-                       "flipped 1 face to make the orientation consistent (closed parts facing "
-                       "outward)"));
+  EXPECT_TRUE(listed(c.report.messages(),
+                     "flipped 1 face to make the orientation consistent (closed parts facing "
+                     "outward)"));
 
   TriMesh g = test::grid(3, 3);
   std::swap(g.triangles[7][0], g.triangles[7][1]);
@@ -140,7 +140,7 @@ TEST(CleanMesh, PartsAreOrientedIndependently) {
   const MeshTopology t = expect_clean(m, c);
   EXPECT_EQ(c.report.components, 3);
   EXPECT_EQ(c.report.faces_flipped, 5);  // 4 of the inverted tetrahedron, 1 of the grid
-  EXPECT_TRUE(contains(c.report.messages(), "the mesh has 3 disconnected parts"));
+  EXPECT_TRUE(listed(c.report.messages(), "the mesh has 3 disconnected parts"));
   for (int f = 0; f < 8; ++f) {
     EXPECT_GT(face_normal(c.mesh, f).dot(face_centroid(c.mesh, f) -
                                          (f < 4 ? Vec3(0.25, 0.25, 0.25) : Vec3(3.25, 0.25, 0.25))),
@@ -263,9 +263,9 @@ TEST(CleanMesh, DuplicateAndDegenerateFacesAreDropped) {
   EXPECT_EQ(c.input_vertex_to_clean, (std::vector<int>{0, 1, 2, 3, 1}));
   EXPECT_EQ(c.mesh.triangles, test::tetrahedron().triangles);
   const auto messages = c.report.messages();
-  EXPECT_TRUE(contains(messages, "dropped 2 degenerate faces (a corner used twice)"));
-  EXPECT_TRUE(contains(messages, "dropped 3 duplicate faces"));
-  EXPECT_TRUE(contains(messages, "welded 1 duplicate vertex"));
+  EXPECT_TRUE(listed(messages, "dropped 2 degenerate faces (a corner used twice)"));
+  EXPECT_TRUE(listed(messages, "dropped 3 duplicate faces"));
+  EXPECT_TRUE(listed(messages, "welded 1 duplicate vertex"));
 }
 
 TEST(CleanMesh, AllDegenerateIsRefused) {
@@ -287,7 +287,7 @@ TEST(CleanMesh, ZeroAreaFacesAreCountedAndKept) {
   expect_clean(m, c);
   EXPECT_EQ(c.report.zero_area_faces, 1);
   EXPECT_EQ(c.mesh.num_faces(), 3);
-  EXPECT_TRUE(contains(c.report.messages(), "kept 1 face with zero area (it carries no weight)"));
+  EXPECT_TRUE(listed(c.report.messages(), "kept 1 face with zero area (it carries no weight)"));
   // By default the sliver goes: its edge 0-1 is flipped into 4-3 (test_repair.cpp).
   const CleanMesh removed = clean_mesh(m);
   expect_clean(m, removed);
@@ -356,8 +356,8 @@ TEST(CleanMesh, BowtieVertexIsSplit) {
   EXPECT_EQ(t.boundary_loops.size(), 2u);
   EXPECT_EQ(euler_characteristic(c.mesh, t), 2);
   const auto messages = c.report.messages();
-  EXPECT_TRUE(contains(messages, "split 1 non-manifold vertex where parts touched at a single point"));
-  EXPECT_TRUE(contains(messages, "the mesh has 2 disconnected parts"));
+  EXPECT_TRUE(listed(messages, "split 1 non-manifold vertex where parts touched at a single point"));
+  EXPECT_TRUE(listed(messages, "the mesh has 2 disconnected parts"));
 }
 
 TEST(CleanMesh, CubesTouchingAtACornerAreSplitAndOutward) {
@@ -387,7 +387,7 @@ TEST(CleanMesh, UnreferencedVerticesAreRemovedInOrder) {
   EXPECT_EQ(c.report.unreferenced_vertices_removed, 2);
   EXPECT_EQ(c.input_vertex_to_clean, (std::vector<int>{0, -1, 1, 2, 3, -1}));
   EXPECT_EQ(c.mesh.positions, test::tetrahedron().positions);
-  EXPECT_TRUE(contains(c.report.messages(), "removed 2 unused vertices"));
+  EXPECT_TRUE(listed(c.report.messages(), "removed 2 unused vertices"));
 }
 
 TEST(CleanMesh, TorusAndAnnulusKeepTheirTopology) {

@@ -21,7 +21,7 @@
 namespace ff {
 namespace {
 
-std::string error_of(const std::string& text) {
+std::string direction_error(const std::string& text) {
   try {
     parse_direction_expression(text);
   } catch (const InputError& e) {
@@ -146,11 +146,11 @@ TEST(DirectionExpression, ZeroOrNormalDirectionsStayIsotropicAndAreCounted) {
 }
 
 TEST(DirectionExpression, HostileOrBrokenExpressionsAreRefused) {
-  EXPECT_EQ(error_of("-y, x, 0"), "");
-  EXPECT_EQ(error_of("atan2(y, x), min(x, y, z), clamp(z, 0, 1)"), "");  // commas inside calls
-  EXPECT_EQ(error_of("if(z > 1, 1, 0), 0, 1"), "");
+  EXPECT_EQ(direction_error("-y, x, 0"), "");
+  EXPECT_EQ(direction_error("atan2(y, x), min(x, y, z), clamp(z, 0, 1)"), "");  // commas inside calls
+  EXPECT_EQ(direction_error("if(z > 1, 1, 0), 0, 1"), "");
   const auto has = [](const std::string& text, const std::string& part) {
-    const std::string e = error_of(text);
+    const std::string e = direction_error(text);
     EXPECT_NE(e.find(part), std::string::npos) << "'" << text.substr(0, 60) << "' gave '" << e << "'";
   };
   has("-y, x", "needs three components");

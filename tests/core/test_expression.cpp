@@ -16,7 +16,7 @@ namespace {
 double eval(const std::string& text, ExprInputs in = {}) { return Expression::parse(text).evaluate(in); }
 
 // The InputError message for `text`, or "" when it parses.
-std::string error_of(const std::string& text) {
+std::string parse_error(const std::string& text) {
   return test::input_error_message([&] { Expression::parse(text); });
 }
 
@@ -97,7 +97,7 @@ TEST(Expression, PresetsParseAndArePositive) {
 
 // Each hostile input is refused with a message containing `needle`.
 void expect_refused(const std::string& text, const std::string& needle) {
-  const std::string message = error_of(text);
+  const std::string message = parse_error(text);
   EXPECT_NE(message.find(needle), std::string::npos)
       << "input '" << text.substr(0, 60) << "' gave '" << message << "', wanted '" << needle << "'";
 }
@@ -138,8 +138,8 @@ TEST(Expression, HostileInputsAreRefusedWithClearMessages) {
   expect_refused("1e999", "number too large at column 1");
   expect_refused(std::string(5000, 'a'), "too long");
   // Exactly at the limits is fine.
-  EXPECT_EQ(error_of(std::string(63, '(') + "1" + std::string(63, ')')), "");
-  EXPECT_EQ(error_of("1" + std::string(4094, ' ')), "");
+  EXPECT_EQ(parse_error(std::string(63, '(') + "1" + std::string(63, ')')), "");
+  EXPECT_EQ(parse_error("1" + std::string(4094, ' ')), "");
 }
 
 }  // namespace

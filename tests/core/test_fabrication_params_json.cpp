@@ -10,7 +10,7 @@
 namespace ff {
 namespace {
 
-std::string error_of(const std::string& json) {
+std::string settings_error(const std::string& json) {
   return test::input_error_message([&] { fabrication_settings_from_json(json); });
 }
 
@@ -38,15 +38,15 @@ TEST(FabricationParamsJson, ReadsEveryField) {
 }
 
 TEST(FabricationParamsJson, ErrorsNameTheField) {
-  EXPECT_NE(error_of(R"({"thickness": -1})").find("'thickness'"), std::string::npos);
-  EXPECT_NE(error_of(R"({"thickness": "20"})").find("'thickness'"), std::string::npos);
-  EXPECT_NE(error_of(R"({"side": "middle"})").find("'side'"), std::string::npos);
-  EXPECT_NE(error_of(R"({"units": "yd"})").find("'units'"), std::string::npos);
-  EXPECT_NE(error_of(R"({"meshUnits": 1})").find("'meshUnits'"), std::string::npos);
-  EXPECT_NE(error_of(R"({"sheetWidth": 0})").find("'sheetWidth'"), std::string::npos);
-  EXPECT_NE(error_of(R"({"sheetHeight": 1e12})").find("'sheetHeight'"), std::string::npos);
-  EXPECT_NE(error_of(R"({"kerf": 3})").find("'kerf'"), std::string::npos);
-  EXPECT_NE(error_of("[]").find("object"), std::string::npos);
+  EXPECT_NE(settings_error(R"({"thickness": -1})").find("'thickness'"), std::string::npos);
+  EXPECT_NE(settings_error(R"({"thickness": "20"})").find("'thickness'"), std::string::npos);
+  EXPECT_NE(settings_error(R"({"side": "middle"})").find("'side'"), std::string::npos);
+  EXPECT_NE(settings_error(R"({"units": "yd"})").find("'units'"), std::string::npos);
+  EXPECT_NE(settings_error(R"({"meshUnits": 1})").find("'meshUnits'"), std::string::npos);
+  EXPECT_NE(settings_error(R"({"sheetWidth": 0})").find("'sheetWidth'"), std::string::npos);
+  EXPECT_NE(settings_error(R"({"sheetHeight": 1e12})").find("'sheetHeight'"), std::string::npos);
+  EXPECT_NE(settings_error(R"({"kerf": 3})").find("'kerf'"), std::string::npos);
+  EXPECT_NE(settings_error("[]").find("object"), std::string::npos);
 }
 
 TEST(FabricationParamsJson, PanelThicknessAndBoundaryCut) {
@@ -62,13 +62,13 @@ TEST(FabricationParamsJson, PanelThicknessAndBoundaryCut) {
   EXPECT_EQ(plumb.options.boundary.kind, BoundaryCut::Kind::Plumb);
   EXPECT_EQ(plumb.options.boundary.up, Vec3::UnitY());
   EXPECT_EQ(fabrication_settings_from_json("{}").options.boundary.kind, BoundaryCut::Kind::Square);
-  EXPECT_NE(error_of(R"({"panelThickness": {"P3": 0}})").find("'panelThickness.P3'"), std::string::npos);
-  EXPECT_NE(error_of(R"({"panelThickness": {"Q3": 1}})").find("not a panel label"), std::string::npos);
-  EXPECT_NE(error_of(R"({"panelThickness": {"P0": 1}})").find("not a panel label"), std::string::npos);
-  EXPECT_NE(error_of(R"({"panelThickness": [1]})").find("'panelThickness'"), std::string::npos);
-  EXPECT_NE(error_of(R"({"boundaryCut": "round"})").find("'boundaryCut'"), std::string::npos);
-  EXPECT_NE(error_of(R"({"boundaryBevelDeg": 70})").find("'boundaryBevelDeg'"), std::string::npos);
-  EXPECT_NE(error_of(R"({"upAxis": "w"})").find("'upAxis'"), std::string::npos);
+  EXPECT_NE(settings_error(R"({"panelThickness": {"P3": 0}})").find("'panelThickness.P3'"), std::string::npos);
+  EXPECT_NE(settings_error(R"({"panelThickness": {"Q3": 1}})").find("not a panel label"), std::string::npos);
+  EXPECT_NE(settings_error(R"({"panelThickness": {"P0": 1}})").find("not a panel label"), std::string::npos);
+  EXPECT_NE(settings_error(R"({"panelThickness": [1]})").find("'panelThickness'"), std::string::npos);
+  EXPECT_NE(settings_error(R"({"boundaryCut": "round"})").find("'boundaryCut'"), std::string::npos);
+  EXPECT_NE(settings_error(R"({"boundaryBevelDeg": 70})").find("'boundaryBevelDeg'"), std::string::npos);
+  EXPECT_NE(settings_error(R"({"upAxis": "w"})").find("'upAxis'"), std::string::npos);
 }
 
 }  // namespace

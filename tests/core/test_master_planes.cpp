@@ -10,16 +10,15 @@
 #include <vector>
 
 #include "core/panels/master_planes.h"
+#include "core/util/angles.h"
 
 namespace ff {
 namespace {
 
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
-
 // Normal tilted by `deg` degrees from +z about the x axis.
-Vec3 tilted(double deg) { return Vec3(0.0, std::sin(deg * kDeg), std::cos(deg * kDeg)); }
+Vec3 tilted(double deg) { return Vec3(0.0, std::sin(deg * kRadiansPerDegree), std::cos(deg * kRadiansPerDegree)); }
 
-double angle_deg(const Vec3& a, const Vec3& b) { return std::atan2(a.cross(b).norm(), a.dot(b)) / kDeg; }
+double angle_deg(const Vec3& a, const Vec3& b) { return std::atan2(a.cross(b).norm(), a.dot(b)) / kRadiansPerDegree; }
 
 TEST(MasterPlanes, PlanesWithinADegreeSnapToTheAreaWeightedMean) {
   const std::vector<Vec3> centers = {Vec3(0, 0, 0.01), Vec3(2, 0, -0.02)};

@@ -13,7 +13,7 @@ const std::string kPatch =
     R"({"name": "'Roof'", "degreeU": 1, "degreeV": 1, "countU": 2, "countV": 2, "knotsU": [0, 1], "knotsV": [0, 1],)"
     R"( "points": [0, 0, 0, 0, 1, 0, 1, 0, 0, 1, 1, 1])";
 
-std::string error_of(const std::string& json) {
+std::string surface_set_error(const std::string& json) {
   return test::input_error_message([&] { surface_set_from_json(json); });
 }
 
@@ -31,20 +31,20 @@ TEST(NurbsJson, ReadsASurfaceSet) {
 
 TEST(NurbsJson, RefusesBadDescriptionsByName) {
   auto with = [](const std::string& extra) { return R"({"surfaces": [)" + kPatch + extra + "}]}"; };
-  EXPECT_EQ(error_of(with("")), "");
-  EXPECT_EQ(error_of(with(R"(, "colour": 1)")), "'Roof': unknown key 'colour'");
-  EXPECT_EQ(error_of(with(R"(, "weights": [1, 1, -1, 1])")), "'Roof': weight 2 is not positive and finite");
-  EXPECT_EQ(error_of(with(R"(, "weights": [1, 1, "a", 1])")), "'Roof' 'weights'[2] must be a number");
-  EXPECT_EQ(error_of(R"({"surfaces": [{"degreeU": 1}]})"), "surface 0: 'degreeV' is missing");
-  EXPECT_EQ(error_of(R"({"surfaces": 3})"), "the surface description needs a 'surfaces' array");
-  EXPECT_EQ(error_of(R"({"surfaces": [], "edgeLength": 0})"), "'edgeLength' must be above 0");
-  EXPECT_EQ(error_of(R"({"surfaces": [], "targetTriangles": 1e9})"),
+  EXPECT_EQ(surface_set_error(with("")), "");
+  EXPECT_EQ(surface_set_error(with(R"(, "colour": 1)")), "'Roof': unknown key 'colour'");
+  EXPECT_EQ(surface_set_error(with(R"(, "weights": [1, 1, -1, 1])")), "'Roof': weight 2 is not positive and finite");
+  EXPECT_EQ(surface_set_error(with(R"(, "weights": [1, 1, "a", 1])")), "'Roof' 'weights'[2] must be a number");
+  EXPECT_EQ(surface_set_error(R"({"surfaces": [{"degreeU": 1}]})"), "surface 0: 'degreeV' is missing");
+  EXPECT_EQ(surface_set_error(R"({"surfaces": 3})"), "the surface description needs a 'surfaces' array");
+  EXPECT_EQ(surface_set_error(R"({"surfaces": [], "edgeLength": 0})"), "'edgeLength' must be above 0");
+  EXPECT_EQ(surface_set_error(R"({"surfaces": [], "targetTriangles": 1e9})"),
             "'targetTriangles' must be a whole number from 100 to 2000000");
-  EXPECT_EQ(error_of(R"({"surfaces": [], "x": 1})"), "unknown key 'x' in the surface description");
-  EXPECT_NE(error_of("[1, 2"), "");
+  EXPECT_EQ(surface_set_error(R"({"surfaces": [], "x": 1})"), "unknown key 'x' in the surface description");
+  EXPECT_NE(surface_set_error("[1, 2"), "");
   std::string points = "[0, 0, 0, 0, 1, 0, 1, 0, 0, 1, 1]";
   EXPECT_EQ(
-      error_of(
+      surface_set_error(
           R"({"surfaces": [{"name": "R", "degreeU": 1, "degreeV": 1, "countU": 2, "countV": 2, "knotsU": [0, 1], "knotsV": [0, 1], "points": )" +
           points + "}]}"),
       "R: 'points' must hold x, y, z triples");

@@ -8,13 +8,12 @@
 #include "core/mesh/topology.h"
 #include "core/prepare/nurbs_surface.h"
 #include "core/prepare/nurbs_tessellate.h"
+#include "core/util/angles.h"
 #include "core/util/error.h"
 #include "input_error_message.h"
 
 namespace ff {
 namespace {
-
-const double kPi = 3.14159265358979323846;
 
 // A bilinear patch through four corners, Rhino's knot convention (count + degree - 1).
 NurbsSurface bilinear(const Vec3& p00, const Vec3& p10, const Vec3& p01, const Vec3& p11) {

@@ -10,13 +10,12 @@
 
 #include "core/fabricate/parts_list.h"
 #include "core/fabricate/thick_panels.h"
+#include "core/util/angles.h"
 #include "core/util/error.h"
 #include "polyhedra.h"
 
 namespace ff {
 namespace {
-
-constexpr double kDeg = 180.0 / 3.14159265358979323846;
 
 // The cube with panel 0 at 0.2 and the others at 0.1.
 ThickOptions one_thick_face(size_t panels) {
@@ -99,7 +98,7 @@ void expect_insets_match_bevels(const PartsList& list) {
       const Vec2 a = o.outer[i], b = o.outer[(i + 1) % k];
       const Vec2 e = (b - a).normalized();
       const Vec2 left(-e.y(), e.x());  // inwards for a counter-clockwise outline
-      const double expected = o.thickness * std::tan(o.edges[i].chamfer_deg / kDeg);
+      const double expected = o.thickness * std::tan(o.edges[i].chamfer_deg / kDegreesPerRadian);
       EXPECT_NEAR((o.inner[i] - a).dot(left), expected, 1e-9) << o.label << " edge " << i;
       EXPECT_NEAR((o.inner[(i + 1) % k] - a).dot(left), expected, 1e-9) << o.label << " edge " << i;
     }
@@ -119,7 +118,7 @@ TEST(PanelThickness, CubeBevelsFromTheFormula) {
     for (const OutlineEdge& e : row.outline.edges) {
       // phi = 90: tan b_p = t_q / t_p, so b = atan(1/2) on P1, atan(2) on its neighbours.
       const bool p1 = row.outline.label == "P1", q1 = e.neighbour == "P1";
-      const double expected = p1 ? std::atan(0.5) * kDeg : q1 ? std::atan(2.0) * kDeg : 45.0;
+      const double expected = p1 ? std::atan(0.5) * kDegreesPerRadian : q1 ? std::atan(2.0) * kDegreesPerRadian : 45.0;
       EXPECT_NEAR(e.chamfer_deg, expected, 1e-9) << row.outline.label << " / " << e.neighbour;
     }
   expect_insets_match_bevels(list);
@@ -133,7 +132,7 @@ TEST(PanelThickness, FormulaAgreesWithGeometryOnADodecahedron) {
   const PartsList list = make_parts_list(pm, options);
   expect_insets_match_bevels(list);
   // The two bevels of an edge add up to the angle between the panels.
-  const double phi = 180.0 - std::acos(-1.0 / std::sqrt(5.0)) * kDeg;
+  const double phi = 180.0 - std::acos(-1.0 / std::sqrt(5.0)) * kDegreesPerRadian;
   for (const PartRow& row : list.rows)
     for (const OutlineEdge& e : row.outline.edges)
       for (const PartRow& other : list.rows) {

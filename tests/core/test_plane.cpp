@@ -6,11 +6,10 @@
 #include <cmath>
 
 #include "core/panels/plane.h"
+#include "core/util/angles.h"
 
 namespace ff {
 namespace {
-
-constexpr double kDeg = M_PI / 180.0;
 
 TEST(TurnPlaneThrough, HoldsBothPointsWithTheNearestNormal) {
   const Plane flat = Plane::through(Vec3(0, 0, 0), Vec3(0, 0, 1));
@@ -37,7 +36,7 @@ TEST(TurnPlaneThrough, RefusesTurnsPastTheLimit) {
   const Plane flat = Plane::through(Vec3(0, 0, 0), Vec3(0, 0, 1));
   const Plane before = Plane::through(Vec3(7, 7, 7), Vec3(1, 0, 0));
   Plane out = before;
-  const Vec3 q(1, 0, std::tan(20 * kDeg));  // needs a 20 degree turn
+  const Vec3 q(1, 0, std::tan(20 * kRadiansPerDegree));  // needs a 20 degree turn
   EXPECT_FALSE(turn_plane_through(flat, Vec3(0, 0, 0), q, 1.0, 19.0, out));
   EXPECT_EQ(out.normal, before.normal);  // untouched on refusal
   EXPECT_TRUE(turn_plane_through(flat, Vec3(0, 0, 0), q, 1.0, 21.0, out));

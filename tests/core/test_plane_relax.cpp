@@ -11,11 +11,10 @@
 #include "core/cluster/metric.h"
 #include "core/panels/plane_relax.h"
 #include "core/panels/vertex_rule.h"
+#include "core/util/angles.h"
 
 namespace ff {
 namespace {
-
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
 
 // Exact moments of one triangle: integral of p p^T = (A / 12) (sum p_i p_i^T + 9 c c^T).
 void add_triangle(ClusterMoments& m, const Vec3& a, const Vec3& b, const Vec3& c) {
@@ -94,7 +93,7 @@ TEST(PlaneRelax, NearlyCoplanarNormalsMeetNearTheCornerAfterRelaxing) {
   for (size_t i = 0; i < 3; ++i) {
     // Still the same planes to within a small tilt, still fitting their faces closely.
     EXPECT_NEAR(relaxed[i].normal.norm(), 1.0, 1e-12);
-    EXPECT_GT(relaxed[i].normal.dot(s.planes[i].normal), std::cos(3.0 * kDeg)) << i;
+    EXPECT_GT(relaxed[i].normal.dot(s.planes[i].normal), std::cos(3.0 * kRadiansPerDegree)) << i;
     EXPECT_LT(rms_distance(relaxed[i], s.moments[i]), 0.01) << i;
   }
 }
@@ -130,7 +129,7 @@ TEST(PlaneRelax, WellConditionedCornerKeepsItsFit) {
   EXPECT_LE(d1, d0);
   for (size_t i = 0; i < 3; ++i) {
     EXPECT_LT(std::abs(relaxed[i].offset - s.planes[i].offset), 2.0 * d0) << i;
-    EXPECT_GT(relaxed[i].normal.dot(s.planes[i].normal), std::cos(2.0 * kDeg)) << i;
+    EXPECT_GT(relaxed[i].normal.dot(s.planes[i].normal), std::cos(2.0 * kRadiansPerDegree)) << i;
   }
 }
 

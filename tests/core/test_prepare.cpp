@@ -17,12 +17,6 @@
 namespace ff {
 namespace {
 
-bool contains(const std::vector<std::string>& messages, const std::string& word) {
-  for (const std::string& m : messages)
-    if (m.find(word) != std::string::npos) return true;
-  return false;
-}
-
 double mean_edge_length(const TriMesh& m, bool (*select)(const Vec3&)) {
   double sum = 0.0;
   int n = 0;
@@ -48,7 +42,7 @@ TEST(Prepare, KeepsAMeshWithEnoughTrianglesPerPanelBitForBit) {
     EXPECT_EQ(p.mesh.triangles, bunny.triangles);
     EXPECT_EQ(p.density, density);
     EXPECT_EQ(p.report.triangles_out, bunny.num_faces());
-    EXPECT_TRUE(contains(p.report.messages, "as they are"));
+    EXPECT_TRUE(test::any_message_says(p.report.messages, "as they are"));
   }
   PrepareOptions off;
   off.mode = PrepareMode::Off;
@@ -65,7 +59,7 @@ TEST(Prepare, RefinesACoarseMeshToAboutFiftyTrianglesPerPanel) {
   std::printf("[ prepare  ] epcot 400 panels: %s\n", p.report.messages[0].c_str());
   EXPECT_GE(per_panel, 20.0);
   EXPECT_LE(per_panel, 100.0);
-  EXPECT_TRUE(contains(p.report.messages, "refined 1,536 triangles to"));
+  EXPECT_TRUE(test::any_message_says(p.report.messages, "refined 1,536 triangles to"));
   EXPECT_TRUE(test::summarize(p.mesh) == test::summarize(epcot));
   EXPECT_GT(p.report.target_edge, 0.0);
 }
@@ -82,7 +76,7 @@ TEST(Prepare, RefinesBelowThirtyTrianglesPerPanelWhenTheCapAllows) {
   const double per_panel = static_cast<double>(p.mesh.num_faces()) / panels;
   EXPECT_GE(per_panel, 40.0);
   EXPECT_LE(per_panel, 70.0);
-  EXPECT_TRUE(contains(p.report.messages, "(25.1 before; 30 to 100 work best)"));
+  EXPECT_TRUE(test::any_message_says(p.report.messages, "(25.1 before; 30 to 100 work best)"));
   EXPECT_TRUE(test::summarize(p.mesh) == test::summarize(bunny));
   // 232 panels are 30.03 per panel: kept (above).
   // The rule before (designs saved then name the triangles of the mesh it made): kept.
@@ -156,7 +150,7 @@ TEST(Prepare, KeepsTwentyToThirtyTrianglesPerPanelWhenFiftyWouldPassTheCap) {
   const PreparedSurface p = prepare_surface(torus, panels, {});
   EXPECT_FALSE(p.report.applied);
   EXPECT_EQ(p.mesh.num_faces(), torus.num_faces());
-  EXPECT_TRUE(contains(p.report.messages, "as they are"));
+  EXPECT_TRUE(test::any_message_says(p.report.messages, "as they are"));
 }
 #endif
 
@@ -219,7 +213,7 @@ TEST(Prepare, ASizingDensitySizesAsTheSameDensityPaintedButIsNotCarried) {
   ASSERT_TRUE(p.report.applied);
   EXPECT_EQ(p.mesh.positions, painted.mesh.positions);
   EXPECT_TRUE(p.density.empty());
-  EXPECT_TRUE(contains(p.report.messages, "shorter where the density is higher"));
+  EXPECT_TRUE(test::any_message_says(p.report.messages, "shorter where the density is higher"));
   const double left = mean_edge_length(p.mesh, [](const Vec3& q) { return q.x() < -4.0; });
   const double right = mean_edge_length(p.mesh, [](const Vec3& q) { return q.x() > 4.0; });
   EXPECT_NEAR(left / right, 0.5, 0.1);

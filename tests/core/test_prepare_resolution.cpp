@@ -33,12 +33,6 @@ namespace {
 
 size_t at(int i) { return static_cast<size_t>(i); }
 
-bool contains(const std::vector<std::string>& messages, const std::string& word) {
-  for (const std::string& m : messages)
-    if (m.find(word) != std::string::npos) return true;
-  return false;
-}
-
 // The local target the remeshing aims at (isotropic_remesh.h): L0 * sqrt(mean / density),
 // the mean being the input's area-weighted mean density, clamped to [L0 / 8, 8 L0].
 double local_target(double base, double density, double mean) {
@@ -153,7 +147,7 @@ TEST(PrepareResolution, ReportsTheDistanceToTheInput) {
   EXPECT_LT(curved.report.distance, 0.75 * L);
   EXPECT_NEAR(curved.report.distance, measured, 0.25 * measured);  // a sampled measure: close, not equal
   EXPECT_NEAR(curved.report.distance_relative, curved.report.distance / bbox_diagonal(torus), 1e-15);
-  EXPECT_TRUE(contains(curved.report.messages, "of the input ("));
+  EXPECT_TRUE(test::any_message_says(curved.report.messages, "of the input ("));
 
   const TriMesh plane = make_plane(6, 4, 3.0, 2.0);
   const PreparedSurface flat = prepare_surface(plane, 40, {});
@@ -195,7 +189,7 @@ TEST(PrepareResolution, CoarsensAHugeMeshAndSolves) {
   const double per_panel = static_cast<double>(p.mesh.num_faces()) / panels;
   std::printf("[ prepare  ] torus %d triangles at %d panels: %s; %s\n", torus.num_faces(), panels,
               p.report.messages[0].c_str(), p.report.messages.back().c_str());
-  EXPECT_TRUE(contains(p.report.messages, "coarsened"));
+  EXPECT_TRUE(test::any_message_says(p.report.messages, "coarsened"));
   EXPECT_GE(per_panel, 0.7 * kPrepareCoarsenTrianglesPerPanel);
   EXPECT_LE(per_panel, 1.4 * kPrepareCoarsenTrianglesPerPanel);
   EXPECT_TRUE(test::summarize(p.mesh) == test::summarize(torus));
