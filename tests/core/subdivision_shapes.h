@@ -4,8 +4,6 @@
 // a bipyramid with a sharp equator, a planar quad grid with a boundary, a quad torus.
 #include <Eigen/Geometry>
 #include <cmath>
-#include <set>
-#include <utility>
 #include <vector>
 
 #include "core/mesh/poly_mesh.h"

@@ -186,10 +186,11 @@ export class EditPanel {
     else if (!result) this.hint.textContent = 'Solve first, then click a panel in the view to edit it.';
     else if (this.merging) this.hint.textContent = 'Click a neighbouring panel to merge the selected one with (Esc: stop).';
     else if (panel === null) this.hint.textContent = 'Click a panel in the view to select it (the density brush must be off).';
-    else if (problems.length > 0) {
+    else {
       const name = shown === null ? `Panel ${panel}` : `P${shown + 1}`;
-      this.hint.textContent = `${name} selected: invalid (${problems.join(', ')}), so not locked: a lock would keep it so. Split it, merge it with a neighbour, or try another seed or panel count. Esc: clear.`;
-    } else this.hint.textContent = `${shown === null ? `Panel ${panel}` : `P${shown + 1}`} selected${isLocked ? ' (locked: unlock it to split or merge)' : ''}. Esc: clear.`;
+      const state = problems.length > 0 ? `: invalid (${problems.join(', ')}), so not locked: a lock would keep it so. Split it, merge it with a neighbour, or try another seed or panel count` : isLocked ? ' (locked: unlock it to split or merge)' : '';
+      this.hint.textContent = `${name} selected${state}. Esc: clear.`;
+    }
     const count = (op: PanelEdit['op']): number => edits.filter((e) => e.op === op).length;
     const parts = [`${count('split')} split`, `${count('merge')} merged`, `${locked.size} locked`];
     const panels = result ? Math.max(0, result.panelOffsets.length - 1) : 0;
