@@ -5,7 +5,7 @@
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
 import { unzlibSync, zlibSync } from 'fflate';
-import { browserSuite, download, errorAfter, exampleLink, maxPlanarity, parseObj, remesh, screenshot, selectExample, setPanels, solveAfter, statusText, waitForDone, waitForStatus } from './harness.mjs';
+import { browserSuite, download, errorAfter, exampleLink, maxPlanarity, parseObj, recordStatus, remesh, screenshot, selectExample, setPanels, solveAfter, statusText, waitForDone, waitForStatus } from './harness.mjs';
 
 const suite = browserSuite();
 // A quick start (the default example is a 50k-triangle tower, slow to solve here).
@@ -492,12 +492,14 @@ test('Enter in Fill holes applies the holes even when the panel count needs the 
 });
 
 // The solve that would say what a hole change dropped, replaced by a Subdivide change before it
-// ends (?stepDelay=40: its steps slowed): the preparation's solve says it instead (it was lost
-// with the mesh it named, though the design is the same).
+// ends (?stepDelay=250: its steps slowed, so it is still running when the change lands; at 40 ms
+// a busy CI machine once let it end first, and it said the notice itself): the preparation's
+// solve says it instead (it was lost with the mesh it named, though the design is the same).
 test('what a hole change dropped is said by the solve of a preparation that replaced its own', () => {
   const { link } = gridLink({ hole: 1, panels: 8, repair: { fillHoles: 10, largestPart: false }, edits: [{ op: 'lock', face: 0 }, { op: 'lock', face: 287 }] });
-  return suite.withPage(link.replace('#', '?stepDelay=40#'), async (page) => {
+  return suite.withPage(link.replace('#', '?stepDelay=250#'), async (page) => {
     assert.equal(await waitForDone(page), 8);
+    await recordStatus(page);
     const fill = page.getByLabel('Fill holes up to (edges)');
     await fill.fill('0');
     await fill.blur();
@@ -506,6 +508,8 @@ test('what a hole change dropped is said by the solve of a preparation that repl
     assert.equal(await solveAfter(page, () => subdivide.fill('1').then(() => subdivide.blur()), 120_000), 8);
     assert.match(await cleanupNote(page), /subdivided 143 polygons 1 level \(catmull-clark\) into 1,144 triangles/);
     assert.match(await statusText(page), /^2 panel edits were dropped: one named a filled triangle, which filling numbers anew\. Done: 8 panels/);
+    const seen = await page.evaluate(() => window.__statusSeen);
+    assert.equal(seen.filter((text) => /Done: /.test(text)).length, 1, `the hole change's solve was replaced before it ended: ${JSON.stringify(seen)}`);
   });
 });
 
