@@ -59,7 +59,8 @@ LoadedInput load_input(const std::string& path, const CleanOptions& options) {
   if (!doubt.empty()) std::fprintf(stderr, "flatfacet: warning: --largest-part: %s\n", doubt.c_str());
   // A surface that passes through itself gives panels that do too, at any count: said before
   // the solve, so the designer knows to mend the model rather than to try other counts.
-  const SurfaceCrossings own = surface_crossings(in.clean.mesh);
+  in.crossings = surface_crossings(in.clean.mesh);
+  const SurfaceCrossings& own = *in.crossings;
   if (!own.checked) {
     std::fprintf(stderr,
                  "flatfacet: warning: %s: not checked whether the surface passes through itself: its triangles overlap "
@@ -79,6 +80,7 @@ LoadedInput load_input(const std::string& path, const CleanOptions& options) {
 
 void subdivide_input(LoadedInput& in, const SubdivisionRequest& request) {
   if (request.levels <= 0) return;
+  in.crossings.reset();  // of the control mesh
   const std::vector<int> polygon = cleaned_face_polygons(in.clean.face_source, in.raw.source_polygon);
   const ControlSubdivision fine = subdivide_control_mesh(in.clean.mesh, polygon, request.levels, request.crease_angle_deg);
   SubdivisionInfo& info = in.subdivision;

@@ -1,6 +1,7 @@
 #pragma once
 // Loading what every command starts from: read the file, clean it, map a density file onto
 // the cleaned mesh. Shared by `cluster` and (later) `remesh`.
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -8,6 +9,7 @@
 #include "cli/args.h"
 #include "core/mesh/clean.h"
 #include "core/mesh/mesh_io.h"
+#include "core/panels/panel_crossings.h"
 
 namespace ff::cli {
 
@@ -28,6 +30,8 @@ struct LoadedInput {
   double clean_seconds = 0.0;
   SubdivisionInfo subdivision;
   CleanOptions repair;  // what was asked of clean_mesh()
+  // surface_crossings(clean.mesh), checked as it loads (the warning); none once subdivided.
+  std::optional<SurfaceCrossings> crossings;
 };
 
 // `--fill-holes N` (0..500 edges, 0 = off) and `--largest-part` (remesh and cluster): how

@@ -238,6 +238,7 @@ int run_remesh(const std::vector<std::string>& argv) {
   QualityOptions quality_options;
   quality_options.glass = o.params.glass;
   quality_options.min_corner_angle_deg = o.params.min_corner_angle_deg;
+  if (!prepared.report.applied) quality_options.input_crossings = in.crossings;  // the loaded mesh's, checked
   const QualityReport quality =
       measure_quality(remesher.mesh(), remesher.topology(), remesher.panels(), quality_options);
   timings.quality = seconds_since(t_quality);

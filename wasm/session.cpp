@@ -72,7 +72,7 @@ std::string Session::load(const std::string& name, TriMesh raw, int input_triang
   MeshTopology topology = build_topology(clean.mesh);
   // The file's polygon of each cleaned triangle (a subdivision's control faces, prepare()).
   std::vector<int> face_polygon = cleaned_face_polygons(clean.face_source, source_polygon);
-  const SurfaceCrossings crossings = surface_crossings(clean.mesh);
+  SurfaceCrossings crossings = surface_crossings(clean.mesh);
   // The copies too (running out of memory in one, a large mesh's second copy, is a refusal that
   // must leave the previous design whole), then replace it by moves and clears.
   TriMesh original = clean.mesh;
@@ -90,6 +90,8 @@ std::string Session::load(const std::string& name, TriMesh raw, int input_triang
   clean_report_ = clean.report;
   self_crossings_ = crossings.checked ? static_cast<int>(crossings.pairs.size()) : -1;
   self_crossing_point_ = crossings.pairs.empty() ? Vec3::Zero() : crossings.pairs.front().point;
+  original_crossings_ = std::move(crossings);
+  mesh_is_original_ = true;
   params_.density.clear();  // per vertex of the previous mesh
   remesher_.reset();
   forget_result();
@@ -224,6 +226,7 @@ const QualityReport* Session::quality() {
     if (!remesher_->done()) options.samples_per_side = 2000;
     options.glass = remesher_->params().glass;  // glass mode's checks, as the CLI's report
     options.min_corner_angle_deg = remesher_->params().min_corner_angle_deg;
+    if (mesh_is_original_) options.input_crossings = original_crossings_;
     quality_ = measure_quality(mesh_, topology_, remesher_->panels(), options);
     if (remesher_->done()) timings_.quality = seconds_since(t0);
   }

@@ -153,8 +153,9 @@ class Session {
   // Designing on the prepared mesh has begun: the mesh before is no longer carried from
   // (session_prepare.cpp).
   void forget_mesh_before();
-  // prepare()'s and prepare_as_loaded()'s end: `mesh` on show, the mesh before kept to carry from.
-  std::string adopt_mesh(TriMesh mesh, std::vector<std::string> notes);
+  // prepare()'s and prepare_as_loaded()'s end: `mesh` on show, the mesh before kept to carry
+  // from; `is_original`: `mesh` is original_ unchanged.
+  std::string adopt_mesh(TriMesh mesh, std::vector<std::string> notes, bool is_original);
   const QualityReport* quality();
   void forget_result();
   // Edits (session_edits.cpp): what set_params compares to tell an edit from a new solve
@@ -176,6 +177,9 @@ class Session {
   // triangles cross (-1: not checked) and the first pair's deepest point, told on load.
   int self_crossings_ = 0;
   Vec3 self_crossing_point_ = Vec3::Zero();
+  // The same pairs, given to each solve's report while mesh_ is original_ (not checked again).
+  SurfaceCrossings original_crossings_;
+  bool mesh_is_original_ = false;
   std::vector<std::string> prepared_notes_;  // what prepare() did and why
   std::vector<int> face_polygon_;     // per triangle of original_: its polygon in the file
   int input_triangles_ = 0;

@@ -59,18 +59,18 @@ std::string Session::prepare(int panels, int subdivide, double edge_length, int 
     PreparedSurface prepared = prepare_surface(mesh, panels, {}, options);
     if (subdivide != 0 || prepared.report.applied)
       for (const std::string& m : prepared.report.messages) notes.push_back(m);
-    return adopt_mesh(std::move(prepared.mesh), std::move(notes));
+    return adopt_mesh(std::move(prepared.mesh), std::move(notes), subdivide == 0 && !prepared.report.applied);
   });
 }
 
 std::string Session::prepare_as_loaded() {
   return guarded([&] {
     if (original_.num_faces() == 0) throw InputError("no mesh loaded");
-    return adopt_mesh(original_, {});
+    return adopt_mesh(original_, {}, true);
   });
 }
 
-std::string Session::adopt_mesh(TriMesh mesh, std::vector<std::string> notes) {
+std::string Session::adopt_mesh(TriMesh mesh, std::vector<std::string> notes, bool is_original) {
   // Even a mesh left as loaded replaces the current one: the session then holds no solve
   // (as after a load) and the transfers below carry from the mesh before.
   MeshTopology topology = build_topology(mesh);
@@ -79,6 +79,7 @@ std::string Session::adopt_mesh(TriMesh mesh, std::vector<std::string> notes) {
   mesh_ = std::move(mesh);
   topology_ = std::move(topology);
   prepared_notes_ = std::move(notes);
+  mesh_is_original_ = is_original;
   params_.density.clear();
   remesher_.reset();
   forget_result();

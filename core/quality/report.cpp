@@ -350,7 +350,7 @@ QualityReport measure_quality(const TriMesh& input, const MeshTopology& input_to
     }
   }
   {
-    const SurfaceCrossings own = surface_crossings(input);
+    const SurfaceCrossings own = options.input_crossings ? *options.input_crossings : surface_crossings(input);
     r.input_crossings = own.checked ? static_cast<int>(own.pairs.size()) : -1;
     if (!own.pairs.empty()) r.input_crossing_point = own.pairs.front().point;
   }

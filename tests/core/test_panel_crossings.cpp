@@ -251,5 +251,29 @@ TEST(SurfaceCrossings, TheReportChecksTheInputEvenWhereNoPanelsCross) {
   EXPECT_NE(q.input_crossing_point, Vec3::Zero());
 }
 
+// A caller that checked the mesh as it opened (the CLI, the page) gives its crossings to the
+// report, which takes them as they are: the same report as when it checks the mesh itself.
+TEST(SurfaceCrossings, TheReportTakesTheCrossingsItIsGiven) {
+  RemeshParams params;
+  params.panels = 60;
+  const TriMesh loaded = test::load_clean("camelhead.off");
+  Remesher remesher(loaded, params);
+  remesher.run();
+  QualityOptions given;
+  given.input_crossings = surface_crossings(loaded);  // as the CLI has it: the mesh it loaded
+  ASSERT_EQ(given.input_crossings->pairs.size(), 5u);
+  EXPECT_EQ(surface_crossings(remesher.mesh()).pairs.front().point, given.input_crossings->pairs.front().point);
+  const QualityReport own = measure_quality(remesher.mesh(), remesher.topology(), remesher.panels());
+  const QualityReport taken = measure_quality(remesher.mesh(), remesher.topology(), remesher.panels(), given);
+  EXPECT_EQ(taken.input_crossings, own.input_crossings);
+  EXPECT_EQ(taken.input_crossing_point, own.input_crossing_point);
+  // Taken, not checked again: an unchecked surface is said as such (-1), one pair as one.
+  given.input_crossings->checked = false;
+  EXPECT_EQ(measure_quality(remesher.mesh(), remesher.topology(), remesher.panels(), given).input_crossings, -1);
+  given.input_crossings->checked = true;
+  given.input_crossings->pairs.resize(1);
+  EXPECT_EQ(measure_quality(remesher.mesh(), remesher.topology(), remesher.panels(), given).input_crossings, 1);
+}
+
 }  // namespace
 }  // namespace ff

@@ -87,3 +87,26 @@ test('a surface that passes through itself is told on load, with where', () => {
   assert.deepEqual(bunny.selfCrossingPoint, [0, 0, 0]);
   s.delete();
 });
+
+// Each solve's report takes the crossings found on load while the mesh is the one loaded (not
+// checked again), and checks a prepared mesh itself: subdivided, the cow crosses itself at more
+// pairs of its finer triangles.
+test("the report's input crossings are the loaded mesh's, or the prepared mesh's own", () => {
+  const s = new ff.Session();
+  const cow = json(s.loadMesh('cow.off', readFileSync(path.join(meshes, 'cow.off'))));
+  assert.equal(json(s.prepareAsLoaded()).ok, true);
+  assert.equal(json(s.setParams(JSON.stringify({ panels: 30 }))).ok, true);
+  solve(s);
+  const loaded = json(s.reportJson());
+  assert.equal(loaded.input_crossings, cow.selfCrossings);
+  assert.deepEqual(loaded.input_crossing_point, cow.selfCrossingPoint);
+  const subdivided = json(s.prepare(30, 1, 0, 0, 0));
+  assert.equal(subdivided.ok, true, subdivided.message);
+  assert.equal(json(s.setParams(JSON.stringify({ panels: 30 }))).ok, true);
+  solve(s);
+  assert.ok(json(s.reportJson()).input_crossings > cow.selfCrossings, 'the finer mesh checked itself');
+  assert.equal(json(s.prepareAsLoaded()).ok, true);
+  solve(s);
+  assert.equal(json(s.reportJson()).input_crossings, cow.selfCrossings, 'as loaded again');
+  s.delete();
+});
