@@ -8,7 +8,7 @@
 // click selects one panel for the edits and its own thickness alike.
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
-import { browserSuite, exampleLink, download, maxPlanarity, outcomes, parseObj, remesh, screenshot, setPanels, solveAfter, waitForDone, waitForSaved } from './harness.mjs';
+import { browserSuite, exampleLink, download, maxPlanarity, outcomes, parseObj, remesh, screenshot, setPanels, solveAfter, statusText, waitForDone, waitForSaved } from './harness.mjs';
 
 const suite = browserSuite();
 
@@ -135,6 +135,14 @@ test('panel edits: split, lock through a re-solve, merge; undo/redo give the sam
     assert.equal(await objOf(page), final, 'the link reproduces the OBJ byte for byte');
     assert.match(await page.evaluate(() => document.body.dataset.lockedPanels), /^\d+$/, 'the lock came with it');
     await screenshot(page, 'edits-shared');
+    // Another seed starts the clusters over: the edits land on the panels now at their
+    // triangles, and the status line says so.
+    await page.getByText('Metric and solver').click();
+    await page.getByLabel('Seed', { exact: true }).fill('2');
+    await solveAfter(page, () => remesh(page));
+    assert.match(await statusText(page), /^A new seed starts the panels over: the 3 panel edits apply to the panels now at their triangles, which may not be the ones edited\. .*Done: \d+ panels/);
+    assert.match(await page.evaluate(() => document.body.dataset.lockedPanels), /^\d+$/, 'the lock is on a panel of the new seed');
+    await screenshot(page, 'edits-new-seed');
   });
 });
 

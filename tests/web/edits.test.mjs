@@ -6,7 +6,7 @@
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
 import { DesignMachine } from '../../build/web-tests/designMachine.js';
-import { checkEdits, checkEditsFit, clusterCount, compactChain, countAfterEdits, lockedPanels, MAX_EDITS, neighbourPanels, sameButEdits, targetOfTyped } from '../../build/web-tests/edits/panelEdits.js';
+import { checkEdits, checkEditsFit, clusterCount, compactChain, countAfterEdits, lockedPanels, MAX_EDITS, neighbourPanels, newSeedNotice, sameButEdits, targetOfTyped } from '../../build/web-tests/edits/panelEdits.js';
 import { PanelSelection, panelsOfClusters, selectedIn } from '../../build/web-tests/panelSelection.js';
 import { History } from '../../build/web-tests/history.js';
 import { DEFAULT_PARAMS, sameParams, toRemeshParams, validateParams } from '../../build/web-tests/params.js';
@@ -229,4 +229,15 @@ test('panel selection: one selected triangle names the panel for the edits and t
   assert.equal(selection.face, null);
   assert.deepEqual([...panelsOfClusters(new Set([1]), result)].sort(), [1, 2], 'a locked cluster is all its pieces');
   assert.deepEqual([...panelsOfClusters(new Set([2]), result)], []);
+});
+
+// A new seed starts the clusters over; the edits name triangles, so they land on the panels
+// now there: said with the solve, not left to be found.
+test('a new seed says that the edits apply to the panels now at their triangles', () => {
+  assert.equal(newSeedNotice([]), null);
+  assert.equal(newSeedNotice([{ op: 'lock', face: 3 }]), 'A new seed starts the panels over: the panel edit applies to the panel now at its triangle, which may not be the one edited.');
+  assert.equal(
+    newSeedNotice([{ op: 'lock', face: 3 }, { op: 'split', face: 9 }, { op: 'merge', face: 1, with: 40 }]),
+    'A new seed starts the panels over: the 3 panel edits apply to the panels now at their triangles, which may not be the ones edited.',
+  );
 });

@@ -11,10 +11,10 @@ import { DesignOpener, type LoadedMesh, type OpenInfo, type OpenOptions } from '
 import { ExamplePicker } from './examplePicker.ts';
 import { designStem } from './exports.ts';
 import { FabricationPanel } from './fabricationPanel.ts';
-import { clusterCount } from './edits/panelEdits.ts';
+import { clusterCount, newSeedNotice } from './edits/panelEdits.ts';
 import { Outputs } from './outputs.ts';
 import { PanelSelection } from './panelSelection.ts';
-import type { DesignParams } from './params.ts';
+import { canWarmStart, type DesignParams } from './params.ts';
 import { ParamsForm } from './paramsForm.ts';
 import { PrepareControl } from './prepareControl.ts';
 import { RepairControl } from './repairControl.ts';
@@ -200,7 +200,9 @@ export class App {
     const plan = this.machine.planRemesh(checked.value);
     if (plan.kind === 'refused') return;
     this.outputs.forgetLink();
-    this.startSolve(plan.run, plan.fresh, plan.chain, plan.lost);
+    const shown = this.machine.solved?.params;
+    const notice = shown && !canWarmStart(shown, checked.value) ? newSeedNotice(checked.value.edits) : null;
+    this.startSolve(plan.run, plan.fresh, plan.chain, plan.lost, notice);
   }
 
   // `run` is solved in order; `chain` is what reproduces the result from the loaded mesh.

@@ -140,6 +140,15 @@ export function describeEdit(edit: PanelEdit): string {
   }
 }
 
+// Said with a solve from another seed or seeding: the clusters start over, and every edit
+// names a triangle, so it now applies to whichever panel holds that triangle (README, "Lock
+// panel"); null without edits.
+export function newSeedNotice(edits: readonly PanelEdit[]): string | null {
+  if (edits.length === 0) return null;
+  const what = edits.length === 1 ? 'the panel edit applies to the panel now at its triangle, which may not be the one edited' : `the ${edits.length} panel edits apply to the panels now at their triangles, which may not be the ones edited`;
+  return `A new seed starts the panels over: ${what}.`;
+}
+
 // Whether two designs differ in their edit list only.
 export function sameButEdits(a: DesignParams, b: DesignParams): boolean {
   return JSON.stringify({ ...a, edits: [] }) === JSON.stringify({ ...b, edits: [] });
