@@ -61,16 +61,6 @@ long long Args::get_int(const std::string& name, long long fallback, long long l
   return has(name) ? parse_int(options.at(name), "--" + name, lo, hi) : fallback;
 }
 
-std::uint64_t Args::get_u64(const std::string& name, std::uint64_t fallback) const {
-  if (!has(name)) return fallback;
-  const std::string& text = options.at(name);
-  std::uint64_t v = 0;
-  const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-  if (ec != std::errc() || ptr != text.data() + text.size())
-    throw UsageError("--" + name + ": '" + text + "' is not a non-negative whole number");
-  return v;
-}
-
 Args parse_args(const std::vector<std::string>& argv, const std::set<std::string>& with_value,
                 const std::set<std::string>& switches) {
   Args args;

@@ -2,7 +2,6 @@
 // Command-line parsing for `flatfacet`: one positional input, `--name value` options and
 // `--flag` switches, each checked against what the command accepts. Errors are UsageError
 // with one line naming the option.
-#include <cstdint>
 #include <map>
 #include <set>
 #include <stdexcept>
@@ -27,7 +26,6 @@ struct Args {
   std::string get(const std::string& name, const std::string& fallback = "") const;
   // Strict number parsing: the whole text must be the number, within [lo, hi].
   long long get_int(const std::string& name, long long fallback, long long lo, long long hi) const;
-  std::uint64_t get_u64(const std::string& name, std::uint64_t fallback) const;
 };
 
 // Strict whole-number parsing of `text` within [lo, hi]; `what` names it in the UsageError.

@@ -68,7 +68,7 @@ int run_cluster(const std::vector<std::string>& argv) {
 
   RemeshParams params;
   params.panels = static_cast<int>(args.get_int("panels", 0, 1, 10'000'000));
-  params.seed = args.get_u64("seed", 1);
+  params.seed = static_cast<std::uint64_t>(args.get_int("seed", 1, 0, RemeshParams::kMaxSeed));
   params.lloyd_iterations = static_cast<int>(args.get_int("iterations", 20, 0, 100000));
   if (args.has("weights")) params.weights = parse_weights(args.get("weights"));
   const std::string seeding = args.get("seeding", "farthest");

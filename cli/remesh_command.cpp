@@ -106,7 +106,7 @@ Options parse_options(const std::vector<std::string>& argv) {
   o.input = args.positional[0];
   RemeshParams& p = o.params;
   p.panels = static_cast<int>(args.get_int("panels", 0, 1, 10'000'000));
-  p.seed = args.get_u64("seed", 1);
+  p.seed = static_cast<std::uint64_t>(args.get_int("seed", 1, 0, RemeshParams::kMaxSeed));
   if (args.has("iterations")) std::tie(p.lloyd_iterations, p.panel_rounds) = parse_iterations(args.get("iterations"));
   p.retries = static_cast<int>(args.get_int("retries", p.retries, 0, RemeshParams::kMaxRetries));
   if (args.has("weights")) p.weights = parse_weights(args.get("weights"));

@@ -14,7 +14,6 @@ namespace {
 
 constexpr double kMaxCount = 10'000'000;       // panels
 constexpr double kMaxIterations = RemeshParams::kMaxIterations;  // k1, k2
-constexpr double kMaxSeed = 9007199254740991;  // 2^53 - 1: exact in a JS number
 constexpr double kMaxWeight = 1e6;
 
 double number(const JsonValue& v, const std::string& name, double lo, double hi, bool integer) {
@@ -153,7 +152,7 @@ RemeshParams remesh_params_from_json(std::string_view json, const RemeshParams& 
     if (name == "panels") {
       p.panels = static_cast<int>(number(value, name, 1, kMaxCount, true));
     } else if (name == "seed") {
-      p.seed = static_cast<std::uint64_t>(number(value, name, 0, kMaxSeed, true));
+      p.seed = static_cast<std::uint64_t>(number(value, name, 0, static_cast<double>(RemeshParams::kMaxSeed), true));
     } else if (name == "weights") {
       read_weights(value, p.weights);
     } else if (name == "lloydIterations") {

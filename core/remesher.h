@@ -50,6 +50,9 @@ struct RemeshParams {
   // merges (Remesher::num_panels()); set_params with the same edits and either this target or
   // that current count changes nothing about the count (Remesher::kept_count).
   int panels = 100;
+  // 0 to kMaxSeed, 2^53 - 1: the largest a JSON number (the page, share links) holds exactly, so
+  // every seed the CLI takes can be typed on the page and travel in a link.
+  static constexpr std::int64_t kMaxSeed = (std::int64_t{1} << 53) - 1;
   std::uint64_t seed = 1;
   MetricWeights weights;
   // Empty (uniform), one value per mesh vertex or one per face; higher = smaller panels.

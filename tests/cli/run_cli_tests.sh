@@ -397,6 +397,11 @@ expect_error 2 "iterations.*-1.*range" remesh "$e" --panels 10 --iterations -1,2
 expect_error 2 "iterations.*K1,K2" remesh "$e" --panels 10 --iterations 1,2,3 "${o[@]}"
 expect_error 2 "unknown option --frobnicate" remesh "$e" --panels 10 --frobnicate "${o[@]}"
 expect_error 2 "retries" remesh "$e" --panels 10 --retries 11 "${o[@]}"
+# Seeds as the page and share links hold them exactly (2^53 - 1 at most): the CLI took any
+# 64-bit seed, which a link could not carry.
+expect_error 2 "seed: 9007199254740992 is out of range \[0, 9007199254740991\]" remesh "$e" --panels 10 --seed 9007199254740992 "${o[@]}"
+expect_error 2 "seed: '-1' is not a whole number|seed: -1 is out of range" remesh "$e" --panels 10 --seed -1 "${o[@]}"
+expect_error 2 "seed: 9007199254740992 is out of range" cluster "$e" --panels 10 --seed 9007199254740992 --labels "$tmp/never.txt"
 # A vertex far from the rest (one coordinate typed as 4294967296 in epcot): refining for the
 # panels would split its slivers into tens of millions of triangles. It ran out of memory
 # (24 GB, killed) until the preparation estimated the splits; now the clean-up names the
