@@ -88,8 +88,6 @@ std::string Session::load(const std::string& name, TriMesh raw, int input_triang
   prepared_notes_.clear();
   cleanup_ = std::move(cleanup);
   clean_report_ = clean.report;
-  self_crossings_ = crossings.checked ? static_cast<int>(crossings.pairs.size()) : -1;
-  self_crossing_point_ = crossings.pairs.empty() ? Vec3::Zero() : crossings.pairs.front().point;
   original_crossings_ = std::move(crossings);
   mesh_is_original_ = true;
   params_.density.clear();  // per vertex of the previous mesh
@@ -110,9 +108,10 @@ std::string Session::mesh_info_json() const {
   // Orientable surfaces: chi = 2 c - 2 g - b.
   j.value("genus", (2 * topology_.num_components - euler - loops) / 2);
   j.value("bboxDiagonal", bbox_diagonal(mesh_));
-  j.value("selfCrossings", self_crossings_);
+  j.value("selfCrossings", original_crossings_.count());
   j.begin_array("selfCrossingPoint");
-  for (int k = 0; k < 3; ++k) j.value(nullptr, self_crossing_point_[k]);
+  const Vec3 point = original_crossings_.first_point();
+  for (int k = 0; k < 3; ++k) j.value(nullptr, point[k]);
   j.end_array();
   j.begin_array("cleanup");
   for (const std::string& m : cleanup_) j.value(nullptr, m);

@@ -173,11 +173,8 @@ class Session {
   std::vector<std::string> cleanup_;   // what clean-up repaired, one sentence each
   CleanOptions repair_;                // set_repair(): how loads repair the mesh
   CleanReport clean_report_;           // of the loaded mesh
-  // The loaded surface passing through itself (surface_crossings): how many pairs of its
-  // triangles cross (-1: not checked) and the first pair's deepest point, told on load.
-  int self_crossings_ = 0;
-  Vec3 self_crossing_point_ = Vec3::Zero();
-  // The same pairs, given to each solve's report while mesh_ is original_ (not checked again).
+  // The loaded surface passing through itself (surface_crossings of original_): told on load
+  // (MeshInfo's selfCrossings), and given to each solve's report while mesh_ is original_.
   SurfaceCrossings original_crossings_;
   bool mesh_is_original_ = false;
   std::vector<std::string> prepared_notes_;  // what prepare() did and why

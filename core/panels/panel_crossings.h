@@ -48,6 +48,10 @@ std::vector<PanelCrossing> panel_crossings(const std::vector<Vec3>& vertices,
 struct SurfaceCrossings {
   std::vector<PanelCrossing> pairs;
   bool checked = true;
+  // What the report and the page tell: how many pairs cross (-1: not checked), and the first
+  // pair's deepest point (the origin when none).
+  int count() const { return checked ? static_cast<int>(pairs.size()) : -1; }
+  Vec3 first_point() const { return pairs.empty() ? Vec3::Zero() : pairs.front().point; }
 };
 constexpr double kSurfaceTestsPerTriangle = 400.0;
 SurfaceCrossings surface_crossings(const TriMesh& mesh);

@@ -351,8 +351,8 @@ QualityReport measure_quality(const TriMesh& input, const MeshTopology& input_to
   }
   {
     const SurfaceCrossings own = options.input_crossings ? *options.input_crossings : surface_crossings(input);
-    r.input_crossings = own.checked ? static_cast<int>(own.pairs.size()) : -1;
-    if (!own.pairs.empty()) r.input_crossing_point = own.pairs.front().point;
+    r.input_crossings = own.count();
+    r.input_crossing_point = own.first_point();
   }
   // A cluster that could not become a panel leaves its faces uncovered: it counts as an
   // invalid panel too, so the count never hides it (write_invalid_panels lists it).
