@@ -143,6 +143,13 @@ test('panel edits: split, lock through a re-solve, merge; undo/redo give the sam
     assert.match(await statusText(page), /^A new seed starts the panels over: the 3 panel edits apply to the panels now at their triangles, which may not be the ones edited\. .*Done: \d+ panels/);
     assert.match(await page.evaluate(() => document.body.dataset.lockedPanels), /^\d+$/, 'the lock is on a panel of the new seed');
     await screenshot(page, 'edits-new-seed');
+    // Undo and Redo replay their own steps: the seed's notice is not said again.
+    assert.equal(await solveAfter(page, () => page.getByRole('button', { name: 'Undo' }).click()), 69);
+    assert.equal(await objOf(page), final, 'undo the seed: the shared design, byte for byte');
+    assert.doesNotMatch(await statusText(page), /new seed/, 'undo says no seed notice');
+    await solveAfter(page, () => page.getByRole('button', { name: 'Redo' }).click());
+    assert.match(await statusText(page), /Done: \d+ panels/);
+    assert.doesNotMatch(await statusText(page), /new seed/, 'redo says no seed notice');
   });
 });
 
