@@ -24,6 +24,9 @@ export interface MeshInfo extends Status {
   // much in space), and the first pair's deepest point (0s when none).
   selfCrossings: number;
   selfCrossingPoint: [number, number, number];
+  // Every crossing pair's deepest point, flat x y z ... (the first 2,000 pairs), for the
+  // view's markers; empty when none.
+  selfCrossingPoints: number[];
   cleanup: string[]; // one sentence per repair applied ("welded 12 duplicate vertices")
   prepared: string[]; // what Session.prepare did and why ("refined 1,952 triangles to ...")
   repair: MeshRepair;

@@ -24,6 +24,9 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// The most self-crossing pairs the page marks (MeshInfo.selfCrossingPoints).
+constexpr size_t kMarkedSelfCrossings = 2000;
+
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 // Total area of the panel polygons (Newell), in mesh units squared: what the parts list's
@@ -112,6 +115,14 @@ std::string Session::mesh_info_json() const {
   j.begin_array("selfCrossingPoint");
   const Vec3 point = original_crossings_.first_point();
   for (int k = 0; k < 3; ++k) j.value(nullptr, point[k]);
+  j.end_array();
+  // Every pair's point (x y z ...), for the view's markers: the first alone hid where else the
+  // surface crosses itself. At most kMarkedSelfCrossings of them (a mesh folded onto itself
+  // can have many thousands, and one marker per pair says no more there).
+  j.begin_array("selfCrossingPoints");
+  const size_t marked = std::min(original_crossings_.pairs.size(), kMarkedSelfCrossings);
+  for (size_t i = 0; i < marked; ++i)
+    for (int k = 0; k < 3; ++k) j.value(nullptr, original_crossings_.pairs[i].point[k]);
   j.end_array();
   j.begin_array("cleanup");
   for (const std::string& m : cleanup_) j.value(nullptr, m);

@@ -359,13 +359,15 @@ test('the point farthest from the design and the sharpest corner are marked, wit
 
 // A surface that passes through itself, marked as soon as it opens: cow.off's tail goes into
 // its rump. While it is on show without panels (here: the solve of 2,000 panels that follows
-// the open, its preparation alone seconds), an orange point marks the place, with a legend line.
+// the open, its preparation alone seconds), an orange point marks each crossing pair (83, along
+// the line where the tail goes in), with a legend line.
 test('a surface that passes through itself is marked in the view when it opens', async () => {
   await suite.withPage(suite.url, async (page) => {
     await setPanels(page, 2000);
     await page.getByLabel('Open mesh').setInputFiles(join(sharedMeshes, 'cow.off'));
     await page.locator('#mesh-title', { hasText: 'cow.off' }).waitFor();
-    assert.equal((await page.locator('#crossing-legend').textContent()).trim(), 'The surface passes through itself: 83 pairs of its triangles, one marked');
+    assert.equal((await page.locator('#crossing-legend').textContent()).trim(), 'The surface passes through itself: 83 pairs of its triangles, each marked');
+    assert.equal(await page.locator('#viewport').getAttribute('data-self-crossing-markers'), '83');
     assert.ok((await viewPixels(page, ORANGE)) > 10, 'an orange point where it passes through itself');
     await screenshot(page, 'cow-self-crossing-marked');
   });

@@ -82,9 +82,14 @@ test('a surface that passes through itself is told on load, with where', () => {
   assert.equal(cow.selfCrossings, 83);
   assert.equal(cow.selfCrossingPoint.length, 3);
   assert.ok(cow.selfCrossingPoint[0] < -0.3, `the tail is at the back: ${cow.selfCrossingPoint}`);
+  // Every pair's point, for the page's markers: the first is the one above, all at the back.
+  assert.equal(cow.selfCrossingPoints.length, 83 * 3);
+  assert.deepEqual(cow.selfCrossingPoints.slice(0, 3), cow.selfCrossingPoint);
+  for (let i = 0; i < cow.selfCrossingPoints.length; i += 3) assert.ok(cow.selfCrossingPoints[i] < -0.3, `pair ${i / 3} is at the back`);
   const bunny = json(s.loadMesh('bunny.off', readFileSync(path.join(meshes, 'bunny.off'))));
   assert.equal(bunny.selfCrossings, 0);
   assert.deepEqual(bunny.selfCrossingPoint, [0, 0, 0]);
+  assert.deepEqual(bunny.selfCrossingPoints, []);
   s.delete();
 });
 

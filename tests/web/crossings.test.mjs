@@ -2,7 +2,7 @@
 // pass through each other, named as the parts list names them, with a warning.
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
-import { crossingNote, crossingPairs, crossingPoints, crossingRow, selfCrossingNote, selfCrossingPoint } from '../../build/web-tests/crossings.js';
+import { crossingNote, crossingPairs, crossingPoints, crossingRow, selfCrossingLegend, selfCrossingNote, selfCrossingPoint, selfCrossingPoints } from '../../build/web-tests/crossings.js';
 
 test('pairs are named P1 ... and warned about with the deepest share', () => {
   const report = {
@@ -67,4 +67,22 @@ test('the point marked where the surface passes through itself, only when it doe
   assert.equal(selfCrossingPoint({ selfCrossings: -1, selfCrossingPoint: [0, 0, 0] }), null, 'not checked');
   assert.equal(selfCrossingPoint({ selfCrossings: 2, selfCrossingPoint: [1, Number.NaN, 3] }), null);
   assert.equal(selfCrossingPoint({}), null);
+});
+
+test('every crossing pair of the surface is marked, or the first alone from a worker that gives only that', () => {
+  const two = { selfCrossings: 2, selfCrossingPoint: [1, 2, 3], selfCrossingPoints: [1, 2, 3, 4, 5, 6] };
+  assert.deepEqual(selfCrossingPoints(two), [1, 2, 3, 4, 5, 6]);
+  assert.equal(selfCrossingLegend(two), 'The surface passes through itself: 2 pairs of its triangles, each marked');
+  const one = { selfCrossings: 1, selfCrossingPoint: [1, 2, 3], selfCrossingPoints: [1, 2, 3] };
+  assert.equal(selfCrossingLegend(one), 'The surface passes through itself: 1 pair of its triangles, marked');
+  const older = { selfCrossings: 83, selfCrossingPoint: [1, 2, 3] };
+  assert.deepEqual(selfCrossingPoints(older), [1, 2, 3]);
+  assert.equal(selfCrossingLegend(older), 'The surface passes through itself: 83 pairs of its triangles, one marked');
+  const capped = { selfCrossings: 5000, selfCrossingPoint: [0, 0, 1], selfCrossingPoints: Array.from({ length: 6000 }, (_, i) => i % 3) };
+  assert.equal(selfCrossingLegend(capped), 'The surface passes through itself: 5,000 pairs of its triangles, the first 2,000 marked');
+  assert.deepEqual(selfCrossingPoints({ ...two, selfCrossingPoints: [1, 2, Number.NaN, 4, 5, 6] }), [1, 2, 3], 'a broken list: the first point');
+  assert.deepEqual(selfCrossingPoints({ ...two, selfCrossingPoints: [1, 2, 3, 4] }), [1, 2, 3], 'not whole points: the first point');
+  assert.deepEqual(selfCrossingPoints({ selfCrossings: 0, selfCrossingPoint: [0, 0, 0], selfCrossingPoints: [] }), []);
+  assert.equal(selfCrossingLegend({ selfCrossings: 0, selfCrossingPoint: [0, 0, 0], selfCrossingPoints: [] }), null);
+  assert.deepEqual(selfCrossingPoints({ selfCrossings: -1, selfCrossingPoint: [0, 0, 0], selfCrossingPoints: [] }), [], 'not checked');
 });

@@ -89,6 +89,17 @@ export function selfCrossingPoint(info: MeshInfo): [number, number, number] | nu
   return [p[0], p[1], p[2]];
 }
 
+// Where the loaded surface passes through itself, one point per crossing pair (mesh
+// coordinates, flat x y z ...), for the view's orange markers: the core's list, or its first
+// point from a worker that gives only that; empty when it does not cross.
+export function selfCrossingPoints(info: MeshInfo): number[] {
+  const first = selfCrossingPoint(info);
+  if (first === null) return [];
+  const all = info.selfCrossingPoints;
+  if (!Array.isArray(all) || all.length < 3 || all.length % 3 !== 0 || !all.every(Number.isFinite)) return first;
+  return all;
+}
+
 // The surface passing through itself, told on load: panels there can cross too, whatever
 // their count, so the model is what to mend ('' when it does not, or the core did not say).
 export function selfCrossingNote(info: MeshInfo): string {
@@ -102,5 +113,14 @@ export function selfCrossingNote(info: MeshInfo): string {
 
 // #crossing-legend for a surface on show without panels: its own crossing, marked in the view.
 export function renderSelfCrossing(info: MeshInfo): void {
-  showLegendLine('crossing', selfCrossingPoint(info) ? `The surface passes through itself: ${pairsOf(info.selfCrossings)} of its triangles, one marked` : null);
+  showLegendLine('crossing', selfCrossingLegend(info));
+}
+
+// The legend line beside the self-crossing markers, or null without any.
+export function selfCrossingLegend(info: MeshInfo): string | null {
+  const marked = selfCrossingPoints(info).length / 3;
+  if (marked === 0) return null;
+  const which =
+    marked >= info.selfCrossings ? (marked === 1 ? 'marked' : 'each marked') : marked === 1 ? 'one marked' : `the first ${marked.toLocaleString('en')} marked`;
+  return `The surface passes through itself: ${pairsOf(info.selfCrossings)} of its triangles, ${which}`;
 }

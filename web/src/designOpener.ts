@@ -8,7 +8,7 @@ import { fieldKey, isUniform } from './brush/densityField.ts';
 import type { DesignEditor } from './designEditor.ts';
 import type { DesignMachine } from './designMachine.ts';
 import { showMeshInfo, type ExamplePicker } from './examplePicker.ts';
-import { renderSelfCrossing, selfCrossingPoint } from './crossings.ts';
+import { renderSelfCrossing, selfCrossingPoints } from './crossings.ts';
 import { describeDesign, findExample } from './examples.ts';
 import { checkEditsFit, countAfterEdits } from './edits/panelEdits.ts';
 import type { FabricationPanel } from './fabricationPanel.ts';
@@ -331,7 +331,7 @@ export class DesignOpener {
     showMeshInfo(loaded.mesh.label, loaded.mesh.info, loaded.mesh.read);
     rhinoLoaded(loaded.mesh.fileName, loaded.mesh.info);
     renderQuality(this.host.statsBox, null);
-    this.host.viewer.setSelfCrossing(selfCrossingPoint(loaded.mesh.info));
+    this.host.viewer.setSelfCrossing(selfCrossingPoints(loaded.mesh.info));
     renderSelfCrossing(loaded.mesh.info);
     this.host.fabrication.panelsChanged(false);
     if (loaded.newest && opening.fabrication) this.host.fabrication.write(opening.fabrication);
@@ -365,7 +365,7 @@ export class DesignOpener {
     this.host.preparation.show(opening.design);
     this.host.repair.show(opening.design);
     renderQuality(this.host.statsBox, null);
-    this.host.viewer.setSelfCrossing(selfCrossingPoint(mesh.info));
+    this.host.viewer.setSelfCrossing(selfCrossingPoints(mesh.info));
     renderSelfCrossing(mesh.info);
     this.host.fabrication.panelsChanged(false);
     let chain = [...opening.history, opening.params];

@@ -232,12 +232,13 @@ export class Viewer {
     this.liveClusters = null;
   }
 
-  // The point of the loaded surface where it passes through itself (mesh coordinates), or null;
-  // after setSurface, whose centre it is shifted by.
-  setSelfCrossing(point: [number, number, number] | null): void {
+  // The points of the loaded surface where it passes through itself (mesh coordinates, flat
+  // x y z ...; empty for none); after setSurface, whose centre they are shifted by.
+  setSelfCrossing(points: number[]): void {
     this.selfCrossing.geometry.dispose();
-    this.selfCrossing.geometry = shiftedPoints(point ?? [], this.origin);
-    this.selfCrossingMarked = point !== null;
+    this.selfCrossing.geometry = shiftedPoints(points, this.origin);
+    this.selfCrossingMarked = points.length >= 3;
+    this.container.dataset.selfCrossingMarkers = String(Math.floor(points.length / 3));
     this.applyVisibility();
   }
 
