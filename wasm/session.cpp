@@ -120,7 +120,9 @@ std::string Session::mesh_info_json() const {
   // surface crosses itself. At most kMarkedSelfCrossings of them (a mesh folded onto itself
   // can have many thousands, and one marker per pair says no more there).
   j.begin_array("selfCrossingPoints");
-  const size_t marked = std::min(original_crossings_.pairs.size(), kMarkedSelfCrossings);
+  // Not checked (count -1): a partial list, not sent.
+  const size_t marked =
+      original_crossings_.checked ? std::min(original_crossings_.pairs.size(), kMarkedSelfCrossings) : size_t{0};
   for (size_t i = 0; i < marked; ++i)
     for (int k = 0; k < 3; ++k) j.value(nullptr, original_crossings_.pairs[i].point[k]);
   j.end_array();

@@ -140,6 +140,7 @@ test('panel edits: split, lock through a re-solve, merge; undo/redo give the sam
     await page.getByText('Metric and solver').click();
     await page.getByLabel('Seed', { exact: true }).fill('2');
     await solveAfter(page, () => remesh(page));
+    const seeded = await objOf(page);
     assert.match(await statusText(page), /^A new seed starts the panels over: the 3 panel edits apply to the panels now at their triangles, which may not be the ones edited\. .*Done: \d+ panels/);
     assert.match(await page.evaluate(() => document.body.dataset.lockedPanels), /^\d+$/, 'the lock is on a panel of the new seed');
     await screenshot(page, 'edits-new-seed');
@@ -148,6 +149,7 @@ test('panel edits: split, lock through a re-solve, merge; undo/redo give the sam
     assert.equal(await objOf(page), final, 'undo the seed: the shared design, byte for byte');
     assert.doesNotMatch(await statusText(page), /new seed/, 'undo says no seed notice');
     await solveAfter(page, () => page.getByRole('button', { name: 'Redo' }).click());
+    assert.equal(await objOf(page), seeded, 'redo the seed: its OBJ, byte for byte');
     assert.match(await statusText(page), /Done: \d+ panels/);
     assert.doesNotMatch(await statusText(page), /new seed/, 'redo says no seed notice');
   });

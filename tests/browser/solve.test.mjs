@@ -359,8 +359,8 @@ test('the point farthest from the design and the sharpest corner are marked, wit
 
 // A surface that passes through itself, marked as soon as it opens: cow.off's tail goes into
 // its rump. While it is on show without panels (here: the solve of 2,000 panels that follows
-// the open, its preparation alone seconds), an orange point marks each crossing pair (83, along
-// the line where the tail goes in), with a legend line.
+// the open, its preparation alone seconds), an orange point marks each crossing pair (83, in a
+// few patches at its back, where the tail goes in and out), with a legend line.
 test('a surface that passes through itself is marked in the view when it opens', async () => {
   await suite.withPage(suite.url, async (page) => {
     await setPanels(page, 2000);

@@ -84,5 +84,9 @@ test('every crossing pair of the surface is marked, or the first alone from a wo
   assert.deepEqual(selfCrossingPoints({ ...two, selfCrossingPoints: [1, 2, 3, 4] }), [1, 2, 3], 'not whole points: the first point');
   assert.deepEqual(selfCrossingPoints({ selfCrossings: 0, selfCrossingPoint: [0, 0, 0], selfCrossingPoints: [] }), []);
   assert.equal(selfCrossingLegend({ selfCrossings: 0, selfCrossingPoint: [0, 0, 0], selfCrossingPoints: [] }), null);
-  assert.deepEqual(selfCrossingPoints({ selfCrossings: -1, selfCrossingPoint: [0, 0, 0], selfCrossingPoints: [] }), [], 'not checked');
+  assert.deepEqual(selfCrossingPoints({ selfCrossings: -1, selfCrossingPoint: [1, 2, 3], selfCrossingPoints: [1, 2, 3] }), [], 'not checked: no marker');
+  assert.equal(selfCrossingLegend({ selfCrossings: -1, selfCrossingPoint: [1, 2, 3], selfCrossingPoints: [1, 2, 3] }), null);
+  assert.deepEqual(selfCrossingPoints({ ...two, selfCrossings: 1 }), [1, 2, 3], 'more points than pairs: the first point');
+  assert.equal(selfCrossingLegend({ ...two, selfCrossings: Number.NaN }), null);
+  assert.equal(selfCrossingLegend({ ...two, selfCrossings: 1.5 }), null);
 });

@@ -85,19 +85,20 @@ function pairsOf(n: number): string {
 export function selfCrossingPoint(info: MeshInfo): [number, number, number] | null {
   const n = info.selfCrossings;
   const p = info.selfCrossingPoint;
-  if (typeof n !== 'number' || n <= 0 || !Array.isArray(p) || p.length !== 3 || !p.every(Number.isFinite)) return null;
+  if (typeof n !== 'number' || !Number.isInteger(n) || n <= 0 || !Array.isArray(p) || p.length !== 3 || !p.every(Number.isFinite)) return null;
   return [p[0], p[1], p[2]];
 }
 
 // Where the loaded surface passes through itself, one point per crossing pair (mesh
 // coordinates, flat x y z ...), for the view's orange markers: the core's list, or its first
-// point from a worker that gives only that; empty when it does not cross.
+// point from a worker that gives only that (or a list that is not one point per pair at most);
+// empty when it does not cross or was not checked.
 export function selfCrossingPoints(info: MeshInfo): number[] {
   const first = selfCrossingPoint(info);
   if (first === null) return [];
   const all = info.selfCrossingPoints;
-  if (!Array.isArray(all) || all.length < 3 || all.length % 3 !== 0 || !all.every(Number.isFinite)) return first;
-  return all;
+  const whole = Array.isArray(all) && all.length >= 3 && all.length % 3 === 0 && all.length / 3 <= info.selfCrossings;
+  return whole && all.every(Number.isFinite) ? all : first;
 }
 
 // The surface passing through itself, told on load: panels there can cross too, whatever

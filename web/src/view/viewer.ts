@@ -40,8 +40,8 @@ export class Viewer {
   private readonly panels = new PanelLayer();
   private readonly problems = new ProblemLayer();
   private readonly thick = new ThickLayer();
-  // Where the loaded surface passes through itself (an orange point, as where panels cross),
-  // while the surface shows before its first panels.
+  // Where the loaded surface passes through itself (an orange point per crossing pair, as where
+  // panels cross), while the surface shows before its first panels.
   private readonly selfCrossing = new THREE.Points(new THREE.BufferGeometry(), new THREE.PointsMaterial({ color: ORANGE, size: 12, sizeAttenuation: false, depthTest: false }));
   private selfCrossingMarked = false;
   private readonly origin = new THREE.Vector3();
@@ -238,7 +238,7 @@ export class Viewer {
     this.selfCrossing.geometry.dispose();
     this.selfCrossing.geometry = shiftedPoints(points, this.origin);
     this.selfCrossingMarked = points.length >= 3;
-    this.container.dataset.selfCrossingMarkers = String(Math.floor(points.length / 3));
+    this.container.dataset.selfCrossingMarkers = String(this.selfCrossing.geometry.getAttribute('position').count);
     this.applyVisibility();
   }
 
