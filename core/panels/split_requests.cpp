@@ -97,6 +97,12 @@ std::vector<int> tiny_invalid_clusters(const PanelAttempt& attempt, int share) {
   return out;
 }
 
+int stall_splits(int num_clusters) {
+  constexpr int kPanelsPerSplit = 100;
+  constexpr int kMostSplits = 3;
+  return std::clamp(num_clusters / kPanelsPerSplit, 1, kMostSplits);
+}
+
 std::vector<std::pair<int, int>> split_requests(const TriMesh& mesh, const MeshTopology& topology,
                                                 const PanelAttempt& attempt, int max_geometric,
                                                 const std::vector<char>& keep) {
