@@ -67,13 +67,12 @@ LoadedInput load_input(const std::string& path, const CleanOptions& options) {
                  "too much in space (long thin triangles around one point?)\n",
                  path.c_str());
   } else if (!own.pairs.empty()) {
-    const Vec3& p = own.pairs.front().point;
-    std::fprintf(stderr,
-                 "flatfacet: warning: %s: the surface passes through itself (%zu %s of its triangles cross, one near "
-                 "(%s, %s, %s)): panels made from it can pass through each other there, whatever their count; mend the "
-                 "model there\n",
-                 path.c_str(), own.pairs.size(), own.pairs.size() == 1 ? "pair" : "pairs", short_number(p.x()).c_str(),
-                 short_number(p.y()).c_str(), short_number(p.z()).c_str());
+    std::fprintf(
+        stderr,
+        "flatfacet: warning: %s: the surface passes through itself (%zu %s of its triangles cross, %s): panels "
+        "made from it can pass through each other there, whatever their count; mend the model there\n",
+        path.c_str(), own.pairs.size(), own.pairs.size() == 1 ? "pair" : "pairs",
+        crossing_where(own.places, own.first_point()).c_str());
   }
   return in;
 }

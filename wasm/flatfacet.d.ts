@@ -24,6 +24,9 @@ export interface MeshInfo extends Status {
   // much in space), and the first pair's deepest point (0s when none).
   selfCrossings: number;
   selfCrossingPoint: [number, number, number];
+  // The separate places where it crosses (pairs joined through shared triangles and corners;
+  // 0 when none, or from an older worker that did not count them).
+  selfCrossingPlaces?: number;
   // Every crossing pair's deepest point, flat x y z ... (the first 2,000 pairs), for the
   // view's markers; empty when none.
   selfCrossingPoints: number[];

@@ -112,6 +112,7 @@ std::string Session::mesh_info_json() const {
   j.value("genus", (2 * topology_.num_components - euler - loops) / 2);
   j.value("bboxDiagonal", bbox_diagonal(mesh_));
   j.value("selfCrossings", original_crossings_.count());
+  j.value("selfCrossingPlaces", original_crossings_.places);
   j.begin_array("selfCrossingPoint");
   const Vec3 point = original_crossings_.first_point();
   for (int k = 0; k < 3; ++k) j.value(nullptr, point[k]);

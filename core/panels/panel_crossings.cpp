@@ -7,6 +7,8 @@
 #include <limits>
 #include <utility>
 
+#include "core/util/short_number.h"
+
 namespace ff {
 
 namespace {
@@ -231,6 +233,56 @@ std::vector<PanelCrossing> panel_crossings(const std::vector<Vec3>& vertices,
   return find_crossings(vertices, panels, normals, offsets, std::numeric_limits<double>::infinity(), complete);
 }
 
+namespace {
+
+// Connected groups of crossing pairs: a union-find over the triangles involved, joined by each
+// pair and by shared corners.
+int crossing_places(const TriMesh& mesh, const std::vector<PanelCrossing>& pairs) {
+  std::vector<int> parent(static_cast<size_t>(mesh.num_faces()), -1);  // -1: not involved
+  const auto root = [&](int f) {
+    while (parent[static_cast<size_t>(f)] != f) {
+      const int up = parent[static_cast<size_t>(parent[static_cast<size_t>(f)])];
+      parent[static_cast<size_t>(f)] = up;  // path halving
+      f = up;
+    }
+    return f;
+  };
+  const auto join = [&](int a, int b) {
+    a = root(a), b = root(b);
+    if (a != b) parent[static_cast<size_t>(std::max(a, b))] = std::min(a, b);
+  };
+  std::vector<int> involved;
+  for (const PanelCrossing& c : pairs) {
+    for (const int f : {c.a, c.b}) {
+      if (parent[static_cast<size_t>(f)] < 0) parent[static_cast<size_t>(f)] = f, involved.push_back(f);
+    }
+    join(c.a, c.b);
+  }
+  std::vector<int> at_vertex(mesh.positions.size(), -1);
+  for (const int f : involved) {
+    for (const int v : mesh.triangles[static_cast<size_t>(f)]) {
+      int& other = at_vertex[static_cast<size_t>(v)];
+      if (other < 0)
+        other = f;
+      else
+        join(other, f);
+    }
+  }
+  int places = 0;
+  for (const int f : involved) places += root(f) == f ? 1 : 0;
+  return places;
+}
+
+}  // namespace
+
+std::string crossing_where(int places, const Vec3& point) {
+  const std::string near =
+      "near (" + short_number(point.x()) + ", " + short_number(point.y()) + ", " + short_number(point.z()) + ")";
+  if (places == 1) return "in one place, " + near;
+  if (places > 1) return "in " + std::to_string(places) + " places, one " + near;
+  return near;
+}
+
 SurfaceCrossings surface_crossings(const TriMesh& mesh) {
   std::vector<std::vector<int>> triangles;
   std::vector<Vec3> normals;
@@ -245,6 +297,7 @@ SurfaceCrossings surface_crossings(const TriMesh& mesh) {
   SurfaceCrossings out;
   const double max_tests = kSurfaceTestsPerTriangle * mesh.num_faces() + 1e7;
   out.pairs = find_crossings(mesh.positions, triangles, normals, offsets, max_tests, out.checked);
+  out.places = crossing_places(mesh, out.pairs);
   return out;
 }
 

@@ -11,6 +11,7 @@
 // inside each panel (an even-odd scan of its edges), and where stretches of both overlap,
 // how deep the overlap reaches inside both (the distance to the nearer outline). Panels in
 // one plane (parallel) are not compared.
+#include <string>
 #include <vector>
 
 #include "core/mesh/tri_mesh.h"
@@ -48,6 +49,10 @@ std::vector<PanelCrossing> panel_crossings(const std::vector<Vec3>& vertices,
 struct SurfaceCrossings {
   std::vector<PanelCrossing> pairs;
   bool checked = true;
+  // The separate places where it crosses: pairs joined when they share a triangle or their
+  // triangles share a corner (the triangles along one crossing curve do). The cow's 83 pairs
+  // lie in a few places along its back, which a count of pairs does not say.
+  int places = 0;
   // What the report and the page tell: how many pairs cross (-1: not checked), and the first
   // pair's deepest point (the origin when none).
   int count() const { return checked ? static_cast<int>(pairs.size()) : -1; }
@@ -55,5 +60,10 @@ struct SurfaceCrossings {
 };
 constexpr double kSurfaceTestsPerTriangle = 400.0;
 SurfaceCrossings surface_crossings(const TriMesh& mesh);
+
+// Where a surface crosses itself, for a message: "in one place, near (x, y, z)", "in 3 places,
+// one near (x, y, z)" (`point`: one of its crossings), or "near (x, y, z)" when the places were
+// not counted (0).
+std::string crossing_where(int places, const Vec3& point);
 
 }  // namespace ff

@@ -122,6 +122,7 @@ struct QualityReport {
   // input is the mesh the panels were made from: after a refinement, more pairs than the file.
   int input_crossings = 0;
   Vec3 input_crossing_point = Vec3::Zero();
+  int input_crossing_places = 0;  // SurfaceCrossings::places: the separate places it crosses
 };
 
 // input_topology = build_topology(input). D = sqrt(total_area(input) / panels). Throws

@@ -100,6 +100,7 @@ void write_quality_fields(JsonWriter& j, const QualityReport& q) {
   j.value("max_crossing_depth", q.max_crossing_depth);
   j.value("input_crossings", q.input_crossings);
   write_point(j, "input_crossing_point", q.input_crossing_point);
+  j.value("input_crossing_places", q.input_crossing_places);
 }
 
 std::vector<InvalidPanel> list_invalid_panels(const PanelMesh& pm, const QualityReport& q) {
@@ -176,9 +177,8 @@ std::string crossing_phrase(const QualityReport& q) {
                     "built as drawn; ";
   if (q.input_crossings > 0) {
     const Vec3& p = q.input_crossing_point;
-    return out + "the surface itself passes through itself (one place near (" + short_number(p.x()) + ", " +
-           short_number(p.y()) + ", " + short_number(p.z()) +
-           ")), and panels made from it follow it: mend the model there";
+    return out + "the surface itself passes through itself (" + crossing_where(q.input_crossing_places, p) +
+           "), and panels made from it follow it: mend the model there";
   }
   return out + "more panels there, or another --seed or --panels count, may avoid it";
 }

@@ -359,8 +359,8 @@ test('the point farthest from the design and the sharpest corner are marked, wit
 
 // A surface that passes through itself, marked as soon as it opens: cow.off's tail goes into
 // its rump. While it is on show without panels (here: the solve of 2,000 panels that follows
-// the open, its preparation alone seconds), an orange point marks each crossing pair (83, in a
-// few patches at its back, where the tail goes in and out), with a legend line.
+// the open, its preparation alone seconds), an orange point marks each crossing pair (83, in 4
+// places at its back, where the tail goes in and out), with a legend line that counts both.
 test('a surface that passes through itself is marked in the view when it opens', async () => {
   await suite.withPage(suite.url, async (page) => {
     // The example's own solve first: a count typed while it runs would go to it (a solve of
@@ -371,7 +371,7 @@ test('a surface that passes through itself is marked in the view when it opens',
     // Read and prepared for 2,000 panels (115,352 triangles) before it shows: as the other
     // opens of the cow, up to 2 minutes on a loaded machine.
     await page.locator('#mesh-title', { hasText: 'cow.off' }).waitFor({ timeout: 120_000 });
-    assert.equal((await page.locator('#crossing-legend').textContent()).trim(), 'The surface passes through itself: 83 pairs of its triangles, each marked');
+    assert.equal((await page.locator('#crossing-legend').textContent()).trim(), 'The surface passes through itself: 83 pairs of its triangles in 4 places, each marked');
     assert.equal(await page.locator('#viewport').getAttribute('data-self-crossing-markers'), '83');
     assert.ok((await viewPixels(page, ORANGE)) > 10, 'an orange point where it passes through itself');
     await screenshot(page, 'cow-self-crossing-marked');
@@ -396,7 +396,7 @@ test('a collapsed panel is named, marked and selected from its legend, then merg
     assert.equal(await solveAfter(page, () => page.getByLabel('Open mesh').setInputFiles(join(sharedMeshes, 'cow.off')), 120_000), 61);
     // Said on load, beside what the load repaired: the model passes through itself.
     assert.equal(await selfCrossing.isVisible(), true);
-    assert.match(await selfCrossing.textContent(), /^The surface passes through itself: 83 pairs of its triangles cross, one near \(-0\.4\d*, 0\.2\d*, -0\.00\d*\)\. Panels made from it can pass through each other there, whatever their count: mend the model there before building\.$/);
+    assert.match(await selfCrossing.textContent(), /^The surface passes through itself: 83 pairs of its triangles cross in 4 places, one near \(-0\.4\d*, 0\.2\d*, -0\.00\d*\)\. Panels made from it can pass through each other there, whatever their count: mend the model there before building\.$/);
     await selfCrossing.scrollIntoViewIfNeeded();
     await screenshot(page, 'cow-self-crossing-on-load');
     const row = page.locator('#stats dd.warn', { hasText: '% (P' });

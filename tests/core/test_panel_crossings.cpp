@@ -175,16 +175,70 @@ TEST(PanelCrossings, AWallAcrossOneAxisIsCheckedPairByPair) {
   }
 }
 
-// The shared meshes: the cow's tail goes into its rump (83 pairs of its triangles cross), the
-// camel's head has a few, the bunny none.
+// The shared meshes: the cow's tail goes into its rump (83 pairs of its triangles cross, in 4
+// places), the camel's head has a few (5 pairs in one place), the bunny none.
 TEST(SurfaceCrossings, TheCowPassesThroughItselfTheBunnyDoesNot) {
-  const std::vector<PanelCrossing> cow = surface_crossings(test::load_clean("cow.off")).pairs;
-  EXPECT_EQ(cow.size(), 83u);
-  for (const PanelCrossing& c : cow) EXPECT_LT(c.point.x(), -0.3);  // the tail, at the back
-  EXPECT_EQ(surface_crossings(test::load_clean("camelhead.off")).pairs.size(), 5u);
+  const SurfaceCrossings cow = surface_crossings(test::load_clean("cow.off"));
+  EXPECT_EQ(cow.pairs.size(), 83u);
+  EXPECT_EQ(cow.places, 4);
+  for (const PanelCrossing& c : cow.pairs) EXPECT_LT(c.point.x(), -0.3);  // the tail, at the back
+  const SurfaceCrossings camel = surface_crossings(test::load_clean("camelhead.off"));
+  EXPECT_EQ(camel.pairs.size(), 5u);
+  EXPECT_EQ(camel.places, 1);
   const SurfaceCrossings bunny = surface_crossings(test::load_clean("bunny.off"));
   EXPECT_TRUE(bunny.checked);
   EXPECT_TRUE(bunny.pairs.empty());
+  EXPECT_EQ(bunny.places, 0);
+}
+
+// Where it crosses, counted as places: a flat grid with small triangles pushed through it at
+// separate spots is one place per spot, however many grid triangles each one cuts; two
+// triangles pushed through at one spot side by side (sharing a corner) are one place too.
+TEST(SurfaceCrossings, PlacesCountSeparateSpotsNotPairs) {
+  const auto grid = [] {
+    TriMesh m;
+    const int n = 20;  // 20 x 20 cells of 1 x 1 in z = 0
+    for (int j = 0; j <= n; ++j)
+      for (int i = 0; i <= n; ++i) m.positions.emplace_back(i, j, 0.0);
+    for (int j = 0; j < n; ++j) {
+      for (int i = 0; i < n; ++i) {
+        const int v = j * (n + 1) + i;
+        m.triangles.push_back({v, v + 1, v + n + 2});
+        m.triangles.push_back({v, v + n + 2, v + n + 1});
+      }
+    }
+    return m;
+  };
+  // A vertical triangle through the grid at (x, y), 3 cells wide along x.
+  const auto poke = [](TriMesh& m, double x, double y) {
+    const int v = static_cast<int>(m.positions.size());
+    m.positions.emplace_back(x - 1.5, y, -1.0);
+    m.positions.emplace_back(x + 1.5, y, -1.0);
+    m.positions.emplace_back(x, y, 1.0);
+    m.triangles.push_back({v, v + 1, v + 2});
+  };
+  TriMesh one = grid();
+  poke(one, 5.3, 5.6);
+  const SurfaceCrossings at_one = surface_crossings(one);
+  EXPECT_GT(at_one.pairs.size(), 2u);
+  EXPECT_EQ(at_one.places, 1);
+
+  TriMesh three = grid();
+  poke(three, 5.3, 5.6), poke(three, 14.3, 5.6), poke(three, 10.3, 15.6);
+  const SurfaceCrossings at_three = surface_crossings(three);
+  EXPECT_EQ(at_three.places, 3) << at_three.pairs.size() << " pairs";
+
+  // A second triangle beside the first, sharing its top corner: one place.
+  TriMesh beside = grid();
+  poke(beside, 5.3, 5.6);
+  const int top = static_cast<int>(beside.positions.size()) - 1;
+  const int v = static_cast<int>(beside.positions.size());
+  beside.positions.emplace_back(5.3, 7.6, -1.0);
+  beside.positions.emplace_back(5.3, 7.6 + 0.01, -1.0);
+  beside.triangles.push_back({v, v + 1, top});
+  EXPECT_EQ(surface_crossings(beside).places, 1);
+
+  EXPECT_EQ(surface_crossings(grid()).places, 0);
 }
 
 // Tall thin strips side by side (a wall of 40,000 triangles 10 high and 0.005 wide, and a
@@ -267,12 +321,22 @@ TEST(SurfaceCrossings, TheReportTakesTheCrossingsItIsGiven) {
   const QualityReport taken = measure_quality(remesher.mesh(), remesher.topology(), remesher.panels(), given);
   EXPECT_EQ(taken.input_crossings, own.input_crossings);
   EXPECT_EQ(taken.input_crossing_point, own.input_crossing_point);
+  EXPECT_EQ(taken.input_crossing_places, 1);
+  EXPECT_EQ(taken.input_crossing_places, own.input_crossing_places);
   // Taken, not checked again: an unchecked surface is said as such (-1), one pair as one.
   given.input_crossings->checked = false;
   EXPECT_EQ(measure_quality(remesher.mesh(), remesher.topology(), remesher.panels(), given).input_crossings, -1);
   given.input_crossings->checked = true;
   given.input_crossings->pairs.resize(1);
   EXPECT_EQ(measure_quality(remesher.mesh(), remesher.topology(), remesher.panels(), given).input_crossings, 1);
+}
+
+// What the CLI's warning and the report's Crossing hint say of where.
+TEST(SurfaceCrossings, WhereIsSaidWithItsPlaces) {
+  const Vec3 p(-0.42, 0.219, -0.00695);
+  EXPECT_EQ(crossing_where(4, p), "in 4 places, one near (-0.42, 0.219, -0.00695)");
+  EXPECT_EQ(crossing_where(1, p), "in one place, near (-0.42, 0.219, -0.00695)");
+  EXPECT_EQ(crossing_where(0, p), "near (-0.42, 0.219, -0.00695)");
 }
 
 }  // namespace

@@ -73,6 +73,20 @@ test('bad repair options are refused and the next load is as before', () => {
   s.delete();
 });
 
+// Points (flat x y z) grouped by single linkage at `reach`: how many groups.
+function groupsOf(flat, reach) {
+  const n = flat.length / 3;
+  const group = Array.from({ length: n }, (_, i) => i);
+  const root = (i) => (group[i] === i ? i : (group[i] = root(group[i])));
+  for (let i = 0; i < n; i++) {
+    for (let j = i + 1; j < n; j++) {
+      const d = Math.hypot(flat[3 * i] - flat[3 * j], flat[3 * i + 1] - flat[3 * j + 1], flat[3 * i + 2] - flat[3 * j + 2]);
+      if (d < reach) group[root(i)] = root(j);
+    }
+  }
+  return new Set(group.map((_, i) => root(i))).size;
+}
+
 // Not repaired, but told on load: the cow's tail goes into its rump (83 pairs of its triangles
 // cross there), and panels made from it would pass through each other at any count.
 test('a surface that passes through itself is told on load, with where', () => {
@@ -86,10 +100,16 @@ test('a surface that passes through itself is told on load, with where', () => {
   assert.equal(cow.selfCrossingPoints.length, 83 * 3);
   assert.deepEqual(cow.selfCrossingPoints.slice(0, 3), cow.selfCrossingPoint);
   for (let i = 0; i < cow.selfCrossingPoints.length; i += 3) assert.ok(cow.selfCrossingPoints[i] < -0.3, `pair ${i / 3} is at the back`);
+  // In 4 places (pairs joined through shared triangles and corners). Seen from the points
+  // alone: grouped by distance (any two closer than 2% of the cow's size joined), they make the
+  // same number of groups.
+  assert.equal(cow.selfCrossingPlaces, 4);
+  assert.equal(groupsOf(cow.selfCrossingPoints, 0.02 * cow.bboxDiagonal), 4);
   const bunny = json(s.loadMesh('bunny.off', readFileSync(path.join(meshes, 'bunny.off'))));
   assert.equal(bunny.selfCrossings, 0);
   assert.deepEqual(bunny.selfCrossingPoint, [0, 0, 0]);
   assert.deepEqual(bunny.selfCrossingPoints, []);
+  assert.equal(bunny.selfCrossingPlaces, 0);
   s.delete();
 });
 
@@ -105,6 +125,7 @@ test("the report's input crossings are the loaded mesh's, or the prepared mesh's
   const loaded = json(s.reportJson());
   assert.equal(loaded.input_crossings, cow.selfCrossings);
   assert.deepEqual(loaded.input_crossing_point, cow.selfCrossingPoint);
+  assert.equal(loaded.input_crossing_places, cow.selfCrossingPlaces);
   const subdivided = json(s.prepare(30, 1, 0, 0, 0));
   assert.equal(subdivided.ok, true, subdivided.message);
   assert.equal(json(s.setParams(JSON.stringify({ panels: 30 }))).ok, true);

@@ -2,7 +2,7 @@
 // pass through each other, named as the parts list names them, with a warning.
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
-import { crossingNote, crossingPairs, crossingPoints, crossingRow, selfCrossingLegend, selfCrossingNote, selfCrossingPoint, selfCrossingPoints } from '../../build/web-tests/crossings.js';
+import { crossingNote, crossingPairs, crossingPoints, crossingRow, selfCrossingLegend, selfCrossingNote, selfCrossingPlaces, selfCrossingPoint, selfCrossingPoints } from '../../build/web-tests/crossings.js';
 
 test('pairs are named P1 ... and warned about with the deepest share', () => {
   const report = {
@@ -59,6 +59,25 @@ test('a surface passing through itself is told on load, with where, and nothing 
   assert.equal(selfCrossingNote({ selfCrossings: 0, selfCrossingPoint: [0, 0, 0] }), '');
   assert.match(selfCrossingNote({ selfCrossings: -1, selfCrossingPoint: [0, 0, 0] }), /^Not checked whether the surface passes through itself: its triangles overlap too much in space/);
   assert.equal(selfCrossingNote({}), '', 'an older worker that does not say');
+  // With the places it crosses in (the core counts them): where the pairs lie, not only how many.
+  const at = [-0.41975, 0.21912, -0.0069512];
+  assert.equal(
+    selfCrossingNote({ selfCrossings: 83, selfCrossingPlaces: 4, selfCrossingPoint: at }),
+    'The surface passes through itself: 83 pairs of its triangles cross in 4 places, one near (-0.42, 0.219, -0.00695). Panels made from it can pass through each other there, whatever their count: mend the model there before building.',
+  );
+  assert.match(selfCrossingNote({ selfCrossings: 5, selfCrossingPlaces: 1, selfCrossingPoint: at }), /: 5 pairs of its triangles cross in one place, near \(-0\.42, 0\.219, -0\.00695\)\. Panels/);
+  assert.match(selfCrossingNote({ selfCrossings: 5, selfCrossingPlaces: 2, selfCrossingPoint: [1, Number.NaN, 3] }), /: 5 pairs of its triangles cross in 2 places\. Panels/);
+  for (const places of [6, 1.5, Number.NaN, -1, '4']) {
+    assert.match(selfCrossingNote({ selfCrossings: 5, selfCrossingPlaces: places, selfCrossingPoint: at }), /: 5 pairs of its triangles cross, one near/, `places ${places}: not said`);
+  }
+});
+
+test('the places the surface crosses itself in, only as a whole count up to its pairs', () => {
+  assert.equal(selfCrossingPlaces({ selfCrossings: 83, selfCrossingPlaces: 4 }), 4);
+  assert.equal(selfCrossingPlaces({ selfCrossings: 83 }), 0, 'an older worker');
+  assert.equal(selfCrossingPlaces({ selfCrossings: 3, selfCrossingPlaces: 4 }), 0, 'more places than pairs');
+  assert.equal(selfCrossingPlaces({ selfCrossings: -1, selfCrossingPlaces: 0 }), 0);
+  assert.equal(selfCrossingPlaces({ selfCrossings: 83, selfCrossingPlaces: 2.5 }), 0);
 });
 
 test('the point marked where the surface passes through itself, only when it does', () => {
@@ -73,6 +92,8 @@ test('every crossing pair of the surface is marked, or the first alone from a wo
   const two = { selfCrossings: 2, selfCrossingPoint: [1, 2, 3], selfCrossingPoints: [1, 2, 3, 4, 5, 6] };
   assert.deepEqual(selfCrossingPoints(two), [1, 2, 3, 4, 5, 6]);
   assert.equal(selfCrossingLegend(two), 'The surface passes through itself: 2 pairs of its triangles, each marked');
+  assert.equal(selfCrossingLegend({ ...two, selfCrossingPlaces: 2 }), 'The surface passes through itself: 2 pairs of its triangles in 2 places, each marked');
+  assert.equal(selfCrossingLegend({ ...two, selfCrossingPlaces: 1 }), 'The surface passes through itself: 2 pairs of its triangles, each marked', 'one place: nothing to add');
   const one = { selfCrossings: 1, selfCrossingPoint: [1, 2, 3], selfCrossingPoints: [1, 2, 3] };
   assert.equal(selfCrossingLegend(one), 'The surface passes through itself: 1 pair of its triangles, marked');
   const older = { selfCrossings: 83, selfCrossingPoint: [1, 2, 3] };

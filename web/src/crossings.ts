@@ -108,8 +108,20 @@ export function selfCrossingNote(info: MeshInfo): string {
   if (n === -1) return 'Not checked whether the surface passes through itself: its triangles overlap too much in space (long thin triangles around one point?).';
   if (typeof n !== 'number' || !Number.isInteger(n) || n <= 0) return '';
   const p = selfCrossingPoint(info);
-  const near = p ? `, one near (${p.map((v) => String(Number(v.toPrecision(3)))).join(', ')})` : '';
-  return `The surface passes through itself: ${pairsOf(n)} of its triangles cross${near}. Panels made from it can pass through each other there, whatever their count: mend the model there before building.`;
+  const places = selfCrossingPlaces(info);
+  const at = p ? `near (${p.map((v) => String(Number(v.toPrecision(3)))).join(', ')})` : '';
+  const where = places === 1 ? ` in one place${at ? `, ${at}` : ''}` : places > 1 ? ` in ${places.toLocaleString('en')} places${at ? `, one ${at}` : ''}` : at ? `, one ${at}` : '';
+  return `The surface passes through itself: ${pairsOf(n)} of its triangles cross${where}. Panels made from it can pass through each other there, whatever their count: mend the model there before building.`;
+}
+
+// The separate places where the loaded surface crosses itself (0 when it does not, or the
+// worker did not count them: an older one, or a count that is not a whole number up to the
+// pairs).
+export function selfCrossingPlaces(info: MeshInfo): number {
+  const places = info.selfCrossingPlaces;
+  const pairs = info.selfCrossings;
+  if (typeof places !== 'number' || !Number.isInteger(places) || places <= 0) return 0;
+  return typeof pairs === 'number' && places <= pairs ? places : 0;
 }
 
 // #crossing-legend for a surface on show without panels: its own crossing, marked in the view.
@@ -123,5 +135,7 @@ export function selfCrossingLegend(info: MeshInfo): string | null {
   if (marked === 0) return null;
   const which =
     marked >= info.selfCrossings ? (marked === 1 ? 'marked' : 'each marked') : marked === 1 ? 'one marked' : `the first ${marked.toLocaleString('en')} marked`;
-  return `The surface passes through itself: ${pairsOf(info.selfCrossings)} of its triangles, ${which}`;
+  const places = selfCrossingPlaces(info);
+  const where = places > 1 ? ` in ${places.toLocaleString('en')} places` : '';
+  return `The surface passes through itself: ${pairsOf(info.selfCrossings)} of its triangles${where}, ${which}`;
 }
