@@ -9,7 +9,6 @@
 #include "core/panels/panel_crossings.h"
 #include "core/prepare/subdivision.h"
 #include "core/util/error.h"
-#include "core/util/short_number.h"
 
 namespace ff::cli {
 

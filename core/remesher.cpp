@@ -371,13 +371,21 @@ void Remesher::fix_panels(const PanelAttempt& attempt, bool coverage) {
   // get a split near their problem (merging elsewhere to keep n) only when the rounds stall:
   // a split refloods its neighbourhood, while the boundary term alone converges steadily
   // as long as it makes progress.
-  // When the invalid panels stop going away, split near one of them (near two or three of
-  // them from 200 panels up: stall_splits()).
+  // When the invalid panels stop going away, split near one of them (up to three of them from
+  // 200 panels on: stall_splits()).
   const bool stalled = stalled_rounds_ >= 3;
   if (stalled) stalled_rounds_ = 0;
   // Acute corners do not move with the boundary term (it shifts faces, not where clusters
   // meet), so with a minimum angle a stall splits at up to three of them at once.
-  const int splits = stalled ? (min_corner_angle() > 0.0 ? 3 : stall_splits(clustering_.num_clusters())) : 0;
+  int splits = stalled ? (min_corner_angle() > 0.0 ? 3 : stall_splits(clustering_.num_clusters())) : 0;
+  if (splits > 1 && min_corner_angle() <= 0.0) {
+    // The stall's extra splits give way to the cuts of clusters that are not disks (asked
+    // first, every round), so that the cap below never rotates away the split near the
+    // largest invalid panel, which one split per stall always made.
+    int cuts = 0;
+    for (const unsigned p : attempt.graph().problems) cuts += p != 0 && p != kEnclosed ? 1 : 0;
+    splits = std::max(1, std::min(splits, static_cast<int>(kMaxSplitsPerRound) - cuts));
+  }
   std::vector<std::pair<int, int>> requests = split_requests(mesh_, topology_, attempt, splits, held);
   requests.erase(std::remove_if(requests.begin(), requests.end(), [&](const auto& r) { return is_held(r.first); }),
                  requests.end());

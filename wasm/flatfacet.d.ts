@@ -25,7 +25,7 @@ export interface MeshInfo extends Status {
   selfCrossings: number;
   selfCrossingPoint: [number, number, number];
   // The separate places where it crosses (pairs joined through shared triangles and corners;
-  // 0 when none, or from an older worker that did not count them).
+  // 0 when none or not checked; absent from an older worker that did not count them).
   selfCrossingPlaces?: number;
   // Every crossing pair's deepest point, flat x y z ... (the first 2,000 pairs), for the
   // view's markers; empty when none.

@@ -20,6 +20,16 @@ std::vector<int> enclosed_clusters(const PanelAttempt& attempt);
 // and no split can fix.
 std::vector<int> tiny_invalid_clusters(const PanelAttempt& attempt, int share);
 
+// How many invalid panels a stall of the panel rounds may split near (the `max_geometric` of
+// split_requests(); with a minimum corner angle the rounds ask 3 whatever the count): one per
+// 100 panels, 1 to 3. Each split merges a pair elsewhere and refloods both places, so it
+// reshuffles a share of the clustering that shrinks as the panel count grows. Measured
+// (bench/panel_rounds_profile.md, "One split per 100 panels"): at 200 panels and up a stall
+// often waits on two or three places at once (bunny.off at 200, seed 7: three far apart for 28
+// rounds), and splitting near each ends the rounds sooner; below, more than one split at a
+// time left cow.off's runs (46-122 panels) invalid more often.
+int stall_splits(int num_clusters);
+
 // Where to split after a failed attempt: (cluster, face) requests for split_near(). A cluster
 // that meets one neighbour in two separate chains splits at the middle of its chain with
 // that neighbour farthest from its seed (cut off it, the halves meet the neighbour once
@@ -29,15 +39,6 @@ std::vector<int> tiny_invalid_clusters(const PanelAttempt& attempt, int share);
 // `keep` (per cluster, empty for none): clusters never to split (held by a lock): the
 // geometric splits go to the other invalid panels first, then to a free cluster at a kept
 // panel's problem corner.
-// How many invalid panels a stall of the panel rounds splits near (the `max_geometric` of
-// split_requests()): one per 100 panels, 1 to 3. Each split merges a pair elsewhere and
-// refloods both places, so it reshuffles a share of the clustering that shrinks as the panel
-// count grows. Measured (bench/panel_rounds_profile.md, "One split per 100 panels"): at 200
-// panels and up a stall often waits on two or three places at once (bunny.off at 200, seed 7:
-// three far apart for 28 rounds), and splitting near each ends the rounds sooner; below,
-// more than one split at a time left cow.off's runs (46-122 panels) invalid more often.
-int stall_splits(int num_clusters);
-
 std::vector<std::pair<int, int>> split_requests(const TriMesh& mesh, const MeshTopology& topology,
                                                 const PanelAttempt& attempt, int max_geometric,
                                                 const std::vector<char>& keep = {});

@@ -353,7 +353,7 @@ QualityReport measure_quality(const TriMesh& input, const MeshTopology& input_to
     const SurfaceCrossings own = options.input_crossings ? *options.input_crossings : surface_crossings(input);
     r.input_crossings = own.count();
     r.input_crossing_point = own.first_point();
-    r.input_crossing_places = own.places;
+    r.input_crossing_places = own.checked ? own.places : 0;
   }
   // A cluster that could not become a panel leaves its faces uncovered: it counts as an
   // invalid panel too, so the count never hides it (write_invalid_panels lists it).

@@ -193,7 +193,7 @@ TEST(SurfaceCrossings, TheCowPassesThroughItselfTheBunnyDoesNot) {
 
 // Where it crosses, counted as places: a flat grid with small triangles pushed through it at
 // separate spots is one place per spot, however many grid triangles each one cuts; two
-// triangles pushed through at one spot side by side (sharing a corner) are one place too.
+// triangles pushed through that share a corner are one place, wherever they cut the grid.
 TEST(SurfaceCrossings, PlacesCountSeparateSpotsNotPairs) {
   const auto grid = [] {
     TriMesh m;
@@ -228,15 +228,26 @@ TEST(SurfaceCrossings, PlacesCountSeparateSpotsNotPairs) {
   const SurfaceCrossings at_three = surface_crossings(three);
   EXPECT_EQ(at_three.places, 3) << at_three.pairs.size() << " pairs";
 
-  // A second triangle beside the first, sharing its top corner: one place.
-  TriMesh beside = grid();
-  poke(beside, 5.3, 5.6);
-  const int top = static_cast<int>(beside.positions.size()) - 1;
-  const int v = static_cast<int>(beside.positions.size());
-  beside.positions.emplace_back(5.3, 7.6, -1.0);
-  beside.positions.emplace_back(5.3, 7.6 + 0.01, -1.0);
-  beside.triangles.push_back({v, v + 1, top});
-  EXPECT_EQ(surface_crossings(beside).places, 1);
+  // A second triangle from the first one's top corner, slanting down through the grid at x =
+  // 9.3, three cells from where the first cuts it (x 4.55-6.05): the grid triangles the two cut
+  // share no corner, so only their shared top corner joins them, into one place. The same
+  // triangle with a corner of its own at that point is a second place.
+  for (const bool shared : {true, false}) {
+    TriMesh slanted = grid();
+    poke(slanted, 5.3, 5.6);
+    int top = static_cast<int>(slanted.positions.size()) - 1;
+    if (!shared) {
+      slanted.positions.push_back(slanted.positions.back());
+      top += 1;
+    }
+    const int v = static_cast<int>(slanted.positions.size());
+    slanted.positions.emplace_back(13.3, 5.3, -1.0);
+    slanted.positions.emplace_back(13.3, 5.9, -1.0);
+    slanted.triangles.push_back({v, v + 1, top});
+    const SurfaceCrossings found = surface_crossings(slanted);
+    EXPECT_EQ(found.places, shared ? 1 : 2)
+        << (shared ? "shared" : "own") << " corner, " << found.pairs.size() << " pairs";
+  }
 
   EXPECT_EQ(surface_crossings(grid()).places, 0);
 }
@@ -325,7 +336,9 @@ TEST(SurfaceCrossings, TheReportTakesTheCrossingsItIsGiven) {
   EXPECT_EQ(taken.input_crossing_places, own.input_crossing_places);
   // Taken, not checked again: an unchecked surface is said as such (-1), one pair as one.
   given.input_crossings->checked = false;
-  EXPECT_EQ(measure_quality(remesher.mesh(), remesher.topology(), remesher.panels(), given).input_crossings, -1);
+  const QualityReport unchecked = measure_quality(remesher.mesh(), remesher.topology(), remesher.panels(), given);
+  EXPECT_EQ(unchecked.input_crossings, -1);
+  EXPECT_EQ(unchecked.input_crossing_places, 0);
   given.input_crossings->checked = true;
   given.input_crossings->pairs.resize(1);
   EXPECT_EQ(measure_quality(remesher.mesh(), remesher.topology(), remesher.panels(), given).input_crossings, 1);
