@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "core/util/short_number.h"
+#include "core/util/union_find.h"
 
 namespace ff {
 
@@ -238,17 +239,10 @@ namespace {
 // Connected groups of crossing pairs: a union-find over the triangles involved, joined by each
 // pair and by shared corners.
 int crossing_places(const TriMesh& mesh, const std::vector<PanelCrossing>& pairs) {
+  if (pairs.empty()) return 0;  // most surfaces: no forest to build on every load
   std::vector<int> parent(static_cast<size_t>(mesh.num_faces()), -1);  // -1: not involved
-  const auto root = [&](int f) {
-    while (parent[static_cast<size_t>(f)] != f) {
-      const int up = parent[static_cast<size_t>(parent[static_cast<size_t>(f)])];
-      parent[static_cast<size_t>(f)] = up;  // path halving
-      f = up;
-    }
-    return f;
-  };
   const auto join = [&](int a, int b) {
-    a = root(a), b = root(b);
+    a = union_find_root(parent, a), b = union_find_root(parent, b);
     if (a != b) parent[static_cast<size_t>(std::max(a, b))] = std::min(a, b);
   };
   std::vector<int> involved;
@@ -269,7 +263,7 @@ int crossing_places(const TriMesh& mesh, const std::vector<PanelCrossing>& pairs
     }
   }
   int places = 0;
-  for (const int f : involved) places += root(f) == f ? 1 : 0;
+  for (const int f : involved) places += union_find_root(parent, f) == f ? 1 : 0;
   return places;
 }
 
