@@ -367,7 +367,8 @@ void Remesher::fix_panels(const PanelAttempt& attempt, bool coverage) {
   hold(settled_, settled_planes_);
   const std::vector<char> held = held_clusters();
   const auto is_held = [&](int c) { return !held.empty() && held[static_cast<size_t>(c)]; };
-  // Clusters that are not disks split at once; enclosed ones move elsewhere. Invalid panels
+  // Clusters that are not disks are cut at once; enclosed ones, and those too small to cut,
+  // move elsewhere. Invalid panels
   // get a split near their problem (merging elsewhere to keep n) only when the rounds stall:
   // a split refloods its neighbourhood, while the boundary term alone converges steadily
   // as long as it makes progress.
@@ -382,8 +383,7 @@ void Remesher::fix_panels(const PanelAttempt& attempt, bool coverage) {
     // The stall's extra splits give way to the cuts of clusters that are not disks (asked
     // first, every round), so that the cap below never rotates away the split near the
     // largest invalid panel, which one split per stall always made.
-    int cuts = 0;
-    for (const unsigned p : attempt.graph().problems) cuts += p != 0 && p != kEnclosed ? 1 : 0;
+    const int cuts = static_cast<int>(cut_requests(mesh_, topology_, attempt).size());
     splits = std::max(1, std::min(splits, static_cast<int>(kMaxSplitsPerRound) - cuts));
   }
   std::vector<std::pair<int, int>> requests = split_requests(mesh_, topology_, attempt, splits, held);
@@ -408,7 +408,11 @@ void Remesher::fix_panels(const PanelAttempt& attempt, bool coverage) {
     }
     split_near(metric_, topology_, clustering_, requests, protect, 3, /*reflood_after=*/false);
   }
+  // Clusters that cannot be panels where they are move elsewhere: enclosed ones, and those
+  // that are not disks and have no face to cut them at but their seed.
   std::vector<int> enclosed = enclosed_clusters(attempt);
+  const std::vector<int> uncuttable = uncuttable_clusters(mesh_, topology_, attempt);
+  enclosed.insert(enclosed.end(), uncuttable.begin(), uncuttable.end());
   if (coverage) {  // collapsed clusters: their faces are under their neighbours' panels already
     for (size_t c = 0; c < attempt.layout().issues().size(); ++c)
       if (attempt.layout().issues()[c].collapsed) enclosed.push_back(static_cast<int>(c));

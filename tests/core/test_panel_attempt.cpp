@@ -1,8 +1,8 @@
 // Where a failed panel attempt splits (split_requests, core/panels/split_requests.cpp): a
 // cluster that meets one neighbour in two separate chains (paper 2.4, fig. 10) must be cut
 // along, between the chains, not across: on a thin tube (a cow's leg) halves cut across
-// both still meet the neighbour twice. And how many places a stall splits near
-// (stall_splits).
+// both still meet the neighbour twice. A cluster that cannot be cut moves instead. And how
+// many places a stall splits near (stall_splits).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -66,6 +66,57 @@ TEST(SplitRequests, TwoChainClusterSplitsBetweenItsChainsNotAcross) {
     on_seam = on_seam || (g >= 0 && c.labels[static_cast<size_t>(g)] == 1);
   EXPECT_TRUE(on_seam);
   EXPECT_LT(std::abs(face_centroid(mesh, face).z() - 2.5), 0.75);
+}
+
+// A one-face cluster that meets one neighbour in two chains cannot be cut (its only face is
+// its seed): it is listed to move elsewhere (uncuttable_clusters), not asked to split
+// (cut_requests, which split_near would skip round after round). On a 6 x 6 grid: T is the
+// lower triangle of cell (2, 2), A (columns 0-2) meets it across its bottom and its diagonal,
+// B (columns 3-5) across its right side, and D (cell (1, 1), an island in A) at its corner
+// (2, 2), so A's two edges are two chains.
+TEST(SplitRequests, OneFaceClusterInTwoChainsMovesInsteadOfSplitting) {
+  const int nx = 6;
+  const TriMesh mesh = test::grid(nx, nx);
+  const MeshTopology topology = build_topology(mesh);
+  const FaceData faces = make_face_data(mesh);
+  const Metric metric(faces, MetricWeights{}, 2);
+  const auto lower = [&](int i, int j) { return 2 * (j * nx + i); };
+  enum { kA, kB, kD, kT };
+  Clustering c;
+  for (int f = 0; f < mesh.num_faces(); ++f) c.labels.push_back(face_centroid(mesh, f).x() > 3.0 ? kB : kA);
+  c.labels[static_cast<size_t>(lower(1, 1))] = c.labels[static_cast<size_t>(lower(1, 1) + 1)] = kD;
+  const int t = lower(2, 2);
+  c.labels[static_cast<size_t>(t)] = kT;
+  c.seeds = {lower(0, 4), lower(4, 4), lower(1, 1), t};
+  c.proxies.resize(4);
+  c.sticky.assign(4, 0);
+  refit(metric, c);
+  std::vector<Vec3> positions;
+  for (const Vec3& p : mesh.positions) positions.push_back((p - faces.origin) / faces.scale);
+  const PanelAttempt attempt(mesh, topology, positions, faces, c, PanelAttemptOptions{});
+  ASSERT_EQ(attempt.graph().problems[kT], static_cast<unsigned>(kTwoChains));
+
+  EXPECT_EQ(uncuttable_clusters(mesh, topology, attempt), std::vector<int>{kT});
+  const std::vector<std::pair<int, int>> cuts = cut_requests(mesh, topology, attempt);
+  for (const auto& [cluster, face] : cuts) {
+    EXPECT_NE(cluster, kT);
+    EXPECT_EQ(c.labels[static_cast<size_t>(face)], cluster);
+    EXPECT_NE(face, c.seeds[static_cast<size_t>(cluster)]);
+  }
+  // A (around the island D, so not a disk) is still cut; the cuts lead split_requests.
+  ASSERT_FALSE(cuts.empty());
+  const std::vector<std::pair<int, int>> requests = split_requests(mesh, topology, attempt, 0);
+  ASSERT_GE(requests.size(), cuts.size());
+  EXPECT_TRUE(std::equal(cuts.begin(), cuts.end(), requests.begin()));
+}
+
+// inspired_mesh.obj at 100 panels, seed 5: a one-face cluster that was not a disk stayed for
+// 9 panel rounds (9-17), asked to split every round and never split, and took one of the
+// three requests a round; the rounds ended valid at 18. Moved elsewhere, valid at round 11.
+TEST(SplitRequests, InspiredAt100Seed5EndsValidSooner) {
+  const std::unique_ptr<Remesher> r = test::remeshed("inspired_mesh.obj", 100, 5);
+  EXPECT_TRUE(test::valid_panels(*r, 100, 0.1));
+  EXPECT_LT(r->panel_rounds_done(), 15);
 }
 
 TEST(StallSplits, OnePer100PanelsFromOneToThree) {

@@ -107,12 +107,12 @@ TEST(PolishSplitAt, HalvesGrowFromTheGivenFaces) {
   return ::testing::AssertionSuccess();
 }
 
-// cow.off at 100 panels, seed 9: the rounds end invalid and mend() leaves it so; the polish's
-// first attempt ends valid with the 100 panels asked for, with no retry. (Seed 2, then seed 7
-// were this example until the panel checks took the quality report's tolerance and the
-// relaxation stopped once settled: their rounds now go other ways.)
-TEST(PolishBest, CowAt100PanelsSeed9EndsValid) {
-  const auto r = test::remesher("cow.off", 100, 9);
+// cow.off at 100 panels, seed 11: the rounds end invalid and mend() leaves it so; the polish
+// ends valid with the 100 panels asked for, with no retry. (Seeds 2, 7 and 9 were this
+// example until the panel checks took the quality report's tolerance, the relaxation stopped
+// once settled, and clusters too small to cut moved elsewhere: their rounds now go other ways.)
+TEST(PolishBest, CowAt100PanelsSeed11EndsValid) {
+  const auto r = test::remesher("cow.off", 100, 11);
   ASSERT_TRUE(polish_ran(*r));
   EXPECT_EQ(r->retries_done(), 0);
   EXPECT_TRUE(test::valid_panels(*r, 100, 0.12));
