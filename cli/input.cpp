@@ -68,9 +68,9 @@ LoadedInput load_input(const std::string& path, const CleanOptions& options) {
   } else if (!own.pairs.empty()) {
     std::fprintf(
         stderr,
-        "flatfacet: warning: %s: the surface passes through itself (%zu %s of its triangles cross, %s): panels "
+        "flatfacet: warning: %s: the surface passes through itself (%zu %s of its triangles cross%s%s): panels "
         "made from it can pass through each other there, whatever their count; mend the model there\n",
-        path.c_str(), own.pairs.size(), own.pairs.size() == 1 ? "pair" : "pairs",
+        path.c_str(), own.pairs.size(), own.pairs.size() == 1 ? "pair" : "pairs", own.places > 0 ? " " : ", ",
         crossing_where(own.places, own.first_point()).c_str());
   }
   return in;

@@ -175,7 +175,7 @@ TEST(PanelCrossings, AWallAcrossOneAxisIsCheckedPairByPair) {
   }
 }
 
-// The shared meshes: the cow's tail goes into its rump (83 pairs of its triangles cross, in 4
+// The shared meshes: the cow's tail goes into its rump (83 pairs of its triangles cross in 4
 // places), the camel's head has a few (5 pairs in one place), the bunny none.
 TEST(SurfaceCrossings, TheCowPassesThroughItselfTheBunnyDoesNot) {
   const SurfaceCrossings cow = surface_crossings(test::load_clean("cow.off"));
