@@ -23,6 +23,18 @@
 namespace ff {
 namespace {
 
+// The clustering's proxies fitted to its labels and seeds, and the positions an attempt lays
+// its panels out on (the local frame; kept here, as the attempt refers to them).
+struct AttemptInput {
+  std::vector<Vec3> positions;
+  AttemptInput(const TriMesh& mesh, const FaceData& faces, const Metric& metric, Clustering& c) {
+    c.proxies.resize(c.seeds.size());
+    c.sticky.assign(c.seeds.size(), 0);
+    refit(metric, c);
+    for (const Vec3& p : mesh.positions) positions.push_back((p - faces.origin) / faces.scale);
+  }
+};
+
 // The tube in two halves along its length: A (y > 0) and B (y < 0) meet along the seams at
 // x = 0.5 and x = -0.5, two chains between the rims. A's seed sits in its middle.
 TEST(SplitRequests, TwoChainClusterSplitsBetweenItsChainsNotAcross) {
@@ -43,12 +55,8 @@ TEST(SplitRequests, TwoChainClusterSplitsBetweenItsChainsNotAcross) {
   ASSERT_GE(seed_a, 0);
   ASSERT_GE(seed_b, 0);
   c.seeds = {seed_a, seed_b};
-  c.proxies.resize(2);
-  c.sticky.assign(2, 0);
-  refit(metric, c);
-  std::vector<Vec3> positions;
-  for (const Vec3& p : mesh.positions) positions.push_back((p - faces.origin) / faces.scale);
-  const PanelAttempt attempt(mesh, topology, positions, faces, c, PanelAttemptOptions{});
+  const AttemptInput input(mesh, faces, metric, c);
+  const PanelAttempt attempt(mesh, topology, input.positions, faces, c, PanelAttemptOptions{});
   ASSERT_EQ(attempt.graph().problems[0], static_cast<unsigned>(kTwoChains));
 
   const std::vector<std::pair<int, int>> requests = split_requests(mesh, topology, attempt, 0);
@@ -88,12 +96,8 @@ TEST(SplitRequests, OneFaceClusterInTwoChainsMovesInsteadOfSplitting) {
   const int t = lower(2, 2);
   c.labels[static_cast<size_t>(t)] = kT;
   c.seeds = {lower(0, 4), lower(4, 4), lower(1, 1), t};
-  c.proxies.resize(4);
-  c.sticky.assign(4, 0);
-  refit(metric, c);
-  std::vector<Vec3> positions;
-  for (const Vec3& p : mesh.positions) positions.push_back((p - faces.origin) / faces.scale);
-  const PanelAttempt attempt(mesh, topology, positions, faces, c, PanelAttemptOptions{});
+  const AttemptInput input(mesh, faces, metric, c);
+  const PanelAttempt attempt(mesh, topology, input.positions, faces, c, PanelAttemptOptions{});
   ASSERT_EQ(attempt.graph().problems[kT], static_cast<unsigned>(kTwoChains));
 
   EXPECT_EQ(uncuttable_clusters(mesh, topology, attempt), std::vector<int>{kT});
