@@ -368,10 +368,9 @@ void Remesher::fix_panels(const PanelAttempt& attempt, bool coverage) {
   const std::vector<char> held = held_clusters();
   const auto is_held = [&](int c) { return !held.empty() && held[static_cast<size_t>(c)]; };
   // Clusters that are not disks are cut at once; enclosed ones, and those too small to cut,
-  // move elsewhere. Invalid panels
-  // get a split near their problem (merging elsewhere to keep n) only when the rounds stall:
-  // a split refloods its neighbourhood, while the boundary term alone converges steadily
-  // as long as it makes progress.
+  // move elsewhere. Invalid panels get a split near their problem (merging elsewhere to keep
+  // n) only when the rounds stall: a split refloods its neighbourhood, while the boundary term
+  // alone converges steadily as long as it makes progress.
   // When the invalid panels stop going away, split near one of them (up to three of them from
   // 200 panels on: stall_splits()).
   const bool stalled = stalled_rounds_ >= 3;
