@@ -314,6 +314,16 @@ void Remesher::panel_round() {
 bool Remesher::coverage_round(std::unique_ptr<PanelAttempt>& attempt) {
   const int collapsed = attempt->layout().faults().collapsed;
   if (collapsed == 0 || !locks_.empty() || next_edit_ > 0) return false;
+  // The finish fits the planes to the surface, which often widens a collapsed panel (never
+  // narrows one: try_planes): judged as the end will judge it, such an attempt needs no
+  // more rounds (fandisk.off at 300 panels, seed 7: 8 rounds that ended where they began).
+  // When the fit leaves a collapsed panel, the rounds go on from the attempt as it was.
+  if (params_.optimize_planes) {
+    PanelAttempt::Saved unfitted = attempt->save();
+    fit_planes(*attempt);
+    if (attempt->layout().faults().collapsed == 0) return false;
+    attempt->restore(std::move(unfitted));
+  }
   if (!coverage_.fallback) coverage_.first_round = panel_rounds_done_;
   const bool fewer = !coverage_.fallback || collapsed < coverage_.fallback->layout().faults().collapsed;
   const bool more = panel_rounds_done_ < std::max(1, params_.panel_rounds) &&
@@ -542,26 +552,33 @@ void Remesher::cut_glass() {
   progress_.invalid_panels = panels_.num_invalid();
 }
 
-void Remesher::optimize_planes() {
-  PanelLayout& layout = best_->layout();
-  if (params_.optimize_planes) {
-    const PanelLayout& settled = layout;
-    const std::vector<int>& labels = best_->clustering().labels;
-    std::vector<Plane> fitted = surface_fit_planes(
-        faces_, labels, settled.planes(), settled.node_constraints(),
-        border_moments(topology_, local_positions_, labels, best_->clustering().num_clusters()), kBorderFitWeight);
-    // Locked panels and their neighbours keep their planes.
-    const std::vector<char> held = held_clusters();
-    for (size_t c = 0; c < held.size(); ++c) {
-      const int master = settled.planes().master_of[c];
-      if (held[c]) fitted[static_cast<size_t>(master)] = settled.planes().planes[static_cast<size_t>(master)];
-    }
-    // The fitted planes move together, but try_planes takes them one at a time, each only
-    // where the panels stay valid: a plane refused while its neighbours were still where they
-    // were may pass once they moved (a second pass), or part of the way (half, then a quarter).
-    layout.try_planes(fitted, 2);
-    for (double step : {0.5, 0.25}) layout.try_planes(planes_toward(layout.planes().planes, fitted, step));
+// Beyond the paper: the planes fitted to the surface (least squares of its distance to the
+// panels, surface_fit_planes), each kept only where the panels stay valid and none collapses.
+// Once per attempt: the coverage rounds may have fitted it already (coverage_round).
+void Remesher::fit_planes(PanelAttempt& attempt) {
+  if (!params_.optimize_planes || attempt.planes_fitted()) return;
+  attempt.set_planes_fitted();
+  PanelLayout& layout = attempt.layout();
+  const std::vector<int>& labels = attempt.clustering().labels;
+  std::vector<Plane> fitted = surface_fit_planes(
+      faces_, labels, layout.planes(), layout.node_constraints(),
+      border_moments(topology_, local_positions_, labels, attempt.clustering().num_clusters()), kBorderFitWeight);
+  // Locked panels and their neighbours keep their planes.
+  const std::vector<char> held = held_clusters();
+  for (size_t c = 0; c < held.size(); ++c) {
+    const int master = layout.planes().master_of[c];
+    if (held[c]) fitted[static_cast<size_t>(master)] = layout.planes().planes[static_cast<size_t>(master)];
   }
+  // The fitted planes move together, but try_planes takes them one at a time, each only
+  // where the panels stay valid: a plane refused while its neighbours were still where they
+  // were may pass once they moved (a second pass), or part of the way (half, then a quarter).
+  layout.try_planes(fitted, 2);
+  for (double step : {0.5, 0.25}) layout.try_planes(planes_toward(layout.planes().planes, fitted, step));
+}
+
+void Remesher::optimize_planes() {
+  fit_planes(*best_);
+  PanelLayout& layout = best_->layout();
   // Then the needles (corners below kNeedleCornerDeg) the fit leaves at split nodes: another
   // pairing, or the group as one point (which moves planes: not those of locked panels and
   // their neighbours).

@@ -186,6 +186,7 @@ class Remesher {
   // coverage: a valid attempt's coverage round (its collapsed clusters move elsewhere).
   void fix_panels(const PanelAttempt& attempt, bool coverage = false);
   bool coverage_round(std::unique_ptr<PanelAttempt>& attempt);  // true: the round is done
+  void fit_planes(PanelAttempt& attempt);
   void optimize_planes();
   void finish_panels();
   // finish_panels with the coverage rounds' fallback (valid, fewest collapsed) as the best.

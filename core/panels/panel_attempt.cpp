@@ -213,12 +213,21 @@ PanelAttempt::PanelAttempt(const TriMesh& mesh, const MeshTopology& topology, co
 
 bool PanelAttempt::mend_to_valid(const FaceData& faces, const std::vector<char>& held,
                                  const PanelAttemptOptions& options) {
-  auto saved = std::make_unique<PanelLayout>(*layout_);
+  Saved saved = save();
   layout_->judge_orientation();
   mend(faces, held, options);
   if (num_invalid() == 0) return true;
-  layout_ = std::move(saved);
+  restore(std::move(saved));
   return false;
+}
+
+PanelAttempt::Saved PanelAttempt::save() const {
+  return Saved{std::make_unique<PanelLayout>(*layout_), planes_fitted_};
+}
+
+void PanelAttempt::restore(Saved saved) {
+  layout_ = std::move(saved.layout);
+  planes_fitted_ = saved.planes_fitted;
 }
 
 void PanelAttempt::mend(const FaceData& faces, const std::vector<char>& held, const PanelAttemptOptions& options) {

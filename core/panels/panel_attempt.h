@@ -58,6 +58,18 @@ class PanelAttempt {
   // only when every panel ends valid; otherwise the layout is put back exactly as it was, so
   // the rounds go on as if it had not been tried. Returns whether it was kept.
   bool mend_to_valid(const FaceData& faces, const std::vector<char>& held, const PanelAttemptOptions& options);
+  // Whether the planes were already fitted to the surface (Remesher::fit_planes): the
+  // finish then does not fit them again.
+  bool planes_fitted() const { return planes_fitted_; }
+  void set_planes_fitted() { planes_fitted_ = true; }
+  // The layout as it is now, for restore(): a trial change (mend_to_valid, the coverage
+  // rounds' plane fit) that is not kept is undone exactly.
+  struct Saved {
+    std::unique_ptr<PanelLayout> layout;
+    bool planes_fitted = false;
+  };
+  Saved save() const;
+  void restore(Saved saved);
 
   const Clustering& clustering() const { return clustering_; }
   const PanelGraph& graph() const { return graph_; }
@@ -78,6 +90,7 @@ class PanelAttempt {
   std::vector<std::pair<int, int>> neighbours_;  // plane_neighbours(), used twice
   double spike_distance_ = 0.0;
   std::unique_ptr<PanelLayout> layout_;
+  bool planes_fitted_ = false;
 };
 
 // Cluster pairs whose planes meet in the panel mesh: across an edge or at a common corner.

@@ -41,6 +41,19 @@ TEST(CoverageRounds, TheFinalFitMakesNoSliver) {
   EXPECT_EQ(quality_of(*r).collapsed_panels, 0);
 }
 
+// fandisk.off at 300 panels, seed 7: the rounds' first valid attempt (round 16) has a panel
+// their planes collapse, and the final fit widens it (the report's least coverage is 0.154).
+// Judged as the end judges it, it needs no coverage round: the run ends there, not after the
+// 8 coverage rounds it used to spend finding nothing better (24 rounds, the same panels).
+TEST(CoverageRounds, APanelTheFitWidensNeedsNoCoverageRound) {
+  const auto r = test::remeshed("fandisk.off", 300, 7);
+  EXPECT_TRUE(test::valid_panels(*r, 300, 0.02));
+  EXPECT_LE(r->panel_rounds_done(), 16);
+  const QualityReport q = quality_of(*r);
+  EXPECT_EQ(q.collapsed_panels, 0);
+  EXPECT_EQ(flagged_collapsed(r->panels()), 0);
+}
+
 // What the coverage rounds do not reach stays valid and is reported: cow.off at 61 panels,
 // seed 11 keeps one (1.2% covered), left by the mends of its long run (80 rounds). The panel
 // phase's flags and the report agree, and a collapsed panel passes the paper's checks (it is
