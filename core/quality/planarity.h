@@ -3,6 +3,7 @@
 // relative to its size. For the panels (exact by construction: ~1e-15) and for the polygons
 // through their mesh corners, i.e. the panels before the planes are intersected: what a
 // plain cluster-corner remeshing (like VSA's extraction) would have to bend.
+#include <algorithm>
 #include <vector>
 
 #include "core/mesh/tri_mesh.h"
@@ -20,6 +21,18 @@ double polygon_planarity(const std::vector<Vec3>& points);
 // were solved about as `origin`, a far-off part of the mesh) it exceeds 1e-9 and no solver can
 // write exactly flat panels there: polygon_planarity measures about this much.
 double planarity_rounding_floor(const std::vector<Vec3>& points, const Vec3& origin = Vec3::Zero());
+
+// DESIGN.md 5: the panels are flat to this, relative to their size (exact by construction).
+constexpr double kPlanarityTarget = 1e-9;
+
+// Whether a panel of this polygon_planarity is off its plane by more than its coordinates can
+// explain: above kPlanarityTarget and over a hundred times the larger of its
+// planarity_rounding_floor about the origin (`floor`) and about the solve's origin
+// (`floor_solve`). A valid panel never is: only a vertex whose planes have no common point
+// (a spike) or an error of the solver puts one there.
+inline bool off_its_plane(double planarity, double floor, double floor_solve) {
+  return planarity > kPlanarityTarget && planarity > 100.0 * std::max(floor, floor_solve);
+}
 
 // Per panel: polygon_planarity of its vertices moved back to their mesh corners
 // (PanelMesh::vertex_corner; a vertex without a corner keeps its position). Empty when the

@@ -278,9 +278,15 @@ QualityReport measure_quality(const TriMesh& input, const MeshTopology& input_to
       r.max_planarity = planarity;
       r.max_planarity_panel = p;
     }
-    r.planarity_floor = std::max(r.planarity_floor, planarity_rounding_floor(points));
-    r.planarity_floor_solve =
-        std::max(r.planarity_floor_solve, planarity_rounding_floor(points, panels.solve_origin));
+    const double floor = planarity_rounding_floor(points);
+    const double floor_solve = planarity_rounding_floor(points, panels.solve_origin);
+    r.planarity_floor = std::max(r.planarity_floor, floor);
+    r.planarity_floor_solve = std::max(r.planarity_floor_solve, floor_solve);
+    // Checked here, not taken from the panel phase: a panel off its plane is no part to cut,
+    // whatever the flags say (a flag error would otherwise pass with only a warning).
+    const bool off_plane = off_its_plane(planarity, floor, floor_solve);
+    r.off_plane_panels += off_plane;
+    const bool bent = options.flat_panels && off_plane;
 
     const bool simple = is_simple(poly2d, tol);
     const std::vector<Vec2> kernel = polygon_kernel(poly2d, tol);
@@ -326,7 +332,8 @@ QualityReport measure_quality(const TriMesh& input, const MeshTopology& input_to
     r.flipped_edges += flipped;
     const bool producer_invalid = !panels.issues.empty() && !panels.issues[static_cast<size_t>(p)].valid();
     const bool glass_invalid = (options.glass && concave) || acute > 0;
-    if (producer_invalid || !simple || kernel.empty() || flipped > 0 || has_spike || misoriented || glass_invalid) {
+    if (producer_invalid || !simple || kernel.empty() || flipped > 0 || has_spike || misoriented || glass_invalid ||
+        bent) {
       r.invalid_panel_ids.push_back(p);
       source_invalid[source_of(static_cast<size_t>(p))] = 1;
     }

@@ -26,6 +26,10 @@ struct QualityOptions {
   // below min_corner_angle_deg (0 = no minimum).
   bool glass = false;
   double min_corner_angle_deg = 0.0;
+  // A panel off its plane (off_its_plane) is invalid. False for polygons not meant to be
+  // flat, measured for comparison (the benchmark's CGAL VSA anchor polygons): their bend is
+  // still in max_planarity and off_plane_panels.
+  bool flat_panels = true;
   // surface_crossings(input), when the caller has it already for this very mesh (the CLI and
   // the page check a mesh as it opens): taken as is instead of computed again, which costs as
   // much as the rest of the report's panel checks on a large mesh (about 70 ms at 50k triangles).
@@ -45,6 +49,10 @@ struct QualityReport {
   // planarity_floor when a far-off part of the mesh put that point far from the panels.
   double planarity_floor_solve = 0.0;
   int max_planarity_panel = -1;  // the least flat panel; -1 without panels
+  // Panels off their plane by more than their coordinates' rounding explains (off_its_plane):
+  // counted invalid (invalid_panel_ids; QualityOptions::flat_panels), whatever the panel
+  // phase's flags say.
+  int off_plane_panels = 0;
   // Two-sided sampled Hausdorff distance / input bbox diagonal, and its two halves;
   // infinity when no panel has 3 vertices.
   double hausdorff = 0.0;
@@ -75,7 +83,7 @@ struct QualityReport {
   std::vector<std::array<int, 2>> flipped_edge_vertices;
   std::vector<int> spike_vertex_ids;
   // Panels invalid by their own PanelIssues or by any check here (non-simple, non-star,
-  // flipped edges, a spike vertex, misoriented), and their indices in increasing order;
+  // flipped edges, a spike vertex, misoriented, off their plane), and their indices in increasing order;
   // the count also has the clusters that could not become a panel (PanelMesh::unbuilt_clusters).
   int invalid_panels = 0;
   std::vector<int> invalid_panel_ids;

@@ -187,7 +187,8 @@ std::string planarity_phrase(const QualityReport& q) {
   if (!(q.max_planarity > kPlanarityTarget)) return "";
   std::string out = "the panels as written are flat to " + short_number(q.max_planarity) + " of their size, not " +
                     short_number(kPlanarityTarget);
-  // Within a hundred times of what the doubles allow: the coordinates, not the solve.
+  // Within a hundred times of what the doubles allow: the coordinates, not the solve
+  // (off_its_plane's allowance).
   if (q.planarity_floor * 100.0 >= q.max_planarity)
     return out + ": the coordinates are so far from the origin that their last digit is already " +
            short_number(q.planarity_floor) + " of a panel's size; moved near the origin, the model gives flat panels";

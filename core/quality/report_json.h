@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/panels/panel_mesh.h"
+#include "core/quality/planarity.h"
 #include "core/quality/report.h"
 #include "core/util/json_writer.h"
 
@@ -57,9 +58,6 @@ void write_invalid_panels(JsonWriter& j, const PanelMesh& panels, const QualityR
 // each problem with the number of panels that have it, in panel_problems' order, then
 // "quality_check" and "unbuilt"; "" when none is invalid.
 std::string invalid_panels_phrase(const PanelMesh& panels, const QualityReport& quality);
-
-// DESIGN.md 5: the panels are flat to this, relative to their size (exact by construction).
-constexpr double kPlanarityTarget = 1e-9;
 
 // "" when the panels are flat to kPlanarityTarget; else a sentence for a person saying how
 // flat they are and, when the coordinates' own rounding explains it, what would make them flat:
