@@ -388,14 +388,14 @@ void Remesher::fix_panels(const PanelAttempt& attempt, bool coverage) {
   // Acute corners do not move with the boundary term (it shifts faces, not where clusters
   // meet), so with a minimum angle a stall splits at up to three of them at once.
   int splits = stalled ? (min_corner_angle() > 0.0 ? 3 : stall_splits(clustering_.num_clusters())) : 0;
+  const ClusterCuts cuts = cluster_cuts(mesh_, topology_, attempt);
   if (splits > 1 && min_corner_angle() <= 0.0) {
     // The stall's extra splits give way to the cuts of clusters that are not disks (asked
     // first, every round), so that the cap below never rotates away the split near the
     // largest invalid panel, which one split per stall always made.
-    const int cuts = static_cast<int>(cut_requests(mesh_, topology_, attempt).size());
-    splits = std::max(1, std::min(splits, static_cast<int>(kMaxSplitsPerRound) - cuts));
+    splits = std::max(1, std::min(splits, static_cast<int>(kMaxSplitsPerRound) - static_cast<int>(cuts.cuts.size())));
   }
-  std::vector<std::pair<int, int>> requests = split_requests(mesh_, topology_, attempt, splits, held);
+  std::vector<std::pair<int, int>> requests = split_requests(mesh_, topology_, attempt, cuts.cuts, splits, held);
   requests.erase(std::remove_if(requests.begin(), requests.end(), [&](const auto& r) { return is_held(r.first); }),
                  requests.end());
   if (requests.size() > kMaxSplitsPerRound) {
@@ -420,8 +420,7 @@ void Remesher::fix_panels(const PanelAttempt& attempt, bool coverage) {
   // Clusters that cannot be panels where they are move elsewhere: enclosed ones, and those
   // that are not disks and have no face to cut them at but their seed.
   std::vector<int> enclosed = enclosed_clusters(attempt);
-  const std::vector<int> uncuttable = uncuttable_clusters(mesh_, topology_, attempt);
-  enclosed.insert(enclosed.end(), uncuttable.begin(), uncuttable.end());
+  enclosed.insert(enclosed.end(), cuts.uncuttable.begin(), cuts.uncuttable.end());
   if (coverage) {  // collapsed clusters: their faces are under their neighbours' panels already
     for (size_t c = 0; c < attempt.layout().issues().size(); ++c)
       if (attempt.layout().issues()[c].collapsed) enclosed.push_back(static_cast<int>(c));

@@ -104,7 +104,8 @@ std::unique_ptr<PanelAttempt> Remesher::polish_pass(int max_geometric) {
   std::vector<char> keep(settled_.size(), 0);
   for (size_t c = 0; c < settled_.size(); ++c) keep[c] = !settled_[c];
   std::vector<std::pair<int, int>> requests;
-  if (max_geometric >= 0) requests = split_requests(mesh_, topology_, *best_, max_geometric);
+  if (max_geometric >= 0)
+    requests = split_requests(mesh_, topology_, *best_, cluster_cuts(mesh_, topology_, *best_).cuts, max_geometric);
   // An invalid panel with no problem corner to split at is cut in two along its length
   // (face -1), and in the last pass (max_geometric -1) every invalid panel is (a plane turned
   // 94 degrees from its faces: face.obj at 574 panels, seed 2, once ended valid so).

@@ -103,48 +103,29 @@ int stall_splits(int num_clusters) {
   return std::clamp(num_clusters / kPanelsPerSplit, 1, kMostSplits);
 }
 
-namespace {
-
-// Per cluster that is not a disk and not merely enclosed (an enclosed one is fixed by
-// splitting the one around it, which has a hole): the face to cut it at, or -1 when it has
-// none but its seed (split_near cannot cut it).
-std::vector<std::pair<int, int>> cut_faces(const TriMesh& mesh, const MeshTopology& topology,
-                                           const PanelAttempt& attempt) {
+ClusterCuts cluster_cuts(const TriMesh& mesh, const MeshTopology& topology, const PanelAttempt& attempt) {
   const Clustering& c = attempt.clustering();
   const PanelGraph& graph = attempt.graph();
-  std::vector<std::pair<int, int>> out;
+  ClusterCuts out;
   for (int cluster = 0; cluster < c.num_clusters(); ++cluster) {
     const unsigned p = graph.problems[static_cast<size_t>(cluster)];
     if (p == 0 || p == kEnclosed) continue;
     const int across = p == kTwoChains ? two_chain_face(mesh, topology, c, graph, cluster) : -1;
     const int face = across >= 0 ? across : farthest_face(topology, c, cluster);
-    out.emplace_back(cluster, face == c.seeds[static_cast<size_t>(cluster)] ? -1 : face);
-  }
-  return out;
-}
-
-}  // namespace
-
-std::vector<std::pair<int, int>> cut_requests(const TriMesh& mesh, const MeshTopology& topology,
-                                              const PanelAttempt& attempt) {
-  std::vector<std::pair<int, int>> out = cut_faces(mesh, topology, attempt);
-  out.erase(std::remove_if(out.begin(), out.end(), [](const auto& r) { return r.second < 0; }), out.end());
-  return out;
-}
-
-std::vector<int> uncuttable_clusters(const TriMesh& mesh, const MeshTopology& topology, const PanelAttempt& attempt) {
-  std::vector<int> out;
-  for (const auto& [cluster, face] : cut_faces(mesh, topology, attempt)) {
-    if (face < 0) out.push_back(cluster);
+    if (face == c.seeds[static_cast<size_t>(cluster)])
+      out.uncuttable.push_back(cluster);
+    else
+      out.cuts.emplace_back(cluster, face);
   }
   return out;
 }
 
 std::vector<std::pair<int, int>> split_requests(const TriMesh& mesh, const MeshTopology& topology,
-                                                const PanelAttempt& attempt, int max_geometric,
+                                                const PanelAttempt& attempt,
+                                                const std::vector<std::pair<int, int>>& cuts, int max_geometric,
                                                 const std::vector<char>& keep) {
   const Clustering& c = attempt.clustering();
-  std::vector<std::pair<int, int>> out = cut_requests(mesh, topology, attempt);
+  std::vector<std::pair<int, int>> out = cuts;
   const PanelLayout* layout = &attempt.layout();
   // Largest invalid panels first: splitting them costs the least detail elsewhere.
   const auto kept = [&](int cluster) {

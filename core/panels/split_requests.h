@@ -30,28 +30,31 @@ std::vector<int> tiny_invalid_clusters(const PanelAttempt& attempt, int share);
 // time left cow.off's runs (46-122 panels) invalid more often.
 int stall_splits(int num_clusters);
 
-// Cuts of the clusters that are not disks (and not merely enclosed): (cluster, face)
-// requests for split_near(). A cluster that meets one neighbour in two separate chains is cut
-// at the middle of its chain with that neighbour farthest from its seed (cut off it, the
-// halves meet the neighbour once each); any other at its face farthest from its seed.
-// The first requests of split_requests().
-std::vector<std::pair<int, int>> cut_requests(const TriMesh& mesh, const MeshTopology& topology,
-                                              const PanelAttempt& attempt);
-
-// Clusters that are not disks (and not merely enclosed) and cannot be cut: the face to cut at
-// would be the seed (a one-face cluster whose edges meet one neighbour twice). They are moved
-// elsewhere like enclosed ones; asking for a cut that split_near() skips left one at
-// inspired_mesh.obj (100 panels, seed 5) for 9 panel rounds.
-std::vector<int> uncuttable_clusters(const TriMesh& mesh, const MeshTopology& topology, const PanelAttempt& attempt);
+// The clusters that are not disks (and not merely enclosed: an enclosed one is fixed by
+// splitting the one around it, which has a hole), each found once per round.
+struct ClusterCuts {
+  // (cluster, face) requests for split_near(). A cluster that meets one neighbour in two
+  // separate chains is cut at the middle of its chain with that neighbour farthest from its
+  // seed (cut off it, the halves meet the neighbour once each); any other at its face
+  // farthest from its seed. The first requests of split_requests().
+  std::vector<std::pair<int, int>> cuts;
+  // Those that cannot be cut: the face to cut at would be the seed (a one-face cluster whose
+  // edges meet one neighbour twice). They are moved elsewhere like enclosed ones; asking for a
+  // cut that split_near() skips left one at inspired_mesh.obj (100 panels, seed 5) for 9 panel
+  // rounds.
+  std::vector<int> uncuttable;
+};
+ClusterCuts cluster_cuts(const TriMesh& mesh, const MeshTopology& topology, const PanelAttempt& attempt);
 
 // Where to split after a failed attempt: (cluster, face) requests for split_near(). First
-// cut_requests(), then an invalid panel at a face next to its problem corner, one split per
-// corner, at most `max_geometric` of those.
+// `cuts` (ClusterCuts::cuts of this attempt), then an invalid panel at a face next to its
+// problem corner, one split per corner, at most `max_geometric` of those.
 // `keep` (per cluster, empty for none): clusters never to split (held by a lock): the
 // geometric splits go to the other invalid panels first, then to a free cluster at a kept
 // panel's problem corner.
 std::vector<std::pair<int, int>> split_requests(const TriMesh& mesh, const MeshTopology& topology,
-                                                const PanelAttempt& attempt, int max_geometric,
+                                                const PanelAttempt& attempt,
+                                                const std::vector<std::pair<int, int>>& cuts, int max_geometric,
                                                 const std::vector<char>& keep = {});
 
 }  // namespace ff

@@ -59,7 +59,8 @@ TEST(SplitRequests, TwoChainClusterSplitsBetweenItsChainsNotAcross) {
   const PanelAttempt attempt(mesh, topology, input.positions, faces, c, PanelAttemptOptions{});
   ASSERT_EQ(attempt.graph().problems[0], static_cast<unsigned>(kTwoChains));
 
-  const std::vector<std::pair<int, int>> requests = split_requests(mesh, topology, attempt, 0);
+  // Its cut (cluster_cuts: the first of split_requests' requests).
+  const std::vector<std::pair<int, int>> requests = cluster_cuts(mesh, topology, attempt).cuts;
   int face = -1;
   for (const auto& [cluster, f] : requests) {
     if (cluster == 0) face = f;
@@ -77,8 +78,8 @@ TEST(SplitRequests, TwoChainClusterSplitsBetweenItsChainsNotAcross) {
 }
 
 // A one-face cluster that meets one neighbour in two chains cannot be cut (its only face is
-// its seed): it is listed to move elsewhere (uncuttable_clusters), not asked to split
-// (cut_requests, which split_near would skip round after round). On a 6 x 6 grid: T is the
+// its seed): it is listed to move elsewhere (ClusterCuts::uncuttable), not asked to split
+// (ClusterCuts::cuts, which split_near would skip round after round). On a 6 x 6 grid: T is the
 // lower triangle of cell (2, 2), A (columns 0-2) meets it across its bottom and its diagonal,
 // B (columns 3-5) across its right side, and D (cell (1, 1), an island in A) at its corner
 // (2, 2), so A's two edges are two chains.
@@ -100,8 +101,9 @@ TEST(SplitRequests, OneFaceClusterInTwoChainsMovesInsteadOfSplitting) {
   const PanelAttempt attempt(mesh, topology, input.positions, faces, c, PanelAttemptOptions{});
   ASSERT_EQ(attempt.graph().problems[kT], static_cast<unsigned>(kTwoChains));
 
-  EXPECT_EQ(uncuttable_clusters(mesh, topology, attempt), std::vector<int>{kT});
-  const std::vector<std::pair<int, int>> cuts = cut_requests(mesh, topology, attempt);
+  const ClusterCuts found = cluster_cuts(mesh, topology, attempt);
+  EXPECT_EQ(found.uncuttable, std::vector<int>{kT});
+  const std::vector<std::pair<int, int>>& cuts = found.cuts;
   for (const auto& [cluster, face] : cuts) {
     EXPECT_NE(cluster, kT);
     EXPECT_EQ(c.labels[static_cast<size_t>(face)], cluster);
@@ -109,7 +111,7 @@ TEST(SplitRequests, OneFaceClusterInTwoChainsMovesInsteadOfSplitting) {
   }
   // A (around the island D, so not a disk) is still cut; the cuts lead split_requests.
   ASSERT_FALSE(cuts.empty());
-  const std::vector<std::pair<int, int>> requests = split_requests(mesh, topology, attempt, 0);
+  const std::vector<std::pair<int, int>> requests = split_requests(mesh, topology, attempt, cuts, 1);
   ASSERT_GE(requests.size(), cuts.size());
   EXPECT_TRUE(std::equal(cuts.begin(), cuts.end(), requests.begin()));
 }
