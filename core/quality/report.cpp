@@ -332,8 +332,10 @@ QualityReport measure_quality(const TriMesh& input, const MeshTopology& input_to
     r.flipped_edges += flipped;
     const bool producer_invalid = !panels.issues.empty() && !panels.issues[static_cast<size_t>(p)].valid();
     const bool glass_invalid = (options.glass && concave) || acute > 0;
-    if (producer_invalid || !simple || kernel.empty() || flipped > 0 || has_spike || misoriented || glass_invalid ||
-        bent) {
+    const bool otherwise_invalid =
+        producer_invalid || !simple || kernel.empty() || flipped > 0 || has_spike || misoriented || glass_invalid;
+    if (bent && !otherwise_invalid) r.solver_error_panel_ids.push_back(p);
+    if (otherwise_invalid || bent) {
       r.invalid_panel_ids.push_back(p);
       source_invalid[source_of(static_cast<size_t>(p))] = 1;
     }

@@ -53,6 +53,10 @@ struct QualityReport {
   // counted invalid (invalid_panel_ids; QualityOptions::flat_panels), whatever the panel
   // phase's flags say.
   int off_plane_panels = 0;
+  // Of those, the ones every other check here and the panel phase's own flags pass (in
+  // increasing order): only an error of the solver makes such a panel. Listed with the problem
+  // "off_plane" (list_invalid_panels).
+  std::vector<int> solver_error_panel_ids;
   // Two-sided sampled Hausdorff distance / input bbox diagonal, and its two halves;
   // infinity when no panel has 3 vertices.
   double hausdorff = 0.0;

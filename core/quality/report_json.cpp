@@ -114,8 +114,10 @@ std::vector<InvalidPanel> list_invalid_panels(const PanelMesh& pm, const Quality
     p.panel = id;
     p.cluster = i < pm.panel_cluster.size() ? pm.panel_cluster[i] : -1;
     if (i < pm.issues.size()) p.problems = panel_problems(pm.issues[i]);
-    // Valid by its own flags but not by the independent checks: a panel phase bug, named so.
-    if (p.problems.empty()) p.problems.push_back("quality_check");
+    // Valid by its own flags but not by the independent checks: a panel phase bug, named so
+    // (off its plane with every other check passed, or another check failed).
+    const bool off_plane = std::binary_search(q.solver_error_panel_ids.begin(), q.solver_error_panel_ids.end(), id);
+    if (p.problems.empty()) p.problems.push_back(off_plane ? "off_plane" : "quality_check");
     p.vertices = i < pm.panels.size() ? static_cast<int>(pm.panels[i].size()) : 0;
     p.spike_vertices = i < pm.issues.size() ? pm.issues[i].spike_vertices : 0;
   }
@@ -147,8 +149,8 @@ std::string invalid_panels_phrase(const PanelMesh& pm, const QualityReport& q) {
   const std::vector<InvalidPanel> invalid = list_invalid_panels(pm, q);
   if (invalid.empty()) return "";
   // Each name once, in panel_problems' order, then the two names list_invalid_panels adds.
-  static const char* const kOrder[] = {"not_simple", "flipped",      "not_star",      "spike",  "too_few_vertices",
-                                       "not_disk",   "acute_corner", "quality_check", "unbuilt"};
+  static const char* const kOrder[] = {"not_simple", "flipped",      "not_star",  "spike",         "too_few_vertices",
+                                       "not_disk",   "acute_corner", "off_plane", "quality_check", "unbuilt"};
   std::vector<std::pair<std::string, int>> counts;
   for (const char* name : kOrder) counts.emplace_back(name, 0);
   for (const InvalidPanel& p : invalid)
@@ -199,8 +201,14 @@ std::string planarity_phrase(const QualityReport& q) {
            short_number(q.planarity_floor_solve) + " of a panel's size; without the far-off part, the model gives flat panels";
   // Else a vertex whose planes have no common point (closest_point_on_planes' inexact case),
   // which the panel phase counts as a spike: the panel is invalid and listed.
-  const bool invalid = std::binary_search(q.invalid_panel_ids.begin(), q.invalid_panel_ids.end(), q.max_planarity_panel);
-  return out + "; the least flat is panel " + std::to_string(q.max_planarity_panel) +
+  // Or a panel off its plane that passes every other check: the solver's error.
+  const int panel = q.max_planarity_panel;
+  if (std::binary_search(q.solver_error_panel_ids.begin(), q.solver_error_panel_ids.end(), panel))
+    return out + "; the least flat is panel " + std::to_string(panel) +
+           ", an invalid one, off its plane though it passes every other check (an error of the solver: please "
+           "report it)";
+  const bool invalid = std::binary_search(q.invalid_panel_ids.begin(), q.invalid_panel_ids.end(), panel);
+  return out + "; the least flat is panel " + std::to_string(panel) +
          (invalid ? ", an invalid one (a vertex where its planes do not meet)" : "");
 }
 

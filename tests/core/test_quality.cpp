@@ -181,6 +181,7 @@ TEST(Quality, BentCubeIsNotPlanar) {
   // Not flat: no part to cut, so invalid, though no other check finds anything.
   EXPECT_EQ(r.off_plane_panels, 3);
   EXPECT_EQ(r.invalid_panel_ids, (std::vector<int>{1, 3, 4}));  // the panels around vertex 6
+  EXPECT_EQ(r.solver_error_panel_ids, r.invalid_panel_ids);     // nothing else is wrong with them
   EXPECT_TRUE(r.topology_preserved);
   // Measured as polygons not meant to be flat (the benchmark's CGAL polygons): the paper's
   // checks only, the bend still measured.

@@ -47,6 +47,12 @@ TEST(ReportJson, CountsEachProblemOverPanelsInAFixedOrder) {
   EXPECT_EQ(list[3].cluster, 7);
   EXPECT_EQ(list[3].problems, (std::vector<std::string>{"unbuilt"}));
   EXPECT_EQ(invalid_panels_phrase(pm, q), "4 panels invalid (not_star 2, spike 1, quality_check 1, unbuilt 1)");
+  // Off its plane with nothing else wrong (QualityReport::solver_error_panel_ids): named so.
+  q.invalid_panel_ids = {1, 3};
+  q.solver_error_panel_ids = {1};
+  EXPECT_EQ(list_invalid_panels(pm, q)[1].problems, (std::vector<std::string>{"off_plane"}));
+  EXPECT_EQ(invalid_panels_phrase(pm, q),
+            "5 panels invalid (not_star 2, spike 1, off_plane 1, quality_check 1, unbuilt 1)");
 
   PanelMesh one = four_panels();
   one.issues[1].flipped = true;
@@ -98,6 +104,13 @@ TEST(ReportJson, PlanarityPhrase) {
   q.invalid_panel_ids = {2};
   EXPECT_EQ(planarity_phrase(q), "the panels as written are flat to 9.27e-08 of their size, not 1e-09; the least "
                                  "flat is panel 7");
+  // Off its plane with every other check passed: no spike explains it, the solver erred.
+  q.invalid_panel_ids = {2, 7};
+  q.solver_error_panel_ids = {7};
+  EXPECT_EQ(planarity_phrase(q),
+            "the panels as written are flat to 9.27e-08 of their size, not 1e-09; the least flat is panel 7, an "
+            "invalid one, off its plane though it passes every other check (an error of the solver: please report "
+            "it)");
 }
 
 TEST(ReportJson, TopologyChangedIsItsOwnStatusAndNotExitZero) {

@@ -28,6 +28,9 @@ test('above the target: a warning, and the origin named only when the coordinate
   // Where planes have no common point the panel is invalid (a spike), and the row says which.
   const spike = planarityRow({ max_planarity: 9e-8, planarity_floor: 1e-15, max_planarity_panel: 36, invalid: [{ panel: 36, problems: ['spike'] }] });
   assert.match(spike.hint, /the least flat is panel 36, an invalid one \(a vertex where its planes do not meet\)$/);
+  // Off its plane with every other check passed: the solver's error, said so.
+  const error = planarityRow({ max_planarity: 9e-8, planarity_floor: 1e-15, max_planarity_panel: 36, invalid: [{ panel: 36, problems: ['off_plane'] }] });
+  assert.match(error.hint, /the least flat is panel 36, an invalid one, off its plane though it passes every other check \(an error of the solver: please report it\)$/);
   assert.equal(planarityRow({}).value, '–');
   // A far-off part: the panels were solved about the middle of the whole mesh.
   const part = { max_planarity: 1.19e-9, planarity_floor: 1.8e-16, planarity_floor_solve: 2.5e-9 };

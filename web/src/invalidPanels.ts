@@ -4,7 +4,7 @@
 import type { QualityReport } from './protocol.ts';
 
 // Every problem name the core writes for a built panel (panel_problems, then list_invalid_panels'
-// "quality_check"), in the core's order; "unbuilt" (a cluster without a panel) is counted apart.
+// "off_plane" and "quality_check"), in the core's order; "unbuilt" (a cluster without a panel) is counted apart.
 // tests/web/invalidPanels.test.mjs checks this against the core's list.
 export const PROBLEM_WORDS: Readonly<Record<string, string>> = {
   not_simple: 'self-intersecting',
@@ -14,6 +14,7 @@ export const PROBLEM_WORDS: Readonly<Record<string, string>> = {
   too_few_vertices: 'under 3 corners',
   not_disk: 'not a disk',
   acute_corner: 'acute corner',
+  off_plane: 'off its plane',
   quality_check: 'failed the quality check',
 };
 

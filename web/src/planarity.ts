@@ -23,8 +23,13 @@ function reason(report: QualityReport): { cause: Cause | null; why: string } {
   if (solveFloor * 100 >= planarity)
     return { cause: 'part', why: `a part of the mesh lies so far from the rest that the coordinates' last digit is already ${scientific(solveFloor)} of a panel: without the far-off part, the model gives flat panels` };
   const panel = numberAt(report, 'max_planarity_panel');
-  const invalid = Array.isArray(report.invalid) && report.invalid.some((p) => typeof p === 'object' && p !== null && (p as { panel?: unknown }).panel === panel);
-  if (invalid) return { cause: 'invalid', why: `the least flat is panel ${panel}, an invalid one (a vertex where its planes do not meet)` };
+  const entry = Array.isArray(report.invalid)
+    ? (report.invalid.find((p) => typeof p === 'object' && p !== null && (p as { panel?: unknown }).panel === panel) as { problems?: unknown } | undefined)
+    : undefined;
+  // Off its plane with every other check passed (the core's "off_plane"): the solver's error.
+  if (entry && Array.isArray(entry.problems) && entry.problems.includes('off_plane'))
+    return { cause: 'invalid', why: `the least flat is panel ${panel}, an invalid one, off its plane though it passes every other check (an error of the solver: please report it)` };
+  if (entry) return { cause: 'invalid', why: `the least flat is panel ${panel}, an invalid one (a vertex where its planes do not meet)` };
   return { cause: 'unknown', why: panel === null ? '' : `the least flat is panel ${panel}` };
 }
 
