@@ -25,13 +25,17 @@ double planarity_rounding_floor(const std::vector<Vec3>& points, const Vec3& ori
 // DESIGN.md 5: the panels are flat to this, relative to their size (exact by construction).
 constexpr double kPlanarityTarget = 1e-9;
 
+// Planarity within this many times what the coordinates' rounding allows
+// (planarity_rounding_floor) is the coordinates', not the solve's.
+constexpr double kRoundingAllowance = 100.0;
+
 // Whether a panel of this polygon_planarity is off its plane by more than its coordinates can
-// explain: above kPlanarityTarget and over a hundred times the larger of its
+// explain: above kPlanarityTarget and over kRoundingAllowance times the larger of its
 // planarity_rounding_floor about the origin (`floor`) and about the solve's origin
 // (`floor_solve`). A valid panel never is: only a vertex whose planes have no common point
 // (a spike) or an error of the solver puts one there.
 inline bool off_its_plane(double planarity, double floor, double floor_solve) {
-  return planarity > kPlanarityTarget && planarity > 100.0 * std::max(floor, floor_solve);
+  return planarity > kPlanarityTarget && planarity > kRoundingAllowance * std::max(floor, floor_solve);
 }
 
 // Per panel: polygon_planarity of its vertices moved back to their mesh corners

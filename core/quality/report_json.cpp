@@ -148,7 +148,7 @@ void write_invalid_panels(JsonWriter& j, const PanelMesh& pm, const QualityRepor
 std::string invalid_panels_phrase(const PanelMesh& pm, const QualityReport& q) {
   const std::vector<InvalidPanel> invalid = list_invalid_panels(pm, q);
   if (invalid.empty()) return "";
-  // Each name once, in panel_problems' order, then the two names list_invalid_panels adds.
+  // Each name once, in panel_problems' order, then the three names list_invalid_panels adds.
   static const char* const kOrder[] = {"not_simple", "flipped",      "not_star",  "spike",         "too_few_vertices",
                                        "not_disk",   "acute_corner", "off_plane", "quality_check", "unbuilt"};
   std::vector<std::pair<std::string, int>> counts;
@@ -189,13 +189,12 @@ std::string planarity_phrase(const QualityReport& q) {
   if (!(q.max_planarity > kPlanarityTarget)) return "";
   std::string out = "the panels as written are flat to " + short_number(q.max_planarity) + " of their size, not " +
                     short_number(kPlanarityTarget);
-  // Within a hundred times of what the doubles allow: the coordinates, not the solve
-  // (off_its_plane's allowance).
-  if (q.planarity_floor * 100.0 >= q.max_planarity)
+  // Within kRoundingAllowance of what the doubles allow: the coordinates, not the solve.
+  if (q.planarity_floor * kRoundingAllowance >= q.max_planarity)
     return out + ": the coordinates are so far from the origin that their last digit is already " +
            short_number(q.planarity_floor) + " of a panel's size; moved near the origin, the model gives flat panels";
   // The coordinates about the middle of the whole mesh: a far-off part moved it away.
-  if (q.planarity_floor_solve * 100.0 >= q.max_planarity)
+  if (q.planarity_floor_solve * kRoundingAllowance >= q.max_planarity)
     return out + ": a part of the mesh lies so far from the rest that, about the middle of the whole, the "
                  "coordinates' last digit is already " +
            short_number(q.planarity_floor_solve) + " of a panel's size; without the far-off part, the model gives flat panels";

@@ -56,7 +56,7 @@ void write_invalid_panels(JsonWriter& j, const PanelMesh& panels, const QualityR
 
 // The invalid panels in a few words for a person, "3 panels invalid (not_star 2, unbuilt 1)":
 // each problem with the number of panels that have it, in panel_problems' order, then
-// "quality_check" and "unbuilt"; "" when none is invalid.
+// "off_plane", "quality_check" and "unbuilt"; "" when none is invalid.
 std::string invalid_panels_phrase(const PanelMesh& panels, const QualityReport& quality);
 
 // "" when the panels are flat to kPlanarityTarget; else a sentence for a person saying how

@@ -8,6 +8,9 @@ import { scientific } from './scientific.ts';
 import type { StatRow } from './statsList.ts';
 
 export const PLANARITY_TARGET = 1e-9;
+// Within this many times the rounding floor the bend is the coordinates' (kRoundingAllowance in
+// core/quality/planarity.h).
+const ROUNDING_ALLOWANCE = 100;
 
 // Why the panels are above the target (cause null when they are not): the coordinates far
 // from the origin, a far-off part, an invalid panel, or nothing known.
@@ -17,10 +20,10 @@ function reason(report: QualityReport): { cause: Cause | null; why: string } {
   const planarity = numberAt(report, 'max_planarity');
   if (planarity === null || !(planarity > PLANARITY_TARGET)) return { cause: null, why: '' };
   const floor = numberAt(report, 'planarity_floor') ?? 0;
-  if (floor * 100 >= planarity)
+  if (floor * ROUNDING_ALLOWANCE >= planarity)
     return { cause: 'origin', why: `the coordinates are so far from the origin that their last digit is already ${scientific(floor)} of a panel: moved near the origin, the model gives flat panels` };
   const solveFloor = numberAt(report, 'planarity_floor_solve') ?? 0;
-  if (solveFloor * 100 >= planarity)
+  if (solveFloor * ROUNDING_ALLOWANCE >= planarity)
     return { cause: 'part', why: `a part of the mesh lies so far from the rest that the coordinates' last digit is already ${scientific(solveFloor)} of a panel: without the far-off part, the model gives flat panels` };
   const panel = numberAt(report, 'max_planarity_panel');
   const entry = Array.isArray(report.invalid)
