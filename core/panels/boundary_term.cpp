@@ -13,6 +13,7 @@ BoundaryTerm::BoundaryTerm(const FaceData& faces, const PanelLayout& layout, dou
     if (layout.polygon(c).points.size() < 3) continue;
     const Plane& plane = layout.planes().plane_of(c);
     frames_[static_cast<size_t>(c)] = make_plane_frame(plane.offset * plane.normal, plane.normal);
+    polygons_[static_cast<size_t>(c)].reserve(layout.polygon(c).points.size());
     for (const Vec3& p : layout.polygon(c).points)
       polygons_[static_cast<size_t>(c)].push_back(frames_[static_cast<size_t>(c)].to_2d(p));
   }

@@ -33,6 +33,7 @@ int find_pair(const std::vector<int>& cycle, int u, int v) {
 // The cycle read from position `start` for `count` entries.
 std::vector<int> read(const std::vector<int>& cycle, int start, int count) {
   std::vector<int> out;
+  out.reserve(static_cast<size_t>(std::max(count, 0)));
   const int k = static_cast<int>(cycle.size());
   for (int t = 0; t < count; ++t) out.push_back(cycle[static_cast<size_t>((start + t) % k)]);
   return out;
@@ -107,6 +108,7 @@ NodeGroups group_corners(const TriMesh& mesh, const MeshTopology& topology, cons
 
   NodeGroups out;
   out.group_of_corner.assign(graph.corners.size(), -1);
+  out.groups.reserve(graph.corners.size());  // at most one group per corner
   for (const Chain& ch : chains) {
     if (out.group_of_corner[static_cast<size_t>(ch.from)] >= 0 || out.group_of_corner[static_cast<size_t>(ch.to)] >= 0)
       continue;

@@ -127,6 +127,15 @@ PanelAttempt::PanelAttempt(const TriMesh& mesh, const MeshTopology& topology, co
   for (double r : reach) sum += 2.0 * r;
   spike_distance_ = options.spike_factor * sum / static_cast<double>(std::max<size_t>(n, 1));
   std::vector<std::vector<Vec3>> corners(n);
+  {  // Counted first: one allocation per cluster.
+    std::vector<int> count(n, 0);
+    for (const Corner& corner : graph_.corners) {
+      for (int c : corner.clusters) {
+        if (c != kBoundary) ++count[static_cast<size_t>(c)];
+      }
+    }
+    for (size_t c = 0; c < n; ++c) corners[c].reserve(static_cast<size_t>(count[c]));
+  }
   std::vector<Vec3> orientation(n), centers(n);
   for (const Corner& corner : graph_.corners) {
     for (int c : corner.clusters) {

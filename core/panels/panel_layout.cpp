@@ -268,6 +268,7 @@ double PanelLayout::pairing_cost(int g) const {
   const double penalty = 1e3 * options_.diameter;
   double cost = 0.0;
   std::vector<NodeMasters> seen;
+  seen.reserve(static_cast<size_t>(node_offset_[static_cast<size_t>(g) + 1] - node_offset_[static_cast<size_t>(g)]));
   for (int node = node_offset_[static_cast<size_t>(g)]; node < node_offset_[static_cast<size_t>(g) + 1]; ++node) {
     cost += (node_point_[static_cast<size_t>(node)] - group.reference).norm();
     if (!node_exact_[static_cast<size_t>(node)]) cost += penalty;
@@ -280,6 +281,7 @@ double PanelLayout::pairing_cost(int g) const {
 
 std::vector<int> PanelLayout::clusters_of_group(int g) const {
   std::vector<int> out;
+  out.reserve(groups_.groups[static_cast<size_t>(g)].clusters.size());
   for (int c : groups_.groups[static_cast<size_t>(g)].clusters) {
     if (c != kBoundary && std::find(out.begin(), out.end(), c) == out.end()) out.push_back(c);
   }
@@ -336,6 +338,11 @@ void PanelLayout::build_panel(int c) {
     events.front().border_end = events.back().border_end;
     events.pop_back();
   }
+
+  // Room for every vertex at once: a layout's first build of a panel would otherwise grow
+  // four vectors step by step (a guess: two nodes per group, and the border vertices).
+  const size_t room = 2 * events.size() + border.size();
+  poly.points.reserve(room), poly.node.reserve(room), poly.corner.reserve(room), poly.reference.reserve(room);
 
   // Nodes, remembering where each border run goes.
   struct Run {
