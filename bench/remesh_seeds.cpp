@@ -53,10 +53,11 @@ void print_seed_table(const std::vector<RemeshCase>& cases, const std::string& m
       "fastest of %d run%s per seed, read + clean + solve as above; Hausdorff from the first run.\n\n",
       options.seeds, options.repeat, options.repeat == 1 ? "" : "s");
   std::printf(
-      "| input | n | valid ours / CGAL | time s median ours / CGAL | median ratio | time s mean ours / CGAL | mean "
-      "ratio | time s worst ours / CGAL | worst ratio | Hausdorff median ours / CGAL | ours: panel rounds median (max) "
-      "| "
-      "ours: time s per seed |\n");
+      "| input | n | valid ours / CGAL "
+      "| time s median ours / CGAL | median ratio "
+      "| time s mean ours / CGAL | mean ratio "
+      "| time s worst ours / CGAL | worst ratio "
+      "| Hausdorff median ours / CGAL | ours: panel rounds median (max) | ours: time s per seed |\n");
   std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n");
   std::fflush(stdout);
   int compared = 0, median_faster = 0, mean_faster = 0, worst_faster = 0, median_lower_hausdorff = 0;

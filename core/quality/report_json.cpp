@@ -202,13 +202,13 @@ std::string planarity_phrase(const QualityReport& q) {
   // which the panel phase counts as a spike: the panel is invalid and listed.
   // Or a panel off its plane that passes every other check: the solver's error.
   const int panel = q.max_planarity_panel;
+  out += "; the least flat is panel " + std::to_string(panel);
   if (std::binary_search(q.solver_error_panel_ids.begin(), q.solver_error_panel_ids.end(), panel))
-    return out + "; the least flat is panel " + std::to_string(panel) +
+    return out +
            ", an invalid one, off its plane though it passes every other check (an error of the solver: please "
            "report it)";
   const bool invalid = std::binary_search(q.invalid_panel_ids.begin(), q.invalid_panel_ids.end(), panel);
-  return out + "; the least flat is panel " + std::to_string(panel) +
-         (invalid ? ", an invalid one (a vertex where its planes do not meet)" : "");
+  return out + (invalid ? ", an invalid one (a vertex where its planes do not meet)" : "");
 }
 
 }  // namespace ff

@@ -67,6 +67,12 @@ export function summarizeInvalid(report: QualityReport): InvalidSummary | null {
   return { panels, unbuilt, problems };
 }
 
+// The problem names the report lists for one panel (by its number in the panel mesh): null
+// when it is not listed (valid) or the report has no list.
+export function panelProblems(report: QualityReport, panel: number): string[] | null {
+  return entries(report)?.find((entry) => entry.panel === panel)?.problems ?? null;
+}
+
 // What is wrong with the panel of one cluster (as the edits and clusterIds name it; its glass
 // pieces together), in the words above and their order: [] when the report lists nothing for it.
 export function clusterProblems(report: QualityReport, cluster: number): string[] {

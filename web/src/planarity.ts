@@ -2,6 +2,7 @@
 // cannot hold it (far from the origin a double's last digit is already more than that of a
 // panel: the report's planarity_floor) or at an invalid panel whose planes do not meet. The
 // CLI's warning says the same (core/quality/report_json.h, planarity_phrase).
+import { panelProblems } from './invalidPanels.ts';
 import type { QualityReport } from './protocol.ts';
 import { numberAt } from './reportNumber.ts';
 import { scientific } from './scientific.ts';
@@ -26,14 +27,14 @@ function reason(report: QualityReport): { cause: Cause | null; why: string } {
   if (solveFloor * ROUNDING_ALLOWANCE >= planarity)
     return { cause: 'part', why: `a part of the mesh lies so far from the rest that the coordinates' last digit is already ${scientific(solveFloor)} of a panel: without the far-off part, the model gives flat panels` };
   const panel = numberAt(report, 'max_planarity_panel');
-  const entry = Array.isArray(report.invalid)
-    ? (report.invalid.find((p) => typeof p === 'object' && p !== null && (p as { panel?: unknown }).panel === panel) as { problems?: unknown } | undefined)
-    : undefined;
+  if (panel === null) return { cause: 'unknown', why: '' };
+  const least = `the least flat is panel ${panel}`;
+  const problems = panelProblems(report, panel);
   // Off its plane with every other check passed (the core's "off_plane"): the solver's error.
-  if (entry && Array.isArray(entry.problems) && entry.problems.includes('off_plane'))
-    return { cause: 'invalid', why: `the least flat is panel ${panel}, an invalid one, off its plane though it passes every other check (an error of the solver: please report it)` };
-  if (entry) return { cause: 'invalid', why: `the least flat is panel ${panel}, an invalid one (a vertex where its planes do not meet)` };
-  return { cause: 'unknown', why: panel === null ? '' : `the least flat is panel ${panel}` };
+  if (problems?.includes('off_plane'))
+    return { cause: 'invalid', why: `${least}, an invalid one, off its plane though it passes every other check (an error of the solver: please report it)` };
+  if (problems) return { cause: 'invalid', why: `${least}, an invalid one (a vertex where its planes do not meet)` };
+  return { cause: 'unknown', why: least };
 }
 
 export function planarityRow(report: QualityReport): StatRow {
